@@ -1,0 +1,20 @@
+// Error types: InputError is bad user input (exit code 2), anything else is an internal failure.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace voxgi {
+
+// Bad input: the message is one line naming the file and the field, e.g.
+// "scenes/a.json: grid.resolution: must be a power of two, got 100".
+class InputError : public std::runtime_error {
+ public:
+  InputError(const std::string& file, const std::string& field, const std::string& reason)
+      : std::runtime_error(file + ": " + (field.empty() ? "" : field + ": ") + reason) {}
+};
+
+// Exit codes of the voxgi command (DESIGN.md CLI contract).
+enum ExitCode : int { kExitOk = 0, kExitInternal = 1, kExitBadInput = 2 };
+
+}  // namespace voxgi

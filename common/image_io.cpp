@@ -1,0 +1,88 @@
+#include "common/image_io.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfOutputFile.h>
+#include <Iex.h>
+
+#define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb/stb_image_write.h>
+
+#include "common/error.h"
+
+namespace voxgi {
+namespace {
+
+void commit(const std::string& tmp, const std::string& path) {
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) throw InputError(path, "", "cannot write: " + ec.message());
+}
+
+}  // namespace
+
+float linearToSrgb(float linear) {
+  const float x = std::clamp(linear, 0.0f, 1.0f);
+  return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+}
+
+void writeExr(const std::string& path, const Image& image) {
+  const std::string tmp = path + ".tmp";
+  try {
+    Imf::Header header(image.width, image.height);
+    for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
+    Imf::OutputFile file(tmp.c_str(), header);
+    Imf::FrameBuffer fb;
+    auto* base = reinterpret_cast<char*>(const_cast<glm::vec3*>(image.pixels.data()));
+    const size_t xs = sizeof(glm::vec3), ys = xs * size_t(image.width);
+    for (int c = 0; c < 3; ++c)
+      fb.insert(c == 0 ? "R" : c == 1 ? "G" : "B",
+                Imf::Slice(Imf::FLOAT, base + size_t(c) * sizeof(float), xs, ys));
+    file.setFrameBuffer(fb);
+    file.writePixels(image.height);
+  } catch (const std::exception& e) {
+    std::filesystem::remove(tmp);
+    throw InputError(path, "", std::string("cannot write EXR: ") + e.what());
+  }
+  commit(tmp, path);
+}
+
+Image readExr(const std::string& path) {
+  try {
+    Imf::InputFile file(path.c_str());
+    const Imath::Box2i dw = file.header().dataWindow();
+    Image image(dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1);
+    Imf::FrameBuffer fb;
+    const size_t xs = sizeof(glm::vec3), ys = xs * size_t(image.width);
+    auto* base = reinterpret_cast<char*>(image.pixels.data()) -
+                 (ptrdiff_t(dw.min.x) * ptrdiff_t(xs) + ptrdiff_t(dw.min.y) * ptrdiff_t(ys));
+    for (int c = 0; c < 3; ++c)
+      fb.insert(c == 0 ? "R" : c == 1 ? "G" : "B",
+                Imf::Slice(Imf::FLOAT, base + size_t(c) * sizeof(float), xs, ys));
+    file.setFrameBuffer(fb);
+    file.readPixels(dw.min.y, dw.max.y);
+    return image;
+  } catch (const std::exception& e) {
+    throw InputError(path, "", std::string("cannot read EXR: ") + e.what());
+  }
+}
+
+void writePng(const std::string& path, const Image& image, float exposure) {
+  std::vector<unsigned char> bytes(size_t(image.width) * size_t(image.height) * 3);
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      bytes[i * 3 + size_t(c)] = static_cast<unsigned char>(
+          std::lround(255.0f * linearToSrgb(exposure * image.pixels[i][c])));
+  const std::string tmp = path + ".tmp";
+  if (!stbi_write_png(tmp.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3))
+    throw InputError(path, "", "cannot write PNG");
+  commit(tmp, path);
+}
+
+}  // namespace voxgi

@@ -1,0 +1,52 @@
+#include "common/scene.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace voxgi {
+
+size_t Scene::triangleCount() const {
+  size_t n = 0;
+  for (const Mesh& m : meshes) n += m.triangles.size();
+  return n;
+}
+
+bool Scene::hasEmission() const {
+  for (const Mesh& m : meshes)
+    if (!m.triangles.empty() && materials.at(m.material).emissive()) return true;
+  return false;
+}
+
+std::pair<glm::dvec3, glm::dvec3> Scene::bounds() const {
+  glm::dvec3 lo(std::numeric_limits<double>::max());
+  glm::dvec3 hi(std::numeric_limits<double>::lowest());
+  for (const Mesh& m : meshes)
+    for (const glm::uvec3& t : m.triangles)
+      for (int c = 0; c < 3; ++c) {
+        lo = glm::min(lo, m.positions[t[c]]);
+        hi = glm::max(hi, m.positions[t[c]]);
+      }
+  return {lo, hi};
+}
+
+GridSpec fitGrid(const std::pair<glm::dvec3, glm::dvec3>& bounds, int resolution, double margin) {
+  GridSpec grid;
+  grid.resolution = resolution;
+  const auto& [lo, hi] = bounds;
+  if (lo.x > hi.x) {
+    grid.min = glm::dvec3(-0.5);
+    grid.size = 1.0;
+    return grid;
+  }
+  const glm::dvec3 extent = hi - lo;
+  double size = std::max({extent.x, extent.y, extent.z});
+  // A flat or point-like scene still needs a positive size; scale it with the coordinates.
+  const double magnitude = std::max({glm::length(lo), glm::length(hi), 1e-30});
+  size = std::max(size, magnitude * 1e-6);
+  size *= 1.0 + 2.0 * margin;
+  grid.size = size;
+  grid.min = 0.5 * (lo + hi) - glm::dvec3(0.5 * size);
+  return grid;
+}
+
+}  // namespace voxgi

@@ -1,0 +1,77 @@
+// The scene model every technique renders: triangle meshes with materials, lights, a camera,
+// background radiance and the voxel grid. Loaded by common/scene_load.cpp (docs/scene-format.md).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/grid.h"
+
+namespace voxgi {
+
+struct Material {
+  std::string name;
+  glm::vec3 albedo{0.8f};    // Lambertian reflectance, each channel in [0, 1]
+  glm::vec3 specular{0.0f};  // specular colour, [0, 1]
+  float shininess = 0.0f;    // Phong exponent, >= 0
+  glm::vec3 emission{0.0f};  // emitted radiance, linear RGB, >= 0
+  bool emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
+};
+
+// World-space triangles of one material. Positions are double so that a scene far from the
+// origin keeps its precision until it is expressed in voxel-local coordinates.
+struct Mesh {
+  std::string name;  // where it came from, for messages: "file.obj: mesh 'x'"
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::uvec3> triangles;
+  uint32_t material = 0;
+};
+
+// Light falloff: inverse square (physical default) or seed 000's constant-linear-quadratic.
+struct Falloff {
+  enum class Kind { inverse_square, polynomial } kind = Kind::inverse_square;
+  float constant = 1.0f, linear = 0.0f, quadratic = 0.0f;
+};
+
+struct Light {
+  enum class Type { point, spot, directional } type = Type::point;
+  glm::dvec3 position{0.0};
+  glm::dvec3 direction{0.0, -1.0, 0.0};  // unit; spot axis or direction light travels
+  glm::vec3 intensity{1.0f};             // W/sr (point, spot) or irradiance (directional)
+  float spotAngleDeg = 45.0f;            // full cone angle of a spot light
+  Falloff falloff;
+  bool castsShadows = true;
+};
+
+struct Camera {
+  glm::dvec3 position{0.0, 0.0, 5.0};
+  glm::dvec3 lookAt{0.0};
+  glm::dvec3 up{0.0, 1.0, 0.0};
+  double fovYDeg = 40.0;
+  int width = 256, height = 256;
+};
+
+struct Scene {
+  std::string file;  // the file it was loaded from, for messages
+  std::vector<Material> materials;
+  std::vector<Mesh> meshes;
+  std::vector<Light> lights;
+  Camera camera;
+  glm::vec3 background{0.0f};
+  GridSpec grid;  // always set: from the file or fitted around the geometry
+
+  size_t triangleCount() const;
+  bool hasEmission() const;
+  // Bounds of all mesh vertices; min > max when there is no geometry.
+  std::pair<glm::dvec3, glm::dvec3> bounds() const;
+};
+
+// A cube around the bounds with a margin of `margin` (fraction of the largest extent) on each
+// side; a unit cube around the origin for an empty scene.
+GridSpec fitGrid(const std::pair<glm::dvec3, glm::dvec3>& bounds, int resolution,
+                 double margin = 0.05);
+
+}  // namespace voxgi

@@ -1,0 +1,276 @@
+// JSON scene files (docs/scene-format.md). Every field is checked; unknown fields are errors so
+// that a typo does not silently fall back to a default.
+#include "common/scene_load.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+
+namespace voxgi {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+// A JSON value together with its path ("lights[2].intensity"), for error messages.
+struct Field {
+  const std::string& file;
+  const json& value;
+  std::string path;
+
+  [[noreturn]] void fail(const std::string& reason) const { throw InputError(file, path, reason); }
+
+  Field at(const std::string& key) const {
+    return {file, value.at(key), path.empty() ? key : path + "." + key};
+  }
+  Field at(size_t i) const { return {file, value.at(i), path + "[" + std::to_string(i) + "]"}; }
+  bool has(const std::string& key) const { return value.contains(key); }
+
+  void allowKeys(std::initializer_list<const char*> keys) const {
+    if (!value.is_object()) fail("must be an object");
+    std::set<std::string> allowed(keys.begin(), keys.end());
+    for (const auto& [key, v] : value.items())
+      if (!allowed.count(key)) fail("unknown field '" + key + "'");
+  }
+  double number() const {
+    if (!value.is_number()) fail("must be a number");
+    const double d = value.get<double>();
+    if (!std::isfinite(d)) fail("must be finite");
+    return d;
+  }
+  double number(double lo, double hi) const {
+    const double d = number();
+    if (d < lo || d > hi) fail("must be in [" + fmt(lo) + ", " + fmt(hi) + "], got " + fmt(d));
+    return d;
+  }
+  int integer(int lo, int hi) const {
+    if (!value.is_number_integer()) fail("must be an integer");
+    const auto i = value.get<int64_t>();
+    if (i < lo || i > hi) fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + std::to_string(i));
+    return static_cast<int>(i);
+  }
+  bool boolean() const {
+    if (!value.is_boolean()) fail("must be true or false");
+    return value.get<bool>();
+  }
+  std::string string() const {
+    if (!value.is_string()) fail("must be a string");
+    return value.get<std::string>();
+  }
+  glm::dvec3 vec3() const {
+    if (!value.is_array() || value.size() != 3) fail("must be an array of 3 numbers");
+    return {at(0).number(), at(1).number(), at(2).number()};
+  }
+  glm::vec3 color(double lo, double hi) const {
+    if (!value.is_array() || value.size() != 3) fail("must be an array of 3 numbers");
+    return glm::vec3(at(0).number(lo, hi), at(1).number(lo, hi), at(2).number(lo, hi));
+  }
+  static std::string fmt(double d) {
+    std::ostringstream s;
+    s << d;
+    return s.str();
+  }
+};
+
+void readMaterial(const Field& f, Material& m) {
+  f.allowKeys({"albedo", "specular", "shininess", "emission"});
+  if (f.has("albedo")) m.albedo = f.at("albedo").color(0.0, 1.0);
+  if (f.has("specular")) m.specular = f.at("specular").color(0.0, 1.0);
+  if (f.has("shininess")) m.shininess = static_cast<float>(f.at("shininess").number(0.0, 1e6));
+  if (f.has("emission")) m.emission = f.at("emission").color(0.0, 1e9);
+}
+
+glm::dmat4 readTransform(const Field& f) {
+  f.allowKeys({"translate", "rotate_deg", "scale"});
+  glm::dmat4 m(1.0);
+  if (f.has("translate")) m = glm::translate(m, f.at("translate").vec3());
+  if (f.has("rotate_deg")) {  // applied as Z * Y * X (X first)
+    const glm::dvec3 r = glm::radians(f.at("rotate_deg").vec3());
+    m = glm::rotate(m, r.z, {0, 0, 1});
+    m = glm::rotate(m, r.y, {0, 1, 0});
+    m = glm::rotate(m, r.x, {1, 0, 0});
+  }
+  if (f.has("scale")) {
+    const Field s = f.at("scale");
+    const glm::dvec3 k = s.value.is_array() ? s.vec3() : glm::dvec3(s.number());
+    if (k.x == 0.0 || k.y == 0.0 || k.z == 0.0) s.fail("must be non-zero");
+    m = glm::scale(m, k);
+  }
+  return m;
+}
+
+Light readLight(const Field& f) {
+  f.allowKeys({"type", "position", "direction", "intensity", "spot_angle_deg", "falloff",
+               "casts_shadows"});
+  Light l;
+  const std::string type = f.at("type").string();
+  if (type == "point") l.type = Light::Type::point;
+  else if (type == "spot") l.type = Light::Type::spot;
+  else if (type == "directional") l.type = Light::Type::directional;
+  else f.at("type").fail("must be point, spot or directional, got '" + type + "'");
+  if (l.type != Light::Type::directional) l.position = f.at("position").vec3();
+  if (l.type != Light::Type::point) {
+    const glm::dvec3 d = f.at("direction").vec3();
+    if (glm::length(d) == 0.0) f.at("direction").fail("must be non-zero");
+    l.direction = glm::normalize(d);
+  }
+  l.intensity = f.at("intensity").color(0.0, 1e12);
+  if (f.has("spot_angle_deg")) l.spotAngleDeg = static_cast<float>(f.at("spot_angle_deg").number(1e-3, 179.9));
+  if (f.has("casts_shadows")) l.castsShadows = f.at("casts_shadows").boolean();
+  if (f.has("falloff")) {
+    const Field fo = f.at("falloff");
+    if (fo.value.is_string()) {
+      if (fo.string() != "inverse_square") fo.fail("must be \"inverse_square\" or {constant, linear, quadratic}");
+    } else {
+      fo.allowKeys({"constant", "linear", "quadratic"});
+      l.falloff.kind = Falloff::Kind::polynomial;
+      l.falloff.constant = static_cast<float>(fo.at("constant").number(0.0, 1e9));
+      l.falloff.linear = static_cast<float>(fo.at("linear").number(0.0, 1e9));
+      l.falloff.quadratic = static_cast<float>(fo.at("quadratic").number(0.0, 1e9));
+      if (l.falloff.constant + l.falloff.linear + l.falloff.quadratic <= 0.0f)
+        fo.fail("at least one coefficient must be positive");
+    }
+  }
+  return l;
+}
+
+Camera readCamera(const Field& f) {
+  f.allowKeys({"position", "look_at", "up", "fov_y_deg", "resolution"});
+  Camera c;
+  c.position = f.at("position").vec3();
+  c.lookAt = f.at("look_at").vec3();
+  if (f.has("up")) c.up = f.at("up").vec3();
+  if (glm::length(c.lookAt - c.position) == 0.0) f.at("look_at").fail("must differ from position");
+  if (glm::length(glm::cross(c.lookAt - c.position, c.up)) == 0.0)
+    f.at("up").fail("must not be parallel to the viewing direction");
+  if (f.has("fov_y_deg")) c.fovYDeg = f.at("fov_y_deg").number(1e-3, 179.0);
+  if (f.has("resolution")) {
+    const Field r = f.at("resolution");
+    if (!r.value.is_array() || r.value.size() != 2) r.fail("must be [width, height]");
+    c.width = r.at(0).integer(1, 16384);
+    c.height = r.at(1).integer(1, 16384);
+  }
+  return c;
+}
+
+}  // namespace
+
+int readResolution(const std::string& file, const std::string& field, int64_t n) {
+  if (n < 1 || n > kMaxResolution || (n & (n - 1)) != 0)
+    throw InputError(file, field, "must be a power of two in [1, " + std::to_string(kMaxResolution) +
+                                      "], got " + std::to_string(n));
+  return static_cast<int>(n);
+}
+
+void validateGeometry(const Scene& scene) {
+  for (const Mesh& m : scene.meshes) {
+    for (size_t v = 0; v < m.positions.size(); ++v) {
+      const glm::dvec3& p = m.positions[v];
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        throw InputError(m.name, "vertex " + std::to_string(v), "coordinate is NaN or infinite");
+    }
+    for (size_t t = 0; t < m.triangles.size(); ++t)
+      for (int c = 0; c < 3; ++c)
+        if (m.triangles[t][c] >= m.positions.size())
+          throw InputError(m.name, "triangle " + std::to_string(t), "vertex index out of range");
+    if (m.material >= scene.materials.size())
+      throw InputError(m.name, "material", "index out of range");
+  }
+}
+
+Scene loadScene(const std::string& path) {
+  Scene scene;
+  scene.file = path;
+  const std::string ext = fs::path(path).extension().string();
+  if (ext != ".json") {
+    importMeshFile(scene, path, glm::dmat4(1.0), std::nullopt);
+    validateGeometry(scene);
+    scene.grid = fitGrid(scene.bounds(), 64);
+    const auto [lo, hi] = scene.bounds();
+    if (lo.x <= hi.x) {  // look at the mesh from +z
+      scene.camera.lookAt = 0.5 * (lo + hi);
+      scene.camera.position = scene.camera.lookAt + glm::dvec3(0.0, 0.0, 2.0 * scene.grid.size);
+    }
+    return scene;
+  }
+  std::ifstream in(path);
+  if (!in) throw InputError(path, "", "cannot open scene file");
+  json doc;
+  try {
+    doc = json::parse(in);
+  } catch (const json::parse_error& e) {
+    throw InputError(path, "", std::string("malformed JSON: ") + e.what());
+  }
+  const Field root{path, doc, ""};
+  root.allowKeys({"meshes", "materials", "lights", "camera", "background", "grid", "description"});
+  if (root.has("materials")) {
+    const Field mats = root.at("materials");
+    if (!mats.value.is_object()) mats.fail("must be an object of name -> material");
+    for (const auto& [name, v] : mats.value.items()) {
+      Material m;
+      m.name = name;
+      readMaterial(mats.at(name), m);
+      scene.materials.push_back(m);
+    }
+  }
+  const size_t namedMaterials = scene.materials.size();
+  const Field meshes = root.at("meshes");
+  if (!meshes.value.is_array()) meshes.fail("must be an array");
+  for (size_t i = 0; i < meshes.value.size(); ++i) {
+    const Field m = meshes.at(i);
+    m.allowKeys({"file", "material", "transform"});
+    const Field file = m.at("file");
+    const fs::path meshPath = fs::path(path).parent_path() / file.string();
+    if (!fs::is_regular_file(meshPath)) file.fail("no such file '" + meshPath.string() + "'");
+    std::optional<uint32_t> material;
+    if (m.has("material")) {
+      const std::string name = m.at("material").string();
+      for (size_t k = 0; k < namedMaterials; ++k)
+        if (scene.materials[k].name == name) material = static_cast<uint32_t>(k);
+      if (!material) m.at("material").fail("unknown material '" + name + "'");
+    }
+    const glm::dmat4 transform = m.has("transform") ? readTransform(m.at("transform")) : glm::dmat4(1.0);
+    const size_t before = scene.materials.size();
+    importMeshFile(scene, meshPath.string(), transform, material);
+    // Materials of the file whose name matches a JSON material take the JSON values.
+    for (size_t k = before; k < scene.materials.size(); ++k)
+      for (size_t j = 0; j < namedMaterials; ++j)
+        if (scene.materials[k].name == scene.materials[j].name) scene.materials[k] = scene.materials[j];
+  }
+  if (root.has("lights")) {
+    const Field lights = root.at("lights");
+    if (!lights.value.is_array()) lights.fail("must be an array");
+    for (size_t i = 0; i < lights.value.size(); ++i) scene.lights.push_back(readLight(lights.at(i)));
+  }
+  if (root.has("camera")) scene.camera = readCamera(root.at("camera"));
+  if (root.has("background")) scene.background = root.at("background").color(0.0, 1e9);
+  validateGeometry(scene);
+  int resolution = 64;
+  if (root.has("grid")) {
+    const Field g = root.at("grid");
+    g.allowKeys({"resolution", "min", "size"});
+    if (g.has("resolution")) {
+      const Field r = g.at("resolution");
+      if (!r.value.is_number_integer()) r.fail("must be an integer");
+      resolution = readResolution(path, r.path, r.value.get<int64_t>());
+    }
+    if (g.has("min") != g.has("size")) g.fail("give both min and size, or neither");
+    if (g.has("min")) {
+      scene.grid.min = g.at("min").vec3();
+      scene.grid.size = g.at("size").number(1e-30, 1e30);
+      scene.grid.resolution = resolution;
+      return scene;
+    }
+  }
+  scene.grid = fitGrid(scene.bounds(), resolution);
+  return scene;
+}
+
+}  // namespace voxgi

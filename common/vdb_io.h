@@ -1,0 +1,26 @@
+// OpenVDB export/import of stage buffers. Each buffer becomes one grid named after it, with a
+// linear transform that puts voxel (i,j,k)'s centre at grid.min + (i+0.5)*h in world space, so the
+// grids line up with the scene in any VDB viewer. Only non-zero voxels are active (background 0).
+// Metadata: voxgi_stage, voxgi_type (u32/i32/f32), voxgi_grid_min, voxgi_grid_size,
+// voxgi_resolution, plus any extra entries given.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "common/buffer.h"
+#include "common/grid.h"
+
+namespace voxgi {
+
+void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers,
+              const GridSpec& grid, const std::map<std::string, std::string>& metadata = {});
+
+// Reads every grid written by writeVdb back into dense buffers (keyed by grid name) and the grid.
+// `specs` supplies the BufferSpec for each name (a grid with no spec is skipped).
+// Throws InputError on unreadable files or missing metadata.
+BufferSet readVdb(const std::string& path, GridSpec& grid,
+                  const std::vector<const BufferSpec*>& specs);
+
+}  // namespace voxgi

@@ -1,0 +1,134 @@
+#include "common/voxel_triangles.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <tbb/parallel_for.h>
+
+#include "shaders/shared/voxelize_kernel.h"
+
+namespace voxgi {
+namespace {
+
+using Polygon = std::vector<glm::dvec3>;
+
+// Sutherland-Hodgman against the box [lo, hi]^3, in double.
+Polygon clipToBox(Polygon poly, double lo, double hi) {
+  for (int plane = 0; plane < 6 && !poly.empty(); ++plane) {
+    const int axis = plane / 2;
+    const double side = plane % 2 == 0 ? -1.0 : 1.0;
+    const double bound = plane % 2 == 0 ? lo : hi;
+    Polygon next;
+    for (size_t i = 0; i < poly.size(); ++i) {
+      const glm::dvec3& p = poly[i];
+      const glm::dvec3& q = poly[(i + 1) % poly.size()];
+      const double dp = side * (p[axis] - bound);
+      const double dq = side * (q[axis] - bound);
+      if (dp <= 0.0) next.push_back(p);
+      if ((dp < 0.0 && dq > 0.0) || (dp > 0.0 && dq < 0.0)) {
+        glm::dvec3 x = p + (dp / (dp - dq)) * (q - p);
+        x[axis] = bound;
+        next.push_back(x);
+      }
+    }
+    poly = std::move(next);
+  }
+  return poly;
+}
+
+struct Counts {
+  size_t degenerate = 0, outside = 0, clipped = 0;
+};
+
+void emitTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+                  const Material& material, float emissionScale,
+                  std::vector<shared::VoxelTriangle>& out, Counts& counts) {
+  const glm::dvec3 n = glm::cross(b - a, c - a);
+  const double twiceArea = glm::length(n);
+  if (!(twiceArea > 0.0)) {
+    ++counts.degenerate;
+    return;
+  }
+  const unsigned axis = dominantAxis(n);
+  shared::VoxelTriangle t{};
+  t.v0 = glm::vec4(glm::vec3(a), 0.0f);
+  t.v1 = glm::vec4(glm::vec3(b), 0.0f);
+  t.v2 = glm::vec4(glm::vec3(c), 0.0f);
+  // The kernels divide by the float normal's dominant component: it must not vanish.
+  const glm::vec3 nf = shared::cross3(glm::vec3(t.v1 - t.v0), glm::vec3(t.v2 - t.v0));
+  if (nf[static_cast<int>(axis)] == 0.0f) {
+    ++counts.degenerate;
+    return;
+  }
+  const double maxEdge = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+  const auto subdivision = static_cast<unsigned>(std::max(1.0, std::ceil(2.0 * maxEdge)));
+  const double area = 0.5 * twiceArea;
+  t.albedo = glm::vec4(material.albedo, static_cast<float>(twiceArea / std::abs(n[axis])));
+  t.normal = glm::vec4(glm::vec3(n / twiceArea),
+                       static_cast<float>(area / (double(subdivision) * subdivision)));
+  t.emission = glm::vec4(emissionScale > 0.0f ? material.emission / emissionScale : glm::vec3(0.0f), 0.0f);
+  t.info = glm::uvec4(axis, subdivision, 0u, 0u);
+  out.push_back(t);
+}
+
+}  // namespace
+
+unsigned dominantAxis(const glm::dvec3& n) {
+  const glm::dvec3 a = glm::abs(n);
+  if (a.x >= a.y && a.x >= a.z) return 0;
+  return a.y >= a.z ? 1 : 2;
+}
+
+VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid) {
+  VoxelTriangles result;
+  for (const Mesh& m : scene.meshes)
+    if (!m.triangles.empty()) {
+      const glm::vec3& e = scene.materials[m.material].emission;
+      result.emissionScale = std::max({result.emissionScale, e.x, e.y, e.z});
+    }
+  // Work items: (mesh, first triangle) chunks, processed in parallel, concatenated in order.
+  struct Chunk { size_t mesh, begin, end; std::vector<shared::VoxelTriangle> out; Counts counts; };
+  std::vector<Chunk> chunks;
+  const size_t chunkSize = 4096;
+  for (size_t mi = 0; mi < scene.meshes.size(); ++mi)
+    for (size_t b = 0; b < scene.meshes[mi].triangles.size(); b += chunkSize)
+      chunks.push_back({mi, b, std::min(b + chunkSize, scene.meshes[mi].triangles.size()), {}, {}});
+  const double lo = -1.0, hi = grid.resolution + 1.0;
+  tbb::parallel_for(size_t(0), chunks.size(), [&](size_t ci) {
+    Chunk& chunk = chunks[ci];
+    const Mesh& mesh = scene.meshes[chunk.mesh];
+    const Material& material = scene.materials[mesh.material];
+    for (size_t ti = chunk.begin; ti < chunk.end; ++ti) {
+      const glm::uvec3& tri = mesh.triangles[ti];
+      const glm::dvec3 p[3] = {grid.toVoxel(mesh.positions[tri.x]), grid.toVoxel(mesh.positions[tri.y]),
+                               grid.toVoxel(mesh.positions[tri.z])};
+      const glm::dvec3 bmin = glm::min(p[0], glm::min(p[1], p[2]));
+      const glm::dvec3 bmax = glm::max(p[0], glm::max(p[1], p[2]));
+      if (bmax.x < lo || bmax.y < lo || bmax.z < lo || bmin.x > hi || bmin.y > hi || bmin.z > hi) {
+        ++chunk.counts.outside;
+        continue;
+      }
+      if (bmin.x >= lo && bmin.y >= lo && bmin.z >= lo && bmax.x <= hi && bmax.y <= hi && bmax.z <= hi) {
+        emitTriangle(p[0], p[1], p[2], material, result.emissionScale, chunk.out, chunk.counts);
+        continue;
+      }
+      if (glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) == 0.0) {
+        ++chunk.counts.degenerate;
+        continue;
+      }
+      ++chunk.counts.clipped;
+      const Polygon poly = clipToBox({p[0], p[1], p[2]}, lo, hi);
+      for (size_t k = 1; k + 1 < poly.size(); ++k)  // fan; zero-area pieces are dropped
+        emitTriangle(poly[0], poly[k], poly[k + 1], material, result.emissionScale, chunk.out, chunk.counts);
+    }
+  });
+  for (Chunk& c : chunks) {
+    result.triangles.insert(result.triangles.end(), c.out.begin(), c.out.end());
+    result.degenerate += c.counts.degenerate;
+    result.outside += c.counts.outside;
+    result.clipped += c.counts.clipped;
+  }
+  return result;
+}
+
+}  // namespace voxgi

@@ -1,0 +1,150 @@
+// CPU voxelize stage: every (triangle, voxel) pair the shared kernel accepts is accumulated with
+// integer atomics (order-independent, so bit-identical for any thread count), then resolved.
+#include <atomic>
+#include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "common/error.h"
+#include "cpu/stages.h"
+#include "shaders/shared/voxelize_kernel.h"
+
+namespace voxgi::cpu {
+namespace {
+
+using shared::VoxelContribution;
+using shared::VoxelTriangle;
+
+struct Accumulator {
+  const GridSpec& grid;
+  Buffer& weight;
+  Buffer& albedo;
+  Buffer& normal;
+  Buffer* emission;  // null when the scene emits nothing
+  std::atomic<bool> overflow{false};
+
+  static void add(uint32_t& word, uint32_t value) {
+    std::atomic_ref<uint32_t>(word).fetch_add(value, std::memory_order_relaxed);
+  }
+
+  void operator()(const glm::ivec3& voxel, const VoxelContribution& c) {
+    const size_t e = grid.index(voxel);
+    const uint32_t old =
+        std::atomic_ref<uint32_t>(weight.words[e]).fetch_add(c.weight, std::memory_order_relaxed);
+    if (old > std::numeric_limits<uint32_t>::max() - c.weight) overflow = true;
+    for (int i = 0; i < 3; ++i) {
+      add(albedo.words[3 * e + size_t(i)], c.albedo[i]);
+      add(normal.words[3 * e + size_t(i)], static_cast<uint32_t>(c.normal[i]));  // two's complement
+      if (emission != nullptr) add(emission->words[3 * e + size_t(i)], c.emission[i]);
+    }
+  }
+};
+
+bool inside(const glm::ivec3& v, int n) {
+  return v.x >= 0 && v.y >= 0 && v.z >= 0 && v.x < n && v.y < n && v.z < n;
+}
+
+void conservativeTriangle(const VoxelTriangle& t, int n, Accumulator& acc) {
+  const unsigned axis = t.info.x;
+  const glm::vec3 p0 = shared::toDominant(glm::vec3(t.v0), axis);
+  const glm::vec3 p1 = shared::toDominant(glm::vec3(t.v1), axis);
+  const glm::vec3 p2 = shared::toDominant(glm::vec3(t.v2), axis);
+  const glm::vec3 lo = glm::min(p0, glm::min(p1, p2));
+  const glm::vec3 hi = glm::max(p0, glm::max(p1, p2));
+  // Closed voxels: a coordinate on a column boundary touches the column below it too.
+  const int u0 = std::max(0, int(std::floor(lo.x)) - 1), u1 = std::min(n - 1, int(std::floor(hi.x)));
+  const int w0 = std::max(0, int(std::floor(lo.y)) - 1), w1 = std::min(n - 1, int(std::floor(hi.y)));
+  VoxelContribution c{};
+  for (int cw = w0; cw <= w1; ++cw)
+    for (int cu = u0; cu <= u1; ++cu) {
+      const glm::ivec2 layers = shared::columnLayers(t, {cu, cw}, n);
+      for (int k = layers.x; k <= layers.y; ++k) {
+        const glm::ivec3 voxel = shared::fromDominant({cu, cw, k}, axis);
+        if (shared::conservativeContribution(t, voxel, c)) acc(voxel, c);
+      }
+    }
+}
+
+void antialiasedTriangle(const VoxelTriangle& t, int n, Accumulator& acc) {
+  const int s = int(t.info.y);
+  for (int i = 0; i < s; ++i)
+    for (int j = 0; j < s - i; ++j)
+      for (int part = 0; part < 2; ++part) {
+        const bool up = part == 0;
+        if (!up && j == s - 1 - i) continue;  // the last cell of a row has no downward triangle
+        const glm::vec3 p = shared::antialiasedSample(t, i, j, up);
+        const glm::ivec3 base = shared::tentBase(p);
+        for (int corner = 0; corner < 8; ++corner) {
+          const glm::ivec3 voxel = shared::tentCorner(base, corner);
+          if (!inside(voxel, n)) continue;
+          const unsigned w = shared::tentWeight(t, p, base, corner);
+          if (w != 0u) acc(voxel, shared::weightedContribution(t, w));
+        }
+      }
+}
+
+}  // namespace
+
+void voxelize(const StageContext& ctx, BufferSet& buffers) {
+  const GridSpec& grid = ctx.scene.grid;
+  const int n = grid.resolution;
+  checkStageMemory(ctx.scene, "voxelize");
+  const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
+  const bool emissive = ctx.triangles.emissionScale > 0.0f;
+  const glm::ivec3 extent(n);
+  Buffer weight(bufferSpec("voxelize", "weight_sum"), extent);
+  Buffer albedoSum(bufferSpec("voxelize", "albedo_sum"), extent);
+  Buffer normalSum(bufferSpec("voxelize", "normal_sum"), extent);
+  Buffer emissionSum = emissive ? Buffer(bufferSpec("voxelize", "emission_sum"), extent) : Buffer();
+  Accumulator acc{grid, weight, albedoSum, normalSum, emissive ? &emissionSum : nullptr};
+
+  const auto& tris = ctx.triangles.triangles;
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, tris.size(), 64), [&](const auto& range) {
+    for (size_t i = range.begin(); i != range.end(); ++i) {
+      if (antialiased) antialiasedTriangle(tris[i], n, acc);
+      else conservativeTriangle(tris[i], n, acc);
+    }
+  });
+
+  Buffer opacity(bufferSpec("voxelize", "opacity"), extent);
+  Buffer albedo(bufferSpec("voxelize", "albedo"), extent);
+  Buffer normal(bufferSpec("voxelize", "normal"), extent);
+  Buffer emission = emissive ? Buffer(bufferSpec("voxelize", "emission"), extent) : Buffer();
+  std::atomic<bool> tooHeavy{false};
+  tbb::parallel_for(tbb::blocked_range<size_t>(0, weight.elementCount(), 4096), [&](const auto& range) {
+    for (size_t e = range.begin(); e != range.end(); ++e) {
+      const uint32_t w = weight.words[e];
+      if (w > shared::kMaxWeightSum) tooHeavy = true;
+      opacity.set(e, 0, shared::resolveOpacity(w, antialiased));
+      auto sum3 = [&](const Buffer& b) { return glm::uvec3(b.words[3 * e], b.words[3 * e + 1], b.words[3 * e + 2]); };
+      const glm::vec3 a = shared::resolveAverage(sum3(albedoSum), w);
+      const glm::vec3 nm = shared::resolveNormal(glm::ivec3(sum3(normalSum)), w);
+      for (int c = 0; c < 3; ++c) {
+        albedo.set(e, c, a[c]);
+        normal.set(e, c, nm[c]);
+      }
+      if (emissive) {
+        const glm::vec3 em = shared::resolveEmission(sum3(emissionSum), w, ctx.triangles.emissionScale);
+        for (int c = 0; c < 3; ++c) emission.set(e, c, em[c]);
+      }
+    }
+  });
+  if (acc.overflow || tooHeavy)
+    throw InputError(ctx.scene.file, "meshes",
+                     "more than 32768 voxel faces of surface fall into one voxel (fixed-point "
+                     "overflow); lower grid.resolution or remove overlapping copies");
+
+  buffers["weight_sum"] = std::move(weight);
+  buffers["albedo_sum"] = std::move(albedoSum);
+  buffers["normal_sum"] = std::move(normalSum);
+  buffers["opacity"] = std::move(opacity);
+  buffers["albedo"] = std::move(albedo);
+  buffers["normal"] = std::move(normal);
+  if (emissive) {
+    buffers["emission_sum"] = std::move(emissionSum);
+    buffers["emission"] = std::move(emission);
+  }
+}
+
+}  // namespace voxgi::cpu

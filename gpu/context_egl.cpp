@@ -1,0 +1,90 @@
+// EGL context: a hardware device through EGL_EXT_platform_device if there is one, otherwise Mesa's
+// surfaceless platform (llvmpipe). No surface: voxgi renders into framebuffer objects.
+#include <EGL/egl.h>
+#include <EGL/eglext.h>
+
+#include <vector>
+
+#include "gpu/context.h"
+
+namespace voxgi::gpu {
+namespace {
+
+#ifndef EGL_PLATFORM_SURFACELESS_MESA
+#define EGL_PLATFORM_SURFACELESS_MESA 0x31DD
+#endif
+
+class EglContext : public GlContext {
+ public:
+  EglContext() : GlContext(GlPlatform::egl) {}
+  ~EglContext() override {
+    if (display_ != EGL_NO_DISPLAY) {
+      eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+      if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
+      eglTerminate(display_);
+    }
+  }
+
+  // Tries one display; on success the context is current. Returns false and cleans up otherwise.
+  bool open(EGLDisplay display) {
+    EGLint major = 0, minor = 0;
+    if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor)) return false;
+    display_ = display;
+    const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    EGLConfig config = nullptr;
+    EGLint count = 0;
+    eglChooseConfig(display, configAttribs, &config, 1, &count);  // may find none: no-config is fine
+    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+                                     EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    if (eglBindAPI(EGL_OPENGL_API))
+      context_ = eglCreateContext(display, count > 0 ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT,
+                                  contextAttribs);
+    if (context_ != EGL_NO_CONTEXT &&
+        eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+      return true;
+    if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display, context_);
+    context_ = EGL_NO_CONTEXT;
+    eglTerminate(display);
+    display_ = EGL_NO_DISPLAY;
+    return false;
+  }
+
+  void finish() { loadFunctions(reinterpret_cast<Gl::ProcLoader>(&eglGetProcAddress)); }
+
+ private:
+  EGLDisplay display_ = EGL_NO_DISPLAY;
+  EGLContext context_ = EGL_NO_CONTEXT;
+};
+
+}  // namespace
+
+std::unique_ptr<GlContext> createEglContext() {
+  auto getPlatformDisplay = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
+      eglGetProcAddress("eglGetPlatformDisplayEXT"));
+  auto queryDevices =
+      reinterpret_cast<PFNEGLQUERYDEVICESEXTPROC>(eglGetProcAddress("eglQueryDevicesEXT"));
+  if (getPlatformDisplay == nullptr) throw GlUnavailable("EGL: no eglGetPlatformDisplayEXT");
+
+  // Hardware devices first.
+  if (queryDevices != nullptr) {
+    EGLint count = 0;
+    queryDevices(0, nullptr, &count);
+    std::vector<EGLDeviceEXT> devices(static_cast<size_t>(count));
+    if (count > 0 && queryDevices(count, devices.data(), &count)) {
+      for (EGLDeviceEXT device : devices) {
+        auto context = std::make_unique<EglContext>();
+        if (!context->open(getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, device, nullptr))) continue;
+        context->finish();
+        if (context->isHardware()) return context;
+      }
+    }
+  }
+  auto context = std::make_unique<EglContext>();
+  if (!context->open(getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr)))
+    throw GlUnavailable("EGL: no hardware device and no surfaceless platform with OpenGL 4.5 core");
+  context->finish();
+  return context;
+}
+
+}  // namespace voxgi::gpu

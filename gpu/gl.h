@@ -1,0 +1,50 @@
+// OpenGL function table. voxgi never links libGL: OSMesa and EGL each hand out their own entry
+// points, so the table is filled from the current context's getProcAddress.
+#pragma once
+
+#include <GL/glcorearb.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace voxgi::gpu {
+
+struct Gl {
+#define VOXGI_GL(type, name) type name = nullptr;
+#include "gpu/gl_functions.inc"
+#undef VOXGI_GL
+
+  using ProcLoader = void (*(*)(const char*))();
+  // Fills every entry; throws GlUnavailable naming the first one the context lacks.
+  void load(ProcLoader getProcAddress);
+  // Throws std::runtime_error("what: GL error 0x...") if the GL error flag is set.
+  void check(const char* what) const;
+};
+
+// No usable GL context (library missing, no 4.5 core, ...): callers may fall back to the CPU.
+class GlUnavailable : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// An object that deletes a GL name when it goes out of scope.
+template <void (*Delete)(const Gl&, GLuint)>
+class GlName {
+ public:
+  GlName(const Gl& gl, GLuint id) : gl_(&gl), id_(id) {}
+  GlName(const GlName&) = delete;
+  GlName& operator=(const GlName&) = delete;
+  ~GlName() { Delete(*gl_, id_); }
+  GLuint get() const { return id_; }
+
+ private:
+  const Gl* gl_;
+  GLuint id_;
+};
+
+void deleteBuffer(const Gl& gl, GLuint id);
+void deleteTexture(const Gl& gl, GLuint id);
+using GlBuffer = GlName<deleteBuffer>;
+using GlTexture = GlName<deleteTexture>;
+
+}  // namespace voxgi::gpu

@@ -1,0 +1,81 @@
+#include "gpu/program.h"
+
+#include <vector>
+
+#include "shaders/shader_source.h"
+
+namespace voxgi::gpu {
+namespace {
+
+GLenum stageType(std::string_view file) {
+  if (file.ends_with(".vert")) return GL_VERTEX_SHADER;
+  if (file.ends_with(".geom")) return GL_GEOMETRY_SHADER;
+  if (file.ends_with(".frag")) return GL_FRAGMENT_SHADER;
+  if (file.ends_with(".comp")) return GL_COMPUTE_SHADER;
+  throw ShaderError(std::string(file) + ": unknown shader stage extension");
+}
+
+}  // namespace
+
+GLuint compileShader(const Gl& gl, std::string_view fileName, std::string_view text) {
+  const GLuint shader = gl.CreateShader(stageType(fileName));
+  const char* source = text.data();
+  const auto length = static_cast<GLint>(text.size());
+  gl.ShaderSource(shader, 1, &source, &length);
+  gl.CompileShader(shader);
+  GLint ok = 0;
+  gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (ok) return shader;
+  GLint logLength = 0;
+  gl.GetShaderiv(shader, GL_INFO_LOG_LENGTH, &logLength);
+  std::vector<char> log(static_cast<size_t>(logLength) + 1, '\0');
+  gl.GetShaderInfoLog(shader, logLength, nullptr, log.data());
+  gl.DeleteShader(shader);
+  std::string message(log.data());
+  try {
+    message = mapShaderLog(shaderSource(fileName), message);
+  } catch (const std::out_of_range&) {  // not an embedded shader: locations stay numeric
+  }
+  throw ShaderError("cannot compile " + std::string(fileName) + ":\n" + message);
+}
+
+Program::Program(const Gl& gl, std::initializer_list<std::string_view> stages) : gl_(gl) {
+  id_ = gl.CreateProgram();
+  std::vector<GLuint> shaders;
+  try {
+    for (std::string_view name : stages) {
+      shaders.push_back(compileShader(gl, name, shaderSource(name).text));
+      gl.AttachShader(id_, shaders.back());
+    }
+  } catch (...) {
+    for (GLuint s : shaders) gl.DeleteShader(s);
+    gl.DeleteProgram(id_);
+    throw;
+  }
+  gl.LinkProgram(id_);
+  for (GLuint s : shaders) gl.DeleteShader(s);
+  GLint ok = 0;
+  gl.GetProgramiv(id_, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    std::vector<char> log(4096, '\0');
+    gl.GetProgramInfoLog(id_, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    gl.DeleteProgram(id_);
+    std::string names;
+    for (std::string_view n : stages) names += std::string(n) + " ";
+    throw ShaderError("cannot link " + names + ":\n" + log.data());
+  }
+}
+
+Program::~Program() { gl_.DeleteProgram(id_); }
+
+GLint Program::location(const char* name) const {
+  const GLint loc = gl_.GetUniformLocation(id_, name);
+  if (loc < 0) throw ShaderError(std::string("program has no uniform ") + name);
+  return loc;
+}
+
+void Program::set(const char* name, int value) const { gl_.ProgramUniform1i(id_, location(name), value); }
+void Program::set(const char* name, unsigned value) const { gl_.ProgramUniform1ui(id_, location(name), value); }
+void Program::set(const char* name, float value) const { gl_.ProgramUniform1f(id_, location(name), value); }
+
+}  // namespace voxgi::gpu

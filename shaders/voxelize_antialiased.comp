@@ -1,0 +1,41 @@
+#version 450 core
+// Antialiased voxelization: the n*n area samples of every triangle are splatted with the trilinear
+// tent kernel, in the same order and fixed point as cpu/voxelize.cpp. One invocation handles one
+// row i of one triangle's subdivision (at most 2n - 1 samples): llvmpipe ends an invocation after
+// 65535 loop iterations, which a whole large triangle (n^2 samples * 8 corners) would exceed.
+layout(local_size_x = 64) in;
+#include "shared/voxelize_kernel.h"
+#include "voxelize_accumulate.glsl"
+
+// firstRow[t] = sum of the subdivisions n of triangles before t; firstRow[count] = all rows.
+layout(std430, binding = 2) readonly buffer Rows { uint firstRow[]; };
+uniform uint uTriangleCount;
+uniform uint uRowCount;
+
+void main() {
+  uint row = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 64u + gl_LocalInvocationID.x;
+  if (row >= uRowCount) return;
+  uint lo = 0u;
+  uint hi = uTriangleCount;
+  while (hi - lo > 1u) {  // the triangle whose rows contain `row`
+    uint mid = (lo + hi) / 2u;
+    if (firstRow[mid] <= row) lo = mid;
+    else hi = mid;
+  }
+  VoxelTriangle t = triangles[lo];
+  int s = int(t.info.y);
+  int i = int(row - firstRow[lo]);
+  for (int j = 0; j < s - i; ++j) {
+    int parts = j == s - 1 - i ? 1 : 2;  // the last cell of a row has only the upward half
+    for (int part = 0; part < parts; ++part) {
+      vec3 p = antialiasedSample(t, i, j, part == 0);
+      ivec3 base = tentBase(p);
+      for (int corner = 0; corner < 8; ++corner) {
+        ivec3 voxel = tentCorner(base, corner);
+        bool inside = all(greaterThanEqual(voxel, ivec3(0))) && all(lessThan(voxel, ivec3(uResolution)));
+        uint w = inside ? tentWeight(t, p, base, corner) : 0u;
+        if (w != 0u) accumulate(voxel, weightedContribution(t, w));
+      }
+    }
+  }
+}

@@ -1,0 +1,210 @@
+// The voxgi command line (DESIGN.md "CLI contract"). Exit codes: 0 ok, 1 internal failure or a
+// failed diff, 2 bad input (one line naming the file and field).
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
+
+#include "common/error.h"
+#include "common/scene_load.h"
+#include "common/vdb_io.h"
+#include "cpu/stages.h"
+#include "gpu/program.h"
+#include "gpu/stages.h"
+#include "tools/backend.h"
+#include "tools/bench.h"
+#include "validation/diff.h"
+#include "validation/report.h"
+
+namespace voxgi::tools {
+
+BackendChoice chooseBackend(const std::string& backend, gpu::GlPlatform platform) {
+  BackendChoice choice;
+  if (backend == "cpu") return choice;
+  if (backend == "gpu") {
+    choice.context = gpu::GlContext::create(platform);
+    choice.gpu = true;
+    return choice;
+  }
+  try {
+    auto context = gpu::GlContext::create(gpu::GlPlatform::egl);
+    if (context->isHardware()) {
+      choice.context = std::move(context);
+      choice.gpu = true;
+      return choice;
+    }
+    choice.note = "auto: no hardware GPU (" + context->renderer() + "), using the CPU backend";
+  } catch (const gpu::GlUnavailable& e) {
+    choice.note = std::string("auto: no GL context (") + e.what() + "), using the CPU backend";
+  }
+  return choice;
+}
+
+}  // namespace voxgi::tools
+
+namespace {
+
+using namespace voxgi;
+
+struct Common {
+  std::string scene;
+  int resolution = 0;  // 0: the scene's
+  std::string mode = "conservative";
+  std::string backend = "auto";
+  std::string gl = "egl";
+};
+
+Scene loadWithOverrides(const Common& c) {
+  Scene scene = loadScene(c.scene);
+  if (c.resolution != 0) scene.grid.resolution = readResolution("--resolution", "", c.resolution);
+  return scene;
+}
+
+std::vector<const Buffer*> buffersOf(const BufferSet& set, std::string_view stage, bool withSums) {
+  std::vector<const Buffer*> out;
+  for (const BufferSpec* spec : stageBuffers(stage)) {
+    const auto it = set.find(spec->name);
+    if (it == set.end()) continue;
+    if (!withSums && spec->type != ScalarType::f32) continue;
+    out.push_back(&it->second);
+  }
+  return out;
+}
+
+void runStages(const Scene& scene, const Settings& settings, tools::BackendChoice& backend,
+               std::string_view until, BufferSet& buffers) {
+  const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
+  const StageContext ctx{scene, settings, triangles};
+#define VOXGI_STAGE(stage, summary)                                   \
+  if (backend.gpu) gpu::stage(*backend.context, ctx, buffers);        \
+  else cpu::stage(ctx, buffers);                                      \
+  if (until == #stage) return;
+#include "common/stages.inc"
+#undef VOXGI_STAGE
+}
+
+int cmdVoxelize(const Common& c, const std::string& out, bool sums) {
+  Scene scene = loadWithOverrides(c);
+  Settings settings;
+  settings.voxelizeMode = parseVoxelizeMode(c.mode);
+  auto backend = tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl));
+  if (!backend.note.empty()) std::cerr << "voxgi: " << backend.note << "\n";
+  const auto start = std::chrono::steady_clock::now();
+  BufferSet buffers;
+  runStages(scene, settings, backend, "voxelize", buffers);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  size_t occupied = 0;
+  for (uint32_t w : buffers.at("weight_sum").words) occupied += w != 0u;
+  writeVdb(out, buffersOf(buffers, "voxelize", sums), scene.grid,
+           {{"voxgi_mode", c.mode}, {"voxgi_backend", backend.gpu ? backend.context->renderer() : "cpu"}});
+  std::cout << "voxelized " << scene.triangleCount() << " triangles into " << scene.grid.resolution
+            << "^3 (" << c.mode << ", " << (backend.gpu ? "gpu: " + backend.context->renderer() : "cpu")
+            << "): " << occupied << " occupied voxels in " << seconds << " s -> " << out << "\n";
+  return kExitOk;
+}
+
+int cmdDiff(const Common& c, const std::string& stage, const std::string& json, const std::string& dumpDir) {
+  Scene scene = loadWithOverrides(c);
+  Settings settings;
+  settings.voxelizeMode = parseVoxelizeMode(c.mode);
+  std::vector<std::string> stages;
+  for (const StageSpec& s : stageSpecs())
+    if (stage == "all" || stage == s.name) stages.emplace_back(s.name);
+  if (stages.empty()) throw InputError("--stage", "", "unknown stage '" + stage + "'");
+  auto context = gpu::GlContext::create(gpu::parseGlPlatform(c.gl));
+  std::cerr << "voxgi: diff on " << context->renderer() << "\n";
+  const auto reports = validation::diffStages(scene, settings, *context, stages, dumpDir);
+  validation::printReport(std::cout, reports);
+  if (!json.empty()) std::ofstream(json) << validation::toJson(reports).dump(2) << "\n";
+  bool pass = true;
+  for (const auto& r : reports) pass &= r.pass;
+  return pass ? kExitOk : kExitInternal;
+}
+
+int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
+  if (findStage(stage) == nullptr) throw InputError("--stage", "", "unknown stage '" + stage + "'");
+  Scene scene = loadWithOverrides(c);
+  Settings settings;
+  settings.voxelizeMode = parseVoxelizeMode(c.mode);
+  auto backend = tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl));
+  BufferSet buffers;
+  runStages(scene, settings, backend, stage, buffers);
+  std::filesystem::create_directories(dir);
+  const std::string path = dir + "/" + stage + ".vdb";
+  writeVdb(path, buffersOf(buffers, stage, true), scene.grid);
+  std::cout << "wrote " << path << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"voxgi: real-time global illumination with a CPU reference and OpenGL shaders"};
+  app.require_subcommand(1);
+  int threads = 0;
+  app.add_option("--threads", threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  Common c;
+  auto addCommon = [&](CLI::App* cmd, bool backend) {
+    cmd->add_option("scene", c.scene, "scene .json or mesh file (OBJ, glTF, PLY)")->required();
+    cmd->add_option("--resolution", c.resolution, "voxel grid resolution (power of two)");
+    cmd->add_option("--mode", c.mode, "voxelization: conservative or antialiased")
+        ->check(CLI::IsMember({"conservative", "antialiased"}));
+    cmd->add_option("--gl", c.gl, "GL platform for the GPU backend")->check(CLI::IsMember({"egl", "osmesa"}));
+    if (backend)
+      cmd->add_option("--backend", c.backend, "cpu, gpu or auto (hardware GPU if present, else cpu)")
+          ->check(CLI::IsMember({"cpu", "gpu", "auto"}));
+    cmd->add_option("--threads", threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  };
+  std::string out, stage = "all", json, dumpDir;
+  bool sums = false;
+  auto* voxelize = app.add_subcommand("voxelize", "voxelize a scene into an OpenVDB file");
+  addCommon(voxelize, true);
+  voxelize->add_option("--out", out, "output .vdb")->required();
+  voxelize->add_flag("--sums", sums, "also write the fixed-point sums");
+  auto* diff = app.add_subcommand("diff", "run stages on both backends and compare every buffer");
+  addCommon(diff, false);
+  diff->add_option("--stage", stage, "stage name or all");
+  diff->add_option("--json", json, "write the report as JSON");
+  diff->add_option("--dump", dumpDir, "write cpu, gpu and difference grids (.vdb) here");
+  auto* dump = app.add_subcommand("dump", "write every buffer of a stage as .vdb");
+  addCommon(dump, true);
+  dump->add_option("--stage", stage, "stage name")->required();
+  dump->add_option("--out", out, "output folder")->required();
+  tools::BenchOptions bench;
+  auto* benchCmd = app.add_subcommand("bench", "benchmarks (see docs/benchmarks.md)");
+  auto* benchVoxelize = benchCmd->add_subcommand("voxelize", "voxelize: CPU 1/2 threads, GPU, OpenVDB meshToVolume");
+  benchCmd->require_subcommand(1);
+  tools::addBenchOptions(*benchVoxelize, bench);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+  std::unique_ptr<tbb::global_control> limit;
+  if (threads > 0)
+    limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
+                                                  static_cast<size_t>(threads));
+  try {
+    if (*voxelize) return cmdVoxelize(c, out, sums);
+    if (*diff) return cmdDiff(c, stage, json, dumpDir);
+    if (*dump) return cmdDump(c, stage, out);
+    if (*benchVoxelize) return tools::runBenchVoxelize(bench);
+  } catch (const InputError& e) {
+    std::cerr << "voxgi: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const gpu::GlUnavailable& e) {
+    std::cerr << "voxgi: no OpenGL 4.5 context: " << e.what() << " (use --backend cpu or auto)\n";
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    std::cerr << "voxgi: internal error: " << e.what() << "\n";
+    return kExitInternal;
+  }
+  return kExitInternal;
+}

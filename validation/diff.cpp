@@ -1,0 +1,192 @@
+#include "validation/diff.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <limits>
+
+#include "common/vdb_io.h"
+#include "cpu/stages.h"
+#include "gpu/stages.h"
+#include "validation/comparisons.h"
+
+namespace voxgi::validation {
+namespace {
+
+// Distance in units in the last place between two floats (same sign ordering, NaN = infinite).
+double ulpDistance(float a, float b) {
+  if (std::isnan(a) || std::isnan(b)) return std::numeric_limits<double>::infinity();
+  auto ordered = [](float f) {
+    int32_t i;
+    std::memcpy(&i, &f, sizeof i);
+    return i < 0 ? int64_t(std::numeric_limits<int32_t>::min()) - i : int64_t(i);
+  };
+  return std::abs(static_cast<double>(ordered(a) - ordered(b)));
+}
+
+struct StageFunctions {
+  std::string_view name;
+  void (*cpu)(const StageContext&, BufferSet&);
+  void (*gpu)(gpu::GlContext&, const StageContext&, BufferSet&);
+};
+
+#define VOXGI_STAGE(stage, summary) StageFunctions{#stage, &cpu::stage, &gpu::stage},
+const StageFunctions kStageFunctions[] = {
+#include "common/stages.inc"
+};
+#undef VOXGI_STAGE
+
+TieClassifier classifierFor(std::string_view stage, const StageContext& ctx) {
+  if (stage == "voxelize") return voxelizeTies(ctx);
+  return {};
+}
+
+double seconds(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+void dump(const std::string& dir, std::string_view stage, const BufferSet& cpu, const BufferSet& gpu,
+          const TieClassifier& classify, const GridSpec& grid) {
+  std::filesystem::create_directories(dir);
+  const std::string prefix = dir + "/" + std::string(stage);
+  std::vector<const Buffer*> cpuList, gpuList, diffList;
+  // The difference grids reuse the buffer names but hold gpu - cpu as f32.
+  std::vector<BufferSpec> diffSpecs;
+  for (const BufferSpec* spec : stageBuffers(stage))
+    diffSpecs.push_back({spec->stage, spec->name, ScalarType::f32, spec->components, spec->meaning});
+  static constexpr BufferSpec kClassSpec{"", "classification", ScalarType::i32, 1,
+                                         "0 agree, 1 tie, 2 not a tie"};
+  std::vector<Buffer> diffs;
+  diffs.reserve(diffSpecs.size() + 1);
+  Buffer classes(kClassSpec, glm::ivec3(grid.resolution));
+  for (const BufferSpec& spec : diffSpecs) {
+    const auto c = cpu.find(spec.name), g = gpu.find(spec.name);
+    if (c == cpu.end() || g == gpu.end()) continue;
+    cpuList.push_back(&c->second);
+    gpuList.push_back(&g->second);
+    Buffer d(spec, c->second.extent);
+    const Comparison& cmp = comparisonFor(spec.stage, spec.name);
+    for (size_t e = 0; e < d.elementCount(); ++e) {
+      bool differs = false;
+      for (int k = 0; k < spec.components; ++k) {
+        const double delta = g->second.value(e, k) - c->second.value(e, k);
+        d.set(e, k, static_cast<float>(delta));
+        differs |= cmp.metric == Metric::exact ? c->second.words[e * size_t(spec.components) + size_t(k)] !=
+                                                     g->second.words[e * size_t(spec.components) + size_t(k)]
+                                               : delta != 0.0;
+      }
+      if (differs && classes.get<int32_t>(e, 0) == 0)
+        classes.set<int32_t>(e, 0, classify && classify(e) ? 1 : 2);
+    }
+    diffs.push_back(std::move(d));
+  }
+  for (const Buffer& d : diffs) diffList.push_back(&d);
+  diffList.push_back(&classes);
+  writeVdb(prefix + "_cpu.vdb", cpuList, grid, {{"voxgi_backend", "cpu"}});
+  writeVdb(prefix + "_gpu.vdb", gpuList, grid, {{"voxgi_backend", "gpu"}});
+  writeVdb(prefix + "_diff.vdb", diffList, grid, {{"voxgi_backend", "gpu minus cpu"}});
+}
+
+}  // namespace
+
+StageReport compareStage(std::string_view stage, const BufferSet& cpu, const BufferSet& gpu,
+                         const TieClassifier& classify) {
+  StageReport report;
+  report.stage = std::string(stage);
+  constexpr size_t kMaxClassified = 20000;
+  size_t classified = 0;
+  for (const BufferSpec* spec : stageBuffers(stage)) {
+    const Comparison& cmp = comparisonFor(stage, spec->name);
+    BufferReport r;
+    r.buffer = std::string(spec->name);
+    r.metric = cmp.describe();
+    r.tolerance = cmp.tolerance;
+    r.reason = std::string(cmp.reason);
+    const auto c = cpu.find(spec->name), g = gpu.find(spec->name);
+    if (c == cpu.end() && g == gpu.end()) {
+      r.status = "not produced by either backend (the scene does not need it)";
+      report.buffers.push_back(r);
+      continue;
+    }
+    if (c == cpu.end() || g == gpu.end() || c->second.extent != g->second.extent) {
+      r.status = c == cpu.end() ? "missing on cpu" : g == gpu.end() ? "missing on gpu" : "extents differ";
+      r.pass = false;
+      report.pass = false;
+      report.buffers.push_back(r);
+      continue;
+    }
+    r.status = "compared";
+    const Buffer& a = c->second;
+    const Buffer& b = g->second;
+    r.elements = a.elementCount();
+    double worst = -1.0;
+    for (size_t e = 0; e < r.elements; ++e) {
+      bool outside = false;
+      double elementWorst = 0.0;
+      for (int k = 0; k < spec->components; ++k) {
+        const size_t w = e * size_t(spec->components) + size_t(k);
+        if (a.words[w] == b.words[w]) continue;
+        const double abs = std::abs(b.value(e, k) - a.value(e, k));
+        r.maxAbsDiff = std::max(r.maxAbsDiff, abs);
+        elementWorst = std::max(elementWorst, abs);
+        if (spec->type == ScalarType::f32) {
+          const double ulp = ulpDistance(a.get<float>(e, k), b.get<float>(e, k));
+          r.maxUlp = std::max(r.maxUlp, ulp);
+          if (cmp.metric == Metric::max_ulp) outside |= ulp > cmp.tolerance;
+        }
+        if (cmp.metric == Metric::exact) outside = true;
+        if (cmp.metric == Metric::max_abs) outside |= abs > cmp.tolerance;
+      }
+      if (elementWorst > worst && elementWorst > 0.0) {
+        worst = elementWorst;
+        r.worstElement = static_cast<long long>(e);
+      }
+      if (!outside) continue;
+      ++r.differing;
+      if (!classify || classified >= kMaxClassified) {
+        ++r.unclassified;
+      } else {
+        ++classified;
+        classify(e) ? ++r.ties : ++r.nonTies;
+      }
+    }
+    r.fraction = r.elements ? double(r.differing) / double(r.elements) : 0.0;
+    r.pass = r.nonTies == 0 && r.unclassified == 0;
+    report.pass &= r.pass;
+    report.buffers.push_back(r);
+  }
+  return report;
+}
+
+std::vector<StageReport> diffStages(const Scene& scene, const Settings& settings,
+                                    gpu::GlContext& context, const std::vector<std::string>& stages,
+                                    const std::string& dumpDir) {
+  const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
+  const StageContext ctx{scene, settings, triangles};
+  std::vector<StageReport> reports;
+  BufferSet inputs;  // the CPU's outputs of the stages run so far
+  for (const StageFunctions& stage : kStageFunctions) {
+    BufferSet cpuOut = inputs, gpuOut = inputs;
+    auto start = std::chrono::steady_clock::now();
+    stage.cpu(ctx, cpuOut);
+    const double cpuSeconds = seconds(start);
+    const bool wanted = std::find(stages.begin(), stages.end(), stage.name) != stages.end();
+    if (wanted) {
+      start = std::chrono::steady_clock::now();
+      stage.gpu(context, ctx, gpuOut);
+      const double gpuSeconds = seconds(start);
+      const TieClassifier classify = classifierFor(stage.name, ctx);
+      StageReport report = compareStage(stage.name, cpuOut, gpuOut, classify);
+      report.cpuSeconds = cpuSeconds;
+      report.gpuSeconds = gpuSeconds;
+      reports.push_back(std::move(report));
+      if (!dumpDir.empty()) dump(dumpDir, stage.name, cpuOut, gpuOut, classify, scene.grid);
+    }
+    inputs = std::move(cpuOut);
+  }
+  return reports;
+}
+
+}  // namespace voxgi::validation

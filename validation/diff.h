@@ -1,0 +1,57 @@
+// The per-buffer diff engine behind `voxgi diff`: both backends run a stage on the same inputs
+// (the CPU's outputs of the stages before it), and every declared buffer is compared with its
+// registered comparison. Elements outside the tolerance are classified by the stage's tie
+// classifier: a tie (documented near-boundary case) is allowed, anything else fails.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "common/buffer.h"
+#include "common/stage.h"
+#include "gpu/context.h"
+
+namespace voxgi::validation {
+
+struct BufferReport {
+  std::string buffer;
+  std::string metric;     // Comparison::describe()
+  double tolerance = 0.0;
+  std::string reason;
+  std::string status;     // "compared", or why it was skipped ("not produced: ...")
+  size_t elements = 0;
+  size_t differing = 0;   // elements outside the tolerance
+  double fraction = 0.0;  // differing / elements
+  double maxAbsDiff = 0.0;
+  double maxUlp = 0.0;
+  size_t ties = 0, nonTies = 0, unclassified = 0;
+  long long worstElement = -1;  // element index of the largest difference, -1 if none
+  bool pass = true;
+};
+
+struct StageReport {
+  std::string stage;
+  std::vector<BufferReport> buffers;
+  double cpuSeconds = 0.0, gpuSeconds = 0.0;
+  bool pass = true;
+};
+
+// Classification of one element that differs: true for a tie. Built per stage from its context.
+using TieClassifier = std::function<bool(size_t element)>;
+
+// Compares two buffer sets on `stage`'s declared buffers. `classify` may be empty (no ties).
+StageReport compareStage(std::string_view stage, const BufferSet& cpu, const BufferSet& gpu,
+                         const TieClassifier& classify);
+
+// Runs `stages` (in graph order) on both backends and compares them. With a non-empty `dumpDir`,
+// writes <dir>/<stage>_cpu.vdb, _gpu.vdb and _diff.vdb (gpu - cpu per buffer, plus a
+// `classification` grid: 0 agree, 1 tie, 2 not a tie).
+std::vector<StageReport> diffStages(const Scene& scene, const Settings& settings,
+                                    gpu::GlContext& context, const std::vector<std::string>& stages,
+                                    const std::string& dumpDir);
+
+// The voxelize stage's tie classifier (validation/voxelize_ties.cpp).
+TieClassifier voxelizeTies(const StageContext& ctx);
+
+}  // namespace voxgi::validation
