@@ -19,6 +19,8 @@ class GlContext {
   virtual ~GlContext() = default;
 
   const Gl& gl() const { return gl_; }
+  // Makes this context current on the calling thread (GPU stages call it on entry).
+  virtual void makeCurrent() = 0;
   std::string renderer() const;
   // True unless the renderer is a software rasterizer (llvmpipe, softpipe, swrast).
   bool isHardware() const;

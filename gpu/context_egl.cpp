@@ -50,6 +50,11 @@ class EglContext : public GlContext {
     return false;
   }
 
+  void makeCurrent() override {
+    if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+      throw GlUnavailable("EGL: cannot make the context current");
+  }
+
   void finish() { loadFunctions(reinterpret_cast<Gl::ProcLoader>(&eglGetProcAddress)); }
 
  private:

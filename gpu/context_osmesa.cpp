@@ -18,7 +18,6 @@ class OsmesaContext : public GlContext {
       if ((library_ = dlopen(name, RTLD_NOW | RTLD_LOCAL)) != nullptr) break;
     if (library_ == nullptr) throw GlUnavailable("OSMesa: libOSMesa not found");
     auto create = symbol<decltype(&OSMesaCreateContextAttribs)>("OSMesaCreateContextAttribs");
-    auto makeCurrent = symbol<decltype(&OSMesaMakeCurrent)>("OSMesaMakeCurrent");
     auto getProc = symbol<decltype(&OSMesaGetProcAddress)>("OSMesaGetProcAddress");
     destroy_ = symbol<decltype(&OSMesaDestroyContext)>("OSMesaDestroyContext");
     const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
@@ -26,10 +25,14 @@ class OsmesaContext : public GlContext {
                            OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
     context_ = create(attribs, nullptr);
     if (context_ == nullptr) throw GlUnavailable("OSMesa: cannot create a 4.5 core context");
-    // OSMesa needs a colour buffer to make a context current; voxgi renders into FBOs.
-    if (!makeCurrent(context_, pixels_.data(), GL_UNSIGNED_BYTE, 1, 1))
-      throw GlUnavailable("OSMesa: cannot make the context current");
+    makeCurrent_ = symbol<decltype(&OSMesaMakeCurrent)>("OSMesaMakeCurrent");
+    OsmesaContext::makeCurrent();
     loadFunctions(reinterpret_cast<Gl::ProcLoader>(getProc));
+  }
+  void makeCurrent() override {
+    // OSMesa needs a colour buffer to make a context current; voxgi renders into FBOs.
+    if (!makeCurrent_(context_, pixels_.data(), GL_UNSIGNED_BYTE, 1, 1))
+      throw GlUnavailable("OSMesa: cannot make the context current");
   }
   ~OsmesaContext() override {
     if (context_ != nullptr) destroy_(context_);
@@ -46,6 +49,7 @@ class OsmesaContext : public GlContext {
   void* library_ = nullptr;
   OSMesaContext context_ = nullptr;
   decltype(&OSMesaDestroyContext) destroy_ = nullptr;
+  decltype(&OSMesaMakeCurrent) makeCurrent_ = nullptr;
   std::vector<unsigned char> pixels_ = std::vector<unsigned char>(4);
 };
 

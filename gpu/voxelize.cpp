@@ -28,6 +28,7 @@ void readVolume(const Gl& gl, GLuint texture, GLenum format, GLenum type, Buffer
 }  // namespace
 
 void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+  context.makeCurrent();
   const Gl& gl = context.gl();
   const int n = ctx.scene.grid.resolution;
   if (3 * n > context.max3dTextureSize())

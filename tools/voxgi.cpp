@@ -183,9 +183,12 @@ int main(int argc, char** argv) {
 
   try {
     app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? kExitOk : kExitBadInput;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help on a subcommand, --version
+    std::cerr << "voxgi: " << e.what() << " (see voxgi --help)\n";
+    return kExitBadInput;
   }
   std::unique_ptr<tbb::global_control> limit;
   if (threads > 0)

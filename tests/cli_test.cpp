@@ -1,0 +1,86 @@
+// The voxgi command: exit codes, one-line errors and the files it writes.
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <vector>
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+#include <openvdb/openvdb.h>
+
+#include "tests/test_scenes.h"
+
+namespace voxgi::test {
+namespace {
+
+struct CommandResult {
+  int code;
+  std::string output;  // stdout and stderr
+};
+
+CommandResult voxgi(const std::string& args) {
+  const std::string command = std::string(VOXGI_BINARY) + " " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buffer;
+  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
+  const int status = pipe ? pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+TEST(Cli, VoxelizeWritesAlignedGrids) {
+  const std::string out = testing::TempDir() + "/cornell.vdb";
+  const CommandResult r = voxgi("voxelize " + sourcePath("scenes/cornell_box.json") + " --resolution 32 --out " + out + " --backend cpu");
+  ASSERT_EQ(r.code, 0) << r.output;
+  openvdb::initialize();
+  openvdb::io::File file(out);
+  file.open();
+  std::set<std::string> names;
+  for (auto it = file.beginName(); it != file.endName(); ++it) names.insert(it.gridName());
+  EXPECT_EQ(names, (std::set<std::string>{"albedo", "normal", "emission", "opacity"}));
+  const auto opacity = file.readGrid("opacity");
+  // Grid min (-2,-2,-2), size 562, N = 32: voxel (0,0,0)'s centre sits half a voxel inside.
+  const openvdb::Vec3d c = opacity->indexToWorld(openvdb::Coord(0, 0, 0));
+  EXPECT_NEAR(c.x(), -2.0 + 0.5 * 562.0 / 32.0, 1e-9);
+}
+
+TEST(Cli, BareMeshAndAutoBackend) {
+  const std::string out = testing::TempDir() + "/bunny.vdb";
+  const CommandResult r = voxgi("voxelize " + sourcePath("scenes/bunny.obj") + " --resolution 16 --out " + out + " --backend auto");
+  EXPECT_EQ(r.code, 0) << r.output;
+}
+
+TEST(Cli, BadInputExitsTwoWithOneLine) {
+  const std::string scene = sourcePath("scenes/cornell_box.json");
+  for (const std::string& args : std::vector<std::string>{"voxelize " + scene + " --resolution 100 --out x.vdb",
+                                  "voxelize /nonexistent.json --out x.vdb",
+                                  "voxelize " + scene + " --resolution 2048 --out x.vdb --backend cpu",
+                                  "voxelize " + scene + " --mode blurry --out x.vdb",
+                                  "diff " + scene + " --stage nosuchstage"}) {
+    const CommandResult r = voxgi(args);
+    EXPECT_EQ(r.code, 2) << args << "\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << "\n" << r.output;
+  }
+  const std::string broken = testing::TempDir() + "/broken.json";
+  std::ofstream(broken) << "{\"meshes\": [";
+  const CommandResult r = voxgi("voxelize " + broken + " --out x.vdb");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("broken.json"), std::string::npos) << r.output;
+}
+
+TEST(Cli, DiffReportsEveryBufferAsJson) {
+  const std::string json = testing::TempDir() + "/report.json", dump = testing::TempDir() + "/dump";
+  const CommandResult r = voxgi("diff " + sourcePath("scenes/bunny.json") + " --stage voxelize --resolution 32 --json " + json + " --dump " + dump);
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream in(json);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (const char* key : {"\"metric\"", "\"tolerance\"", "\"max_abs_diff\"", "\"differing\"", "\"fraction\"", "\"pass\"", "\"non_ties\""})
+    EXPECT_NE(text.find(key), std::string::npos) << key;
+  for (const char* f : {"/voxelize_cpu.vdb", "/voxelize_gpu.vdb", "/voxelize_diff.vdb"})
+    EXPECT_TRUE(std::filesystem::exists(dump + f)) << f;
+}
+
+}  // namespace
+}  // namespace voxgi::test

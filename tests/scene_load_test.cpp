@@ -1,0 +1,94 @@
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "common/scene_load.h"
+#include "tests/test_scenes.h"
+
+namespace voxgi::test {
+namespace {
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::string path = testing::TempDir() + "/" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+// The InputError message of loading `json` (with a valid mesh next to it), or "" if it loads.
+std::string errorOf(const std::string& json) {
+  writeTemp("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  try {
+    loadScene(writeTemp("scene.json", json));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(SceneLoad, CornellBox) {
+  const Scene s = loadScene(sourcePath("scenes/cornell_box.json"));
+  EXPECT_EQ(s.triangleCount(), 32u);
+  EXPECT_TRUE(s.hasEmission());
+  EXPECT_EQ(s.grid.resolution, 64);
+  bool red = false;
+  for (const Material& m : s.materials)
+    if (m.name == "red") red = std::abs(m.albedo.x - 0.63f) < 1e-6f;
+  EXPECT_TRUE(red);
+  EXPECT_NEAR(s.camera.fovYDeg, 39.3, 1e-9);
+}
+
+TEST(SceneLoad, BunnyWithMaterialOverrideAndLight) {
+  const Scene s = loadScene(sourcePath("scenes/bunny.json"));
+  EXPECT_EQ(s.lights.size(), 1u);
+  EXPECT_GT(s.triangleCount(), 3000u);
+  EXPECT_EQ(s.materials[s.meshes[0].material].name, "bunny");
+}
+
+TEST(SceneLoad, BareMeshFileGetsDefaults) {
+  const Scene s = loadScene(sourcePath("scenes/bunny.obj"));
+  EXPECT_GT(s.triangleCount(), 3000u);
+  const auto [lo, hi] = s.bounds();
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_LT(s.grid.min[a], lo[a]);
+    EXPECT_GT(s.grid.min[a] + s.grid.size, hi[a]);
+  }
+}
+
+TEST(SceneLoad, GltfAndPlyImport) {
+  const std::string ply = writeTemp("tri.ply",
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(loadScene(ply).triangleCount(), 1u);
+  // A minimal glTF 2.0 triangle with an embedded buffer (3 float3 positions).
+  const std::string gltf = writeTemp("tri.gltf", R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+    "nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+    "buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
+    "bufferViews":[{"buffer":0,"byteLength":36}],
+    "accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}]})");
+  EXPECT_EQ(loadScene(gltf).triangleCount(), 1u);
+}
+
+TEST(SceneLoad, ErrorsNameTheFileAndTheField) {
+  EXPECT_NE(errorOf("{").find("malformed JSON"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [{"file": "missing.obj"}]})").find("meshes[0].file"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [{"file": "tri.obj"}], "colour": 1})").find("unknown field 'colour'"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [{"file": "tri.obj"}], "grid": {"resolution": 100}})").find("grid.resolution"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [{"file": "tri.obj", "material": "gold"}]})").find("unknown material 'gold'"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [], "materials": {"m": {"albedo": [1, -0.5, 0]}}})").find("materials.m.albedo[1]"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [], "lights": [{"type": "area", "intensity": [1,1,1]}]})").find("lights[0].type"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [], "grid": {"min": [0,0,0]}})").find("grid"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [], "camera": {"position": [0,0,0], "look_at": [0,0,0]}})").find("camera.look_at"), std::string::npos);
+  EXPECT_EQ(errorOf(R"({"meshes": [{"file": "tri.obj"}]})"), "");
+  EXPECT_THROW(loadScene("/nonexistent/scene.json"), InputError);
+  EXPECT_THROW(loadScene(writeTemp("broken.obj", "v 0 0\nf 1 2 3 4 5\n")), InputError);
+}
+
+TEST(SceneLoad, ErrorsAreOneLine) {
+  const std::string e = errorOf(R"({"meshes": [{"file": "tri.obj"}], "grid": {"resolution": 3}})");
+  EXPECT_EQ(e.find('\n'), std::string::npos) << e;
+  EXPECT_NE(e.find("scene.json"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace voxgi::test

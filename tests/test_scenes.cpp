@@ -1,0 +1,68 @@
+#include "tests/test_scenes.h"
+
+#include "common/voxel_triangles.h"
+#include "cpu/stages.h"
+
+namespace voxgi::test {
+
+Scene makeScene(const std::vector<Triangle>& triangles, const GridSpec& grid, const Material& material) {
+  Scene scene;
+  scene.file = "test scene";
+  scene.materials.push_back(material);
+  Mesh mesh;
+  mesh.name = "test mesh";
+  for (const Triangle& t : triangles) {
+    const auto base = static_cast<unsigned>(mesh.positions.size());
+    mesh.positions.insert(mesh.positions.end(), t.begin(), t.end());
+    mesh.triangles.emplace_back(base, base + 1, base + 2);
+  }
+  scene.meshes.push_back(mesh);
+  scene.grid = grid;
+  return scene;
+}
+
+std::vector<Triangle> quad(int axis, double at, glm::dvec2 lo, glm::dvec2 hi) {
+  auto point = [&](double u, double v) {
+    glm::dvec3 p;
+    p[axis] = at;
+    p[(axis + 1) % 3] = u;
+    p[(axis + 2) % 3] = v;
+    return p;
+  };
+  return {{point(lo.x, lo.y), point(hi.x, lo.y), point(hi.x, hi.y)},
+          {point(lo.x, lo.y), point(hi.x, hi.y), point(lo.x, hi.y)}};
+}
+
+GridSpec unitGrid(int n, double size) {
+  GridSpec g;
+  g.min = glm::dvec3(0.0);
+  g.size = size;
+  g.resolution = n;
+  return g;
+}
+
+BufferSet runCpu(const Scene& scene, VoxelizeMode mode) {
+  Settings settings;
+  settings.voxelizeMode = mode;
+  const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
+  BufferSet out;
+  cpu::voxelize(StageContext{scene, settings, tris}, out);
+  return out;
+}
+
+uint64_t hashBuffers(const BufferSet& buffers) {
+  uint64_t h = 1469598103934665603ull;
+  auto mix = [&](uint64_t x) {
+    h ^= x;
+    h *= 1099511628211ull;
+  };
+  for (const auto& [name, b] : buffers) {
+    for (char c : name) mix(static_cast<unsigned char>(c));
+    for (uint32_t w : b.words) mix(w);
+  }
+  return h;
+}
+
+std::string sourcePath(const std::string& relative) { return std::string(VOXGI_SOURCE_DIR) + "/" + relative; }
+
+}  // namespace voxgi::test

@@ -1,0 +1,29 @@
+// Scenes built in code for tests, and helpers to run and inspect the voxelize stage.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "common/buffer.h"
+#include "common/scene.h"
+#include "common/stage.h"
+
+namespace voxgi::test {
+
+using Triangle = std::array<glm::dvec3, 3>;
+
+// One mesh of the given triangles with one material, on the given grid.
+Scene makeScene(const std::vector<Triangle>& triangles, const GridSpec& grid,
+                const Material& material = Material{});
+// Two triangles covering the axis-aligned rectangle [lo, hi] in the plane axis = `at`.
+std::vector<Triangle> quad(int axis, double at, glm::dvec2 lo, glm::dvec2 hi);
+// A unit grid [0, size]^3 with N^3 voxels.
+GridSpec unitGrid(int n, double size = 1.0);
+
+BufferSet runCpu(const Scene& scene, VoxelizeMode mode);
+// FNV-1a over every buffer's name and words.
+uint64_t hashBuffers(const BufferSet& buffers);
+std::string sourcePath(const std::string& relative);  // relative to the project root
+
+}  // namespace voxgi::test
