@@ -23,15 +23,22 @@ constexpr std::array kBuffers{
 
 const char* scalarTypeName(ScalarType t) {
   switch (t) {
-    case ScalarType::u32: return "u32";
-    case ScalarType::i32: return "i32";
-    case ScalarType::f32: return "f32";
+    case ScalarType::u32:
+      return "u32";
+    case ScalarType::i32:
+      return "i32";
+    case ScalarType::f32:
+      return "f32";
   }
   return "?";
 }
 
-std::span<const StageSpec> stageSpecs() { return kStages; }
-std::span<const BufferSpec> bufferSpecs() { return kBuffers; }
+std::span<const StageSpec> stageSpecs() {
+  return kStages;
+}
+std::span<const BufferSpec> bufferSpecs() {
+  return kBuffers;
+}
 
 std::vector<const BufferSpec*> stageBuffers(std::string_view stage) {
   std::vector<const BufferSpec*> out;
@@ -53,13 +60,18 @@ const StageSpec* findStage(std::string_view name) {
 }
 
 Buffer::Buffer(const BufferSpec& s, glm::ivec3 e)
-    : spec(&s), extent(e), words(size_t(e.x) * size_t(e.y) * size_t(e.z) * size_t(s.components), 0u) {}
+    : spec(&s),
+      extent(e),
+      words(size_t(e.x) * size_t(e.y) * size_t(e.z) * size_t(s.components), 0u) {}
 
 double Buffer::value(size_t element, int component) const {
   switch (spec->type) {
-    case ScalarType::u32: return get<uint32_t>(element, component);
-    case ScalarType::i32: return get<int32_t>(element, component);
-    case ScalarType::f32: return get<float>(element, component);
+    case ScalarType::u32:
+      return get<uint32_t>(element, component);
+    case ScalarType::i32:
+      return get<int32_t>(element, component);
+    case ScalarType::f32:
+      return get<float>(element, component);
   }
   return 0.0;
 }

@@ -22,7 +22,8 @@ struct GridSpec {
   glm::dvec3 toVoxel(const glm::dvec3& world) const { return (world - min) * (resolution / size); }
   uint64_t index(const glm::ivec3& v) const {
     const auto n = static_cast<uint64_t>(resolution);
-    return static_cast<uint64_t>(v.x) + n * (static_cast<uint64_t>(v.y) + n * static_cast<uint64_t>(v.z));
+    return static_cast<uint64_t>(v.x) +
+           n * (static_cast<uint64_t>(v.y) + n * static_cast<uint64_t>(v.z));
   }
 };
 

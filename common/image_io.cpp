@@ -42,7 +42,9 @@ void writeExr(const std::string& path, const Image& image) {
     auto* base = reinterpret_cast<char*>(const_cast<glm::vec3*>(image.pixels.data()));
     const size_t xs = sizeof(glm::vec3), ys = xs * size_t(image.width);
     for (int c = 0; c < 3; ++c)
-      fb.insert(c == 0 ? "R" : c == 1 ? "G" : "B",
+      fb.insert(c == 0   ? "R"
+                : c == 1 ? "G"
+                         : "B",
                 Imf::Slice(Imf::FLOAT, base + size_t(c) * sizeof(float), xs, ys));
     file.setFrameBuffer(fb);
     file.writePixels(image.height);
@@ -63,7 +65,9 @@ Image readExr(const std::string& path) {
     auto* base = reinterpret_cast<char*>(image.pixels.data()) -
                  (ptrdiff_t(dw.min.x) * ptrdiff_t(xs) + ptrdiff_t(dw.min.y) * ptrdiff_t(ys));
     for (int c = 0; c < 3; ++c)
-      fb.insert(c == 0 ? "R" : c == 1 ? "G" : "B",
+      fb.insert(c == 0   ? "R"
+                : c == 1 ? "G"
+                         : "B",
                 Imf::Slice(Imf::FLOAT, base + size_t(c) * sizeof(float), xs, ys));
     file.setFrameBuffer(fb);
     file.readPixels(dw.min.y, dw.max.y);

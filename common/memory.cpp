@@ -36,8 +36,8 @@ void requireMemory(uint64_t bytes, const std::string& what, const std::string& f
   const uint64_t available = availableMemoryBytes();
   if (available != 0 && bytes > available)
     throw InputError(file, field,
-                     what + " needs " + formatBytes(bytes) + " but only " +
-                         formatBytes(available) + " is available");
+                     what + " needs " + formatBytes(bytes) + " but only " + formatBytes(available) +
+                         " is available");
 }
 
 }  // namespace voxgi

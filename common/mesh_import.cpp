@@ -54,15 +54,19 @@ void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& tra
   if (!std::filesystem::is_regular_file(path)) throw InputError(path, "", "no such mesh file");
   Assimp::Importer importer;
   // No degenerate-triangle removal here: the voxelizer handles them (and tests that it does).
-  const aiScene* ai = importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType |
-                                                  aiProcess_JoinIdenticalVertices);
-  if (ai == nullptr) throw InputError(path, "", std::string("cannot import: ") + importer.GetErrorString());
+  const aiScene* ai = importer.ReadFile(
+      path, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_JoinIdenticalVertices);
+  if (ai == nullptr)
+    throw InputError(path, "", std::string("cannot import: ") + importer.GetErrorString());
   std::vector<uint32_t> materialOf(ai->mNumMaterials);
   for (unsigned i = 0; i < ai->mNumMaterials; ++i)
     materialOf[i] = materialOverride ? *materialOverride
                                      : internMaterial(scene, convertMaterial(*ai->mMaterials[i]));
 
-  struct Item { const aiNode* node; glm::dmat4 toWorld; };
+  struct Item {
+    const aiNode* node;
+    glm::dmat4 toWorld;
+  };
   std::vector<Item> stack{{ai->mRootNode, transform * toGlm(ai->mRootNode->mTransformation)}};
   while (!stack.empty()) {
     const Item item = stack.back();
@@ -80,8 +84,9 @@ void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& tra
       for (unsigned v = 0; v < am.mNumVertices; ++v) {
         const aiVector3D& p = am.mVertices[v];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-          throw InputError(path, "mesh '" + std::string(am.mName.C_Str()) + "' vertex " +
-                                     std::to_string(v), "coordinate is NaN or infinite");
+          throw InputError(
+              path, "mesh '" + std::string(am.mName.C_Str()) + "' vertex " + std::to_string(v),
+              "coordinate is NaN or infinite");
         mesh.positions.push_back(glm::dvec3(item.toWorld * glm::dvec4(p.x, p.y, p.z, 1.0)));
       }
       for (unsigned f = 0; f < am.mNumFaces; ++f)

@@ -53,7 +53,9 @@ struct Field {
   int integer(int lo, int hi) const {
     if (!value.is_number_integer()) fail("must be an integer");
     const auto i = value.get<int64_t>();
-    if (i < lo || i > hi) fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + std::to_string(i));
+    if (i < lo || i > hi)
+      fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
+           std::to_string(i));
     return static_cast<int>(i);
   }
   bool boolean() const {
@@ -107,14 +109,18 @@ glm::dmat4 readTransform(const Field& f) {
 }
 
 Light readLight(const Field& f) {
-  f.allowKeys({"type", "position", "direction", "intensity", "spot_angle_deg", "falloff",
-               "casts_shadows"});
+  f.allowKeys(
+      {"type", "position", "direction", "intensity", "spot_angle_deg", "falloff", "casts_shadows"});
   Light l;
   const std::string type = f.at("type").string();
-  if (type == "point") l.type = Light::Type::point;
-  else if (type == "spot") l.type = Light::Type::spot;
-  else if (type == "directional") l.type = Light::Type::directional;
-  else f.at("type").fail("must be point, spot or directional, got '" + type + "'");
+  if (type == "point")
+    l.type = Light::Type::point;
+  else if (type == "spot")
+    l.type = Light::Type::spot;
+  else if (type == "directional")
+    l.type = Light::Type::directional;
+  else
+    f.at("type").fail("must be point, spot or directional, got '" + type + "'");
   if (l.type != Light::Type::directional) l.position = f.at("position").vec3();
   if (l.type != Light::Type::point) {
     const glm::dvec3 d = f.at("direction").vec3();
@@ -122,12 +128,14 @@ Light readLight(const Field& f) {
     l.direction = glm::normalize(d);
   }
   l.intensity = f.at("intensity").color(0.0, 1e12);
-  if (f.has("spot_angle_deg")) l.spotAngleDeg = static_cast<float>(f.at("spot_angle_deg").number(1e-3, 179.9));
+  if (f.has("spot_angle_deg"))
+    l.spotAngleDeg = static_cast<float>(f.at("spot_angle_deg").number(1e-3, 179.9));
   if (f.has("casts_shadows")) l.castsShadows = f.at("casts_shadows").boolean();
   if (f.has("falloff")) {
     const Field fo = f.at("falloff");
     if (fo.value.is_string()) {
-      if (fo.string() != "inverse_square") fo.fail("must be \"inverse_square\" or {constant, linear, quadratic}");
+      if (fo.string() != "inverse_square")
+        fo.fail("must be \"inverse_square\" or {constant, linear, quadratic}");
     } else {
       fo.allowKeys({"constant", "linear", "quadratic"});
       l.falloff.kind = Falloff::Kind::polynomial;
@@ -164,12 +172,25 @@ Camera readCamera(const Field& f) {
 
 int readResolution(const std::string& file, const std::string& field, int64_t n) {
   if (n < 1 || n > kMaxResolution || (n & (n - 1)) != 0)
-    throw InputError(file, field, "must be a power of two in [1, " + std::to_string(kMaxResolution) +
-                                      "], got " + std::to_string(n));
+    throw InputError(file, field,
+                     "must be a power of two in [1, " + std::to_string(kMaxResolution) + "], got " +
+                         std::to_string(n));
   return static_cast<int>(n);
 }
 
 void validateGeometry(const Scene& scene) {
+  // Materials from mesh files are checked here; JSON ones were checked field by field.
+  for (const Material& m : scene.materials)
+    for (int c = 0; c < 3; ++c) {
+      auto check = [&](float v, float hi, const char* field) {
+        if (!(v >= 0.0f && v <= hi))
+          throw InputError(scene.file, "material '" + m.name + "'." + field,
+                           "must be in [0, " + Field::fmt(hi) + "], got " + Field::fmt(v));
+      };
+      check(m.albedo[c], 1.0f, "albedo");
+      check(m.specular[c], 1.0f, "specular");
+      check(m.emission[c], 1e9f, "emission");
+    }
   for (const Mesh& m : scene.meshes) {
     for (size_t v = 0; v < m.positions.size(); ++v) {
       const glm::dvec3& p = m.positions[v];
@@ -236,18 +257,21 @@ Scene loadScene(const std::string& path) {
         if (scene.materials[k].name == name) material = static_cast<uint32_t>(k);
       if (!material) m.at("material").fail("unknown material '" + name + "'");
     }
-    const glm::dmat4 transform = m.has("transform") ? readTransform(m.at("transform")) : glm::dmat4(1.0);
+    const glm::dmat4 transform =
+        m.has("transform") ? readTransform(m.at("transform")) : glm::dmat4(1.0);
     const size_t before = scene.materials.size();
     importMeshFile(scene, meshPath.string(), transform, material);
     // Materials of the file whose name matches a JSON material take the JSON values.
     for (size_t k = before; k < scene.materials.size(); ++k)
       for (size_t j = 0; j < namedMaterials; ++j)
-        if (scene.materials[k].name == scene.materials[j].name) scene.materials[k] = scene.materials[j];
+        if (scene.materials[k].name == scene.materials[j].name)
+          scene.materials[k] = scene.materials[j];
   }
   if (root.has("lights")) {
     const Field lights = root.at("lights");
     if (!lights.value.is_array()) lights.fail("must be an array");
-    for (size_t i = 0; i < lights.value.size(); ++i) scene.lights.push_back(readLight(lights.at(i)));
+    for (size_t i = 0; i < lights.value.size(); ++i)
+      scene.lights.push_back(readLight(lights.at(i)));
   }
   if (root.has("camera")) scene.camera = readCamera(root.at("camera"));
   if (root.has("background")) scene.background = root.at("background").color(0.0, 1e9);

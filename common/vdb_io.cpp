@@ -25,7 +25,8 @@ openvdb::GridBase::Ptr makeGrid(const Buffer& b, const GridSpec& grid, Convert c
       for (int i = 0; i < n; ++i) {
         const size_t e = grid.index({i, j, k});
         bool nonzero = false;
-        for (int c = 0; c < b.components(); ++c) nonzero |= b.words[e * size_t(b.components()) + size_t(c)] != 0u;
+        for (int c = 0; c < b.components(); ++c)
+          nonzero |= b.words[e * size_t(b.components()) + size_t(c)] != 0u;
         if (nonzero) acc.setValue(openvdb::Coord(i, j, k), convert(b, e));
       }
   return g;
@@ -58,14 +59,16 @@ void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers
           return openvdb::Vec3s(x.get<float>(e, 0), x.get<float>(e, 1), x.get<float>(e, 2));
         });
       else
-        g = makeGrid<openvdb::FloatGrid>(*b, grid, [](const Buffer& x, size_t e) { return x.get<float>(e, 0); });
+        g = makeGrid<openvdb::FloatGrid>(
+            *b, grid, [](const Buffer& x, size_t e) { return x.get<float>(e, 0); });
     } else {  // integers keep their bits: u32 is stored bit-cast as int32
       if (vec)
         g = makeGrid<openvdb::Vec3IGrid>(*b, grid, [](const Buffer& x, size_t e) {
           return openvdb::Vec3i(x.get<int32_t>(e, 0), x.get<int32_t>(e, 1), x.get<int32_t>(e, 2));
         });
       else
-        g = makeGrid<openvdb::Int32Grid>(*b, grid, [](const Buffer& x, size_t e) { return x.get<int32_t>(e, 0); });
+        g = makeGrid<openvdb::Int32Grid>(
+            *b, grid, [](const Buffer& x, size_t e) { return x.get<int32_t>(e, 0); });
     }
     g->setName(std::string(b->spec->name));
     g->setTransform(gridTransform(grid));
@@ -73,7 +76,8 @@ void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers
     if (b->spec->name == "normal") g->setVectorType(openvdb::VEC_COVARIANT);
     g->insertMeta("voxgi_stage", openvdb::StringMetadata(std::string(b->spec->stage)));
     g->insertMeta("voxgi_type", openvdb::StringMetadata(scalarTypeName(b->spec->type)));
-    g->insertMeta("voxgi_grid_min", openvdb::Vec3DMetadata(openvdb::Vec3d(grid.min.x, grid.min.y, grid.min.z)));
+    g->insertMeta("voxgi_grid_min",
+                  openvdb::Vec3DMetadata(openvdb::Vec3d(grid.min.x, grid.min.y, grid.min.z)));
     g->insertMeta("voxgi_grid_size", openvdb::DoubleMetadata(grid.size));
     g->insertMeta("voxgi_resolution", openvdb::Int32Metadata(grid.resolution));
     for (const auto& [key, value] : metadata) g->insertMeta(key, openvdb::StringMetadata(value));
@@ -88,7 +92,8 @@ void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers
   }
 }
 
-BufferSet readVdb(const std::string& path, GridSpec& grid, const std::vector<const BufferSpec*>& specs) {
+BufferSet readVdb(const std::string& path, GridSpec& grid,
+                  const std::vector<const BufferSpec*>& specs) {
   openvdb::initialize();
   openvdb::GridPtrVecPtr grids;
   try {

@@ -66,7 +66,8 @@ void emitTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
   t.albedo = glm::vec4(material.albedo, static_cast<float>(twiceArea / std::abs(n[axis])));
   t.normal = glm::vec4(glm::vec3(n / twiceArea),
                        static_cast<float>(area / (double(subdivision) * subdivision)));
-  t.emission = glm::vec4(emissionScale > 0.0f ? material.emission / emissionScale : glm::vec3(0.0f), 0.0f);
+  t.emission =
+      glm::vec4(emissionScale > 0.0f ? material.emission / emissionScale : glm::vec3(0.0f), 0.0f);
   t.info = glm::uvec4(axis, subdivision, 0u, 0u);
   out.push_back(t);
 }
@@ -87,7 +88,11 @@ VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid) {
       result.emissionScale = std::max({result.emissionScale, e.x, e.y, e.z});
     }
   // Work items: (mesh, first triangle) chunks, processed in parallel, concatenated in order.
-  struct Chunk { size_t mesh, begin, end; std::vector<shared::VoxelTriangle> out; Counts counts; };
+  struct Chunk {
+    size_t mesh, begin, end;
+    std::vector<shared::VoxelTriangle> out;
+    Counts counts;
+  };
   std::vector<Chunk> chunks;
   const size_t chunkSize = 4096;
   for (size_t mi = 0; mi < scene.meshes.size(); ++mi)
@@ -100,7 +105,8 @@ VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid) {
     const Material& material = scene.materials[mesh.material];
     for (size_t ti = chunk.begin; ti < chunk.end; ++ti) {
       const glm::uvec3& tri = mesh.triangles[ti];
-      const glm::dvec3 p[3] = {grid.toVoxel(mesh.positions[tri.x]), grid.toVoxel(mesh.positions[tri.y]),
+      const glm::dvec3 p[3] = {grid.toVoxel(mesh.positions[tri.x]),
+                               grid.toVoxel(mesh.positions[tri.y]),
                                grid.toVoxel(mesh.positions[tri.z])};
       const glm::dvec3 bmin = glm::min(p[0], glm::min(p[1], p[2]));
       const glm::dvec3 bmax = glm::max(p[0], glm::max(p[1], p[2]));
@@ -108,7 +114,8 @@ VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid) {
         ++chunk.counts.outside;
         continue;
       }
-      if (bmin.x >= lo && bmin.y >= lo && bmin.z >= lo && bmax.x <= hi && bmax.y <= hi && bmax.z <= hi) {
+      if (bmin.x >= lo && bmin.y >= lo && bmin.z >= lo && bmax.x <= hi && bmax.y <= hi &&
+          bmax.z <= hi) {
         emitTriangle(p[0], p[1], p[2], material, result.emissionScale, chunk.out, chunk.counts);
         continue;
       }
@@ -119,7 +126,8 @@ VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid) {
       ++chunk.counts.clipped;
       const Polygon poly = clipToBox({p[0], p[1], p[2]}, lo, hi);
       for (size_t k = 1; k + 1 < poly.size(); ++k)  // fan; zero-area pieces are dropped
-        emitTriangle(poly[0], poly[k], poly[k + 1], material, result.emissionScale, chunk.out, chunk.counts);
+        emitTriangle(poly[0], poly[k], poly[k + 1], material, result.emissionScale, chunk.out,
+                     chunk.counts);
     }
   });
   for (Chunk& c : chunks) {

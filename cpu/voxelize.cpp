@@ -53,8 +53,10 @@ void conservativeTriangle(const VoxelTriangle& t, int n, Accumulator& acc) {
   const glm::vec3 lo = glm::min(p0, glm::min(p1, p2));
   const glm::vec3 hi = glm::max(p0, glm::max(p1, p2));
   // Closed voxels: a coordinate on a column boundary touches the column below it too.
-  const int u0 = std::max(0, int(std::floor(lo.x)) - 1), u1 = std::min(n - 1, int(std::floor(hi.x)));
-  const int w0 = std::max(0, int(std::floor(lo.y)) - 1), w1 = std::min(n - 1, int(std::floor(hi.y)));
+  const int u0 = std::max(0, int(std::floor(lo.x)) - 1),
+            u1 = std::min(n - 1, int(std::floor(hi.x)));
+  const int w0 = std::max(0, int(std::floor(lo.y)) - 1),
+            w1 = std::min(n - 1, int(std::floor(hi.y)));
   VoxelContribution c{};
   for (int cw = w0; cw <= w1; ++cw)
     for (int cu = u0; cu <= u1; ++cu) {
@@ -102,8 +104,10 @@ void voxelize(const StageContext& ctx, BufferSet& buffers) {
   const auto& tris = ctx.triangles.triangles;
   tbb::parallel_for(tbb::blocked_range<size_t>(0, tris.size(), 64), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
-      if (antialiased) antialiasedTriangle(tris[i], n, acc);
-      else conservativeTriangle(tris[i], n, acc);
+      if (antialiased)
+        antialiasedTriangle(tris[i], n, acc);
+      else
+        conservativeTriangle(tris[i], n, acc);
     }
   });
 
@@ -112,24 +116,28 @@ void voxelize(const StageContext& ctx, BufferSet& buffers) {
   Buffer normal(bufferSpec("voxelize", "normal"), extent);
   Buffer emission = emissive ? Buffer(bufferSpec("voxelize", "emission"), extent) : Buffer();
   std::atomic<bool> tooHeavy{false};
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, weight.elementCount(), 4096), [&](const auto& range) {
-    for (size_t e = range.begin(); e != range.end(); ++e) {
-      const uint32_t w = weight.words[e];
-      if (w > shared::kMaxWeightSum) tooHeavy = true;
-      opacity.set(e, 0, shared::resolveOpacity(w, antialiased));
-      auto sum3 = [&](const Buffer& b) { return glm::uvec3(b.words[3 * e], b.words[3 * e + 1], b.words[3 * e + 2]); };
-      const glm::vec3 a = shared::resolveAverage(sum3(albedoSum), w);
-      const glm::vec3 nm = shared::resolveNormal(glm::ivec3(sum3(normalSum)), w);
-      for (int c = 0; c < 3; ++c) {
-        albedo.set(e, c, a[c]);
-        normal.set(e, c, nm[c]);
-      }
-      if (emissive) {
-        const glm::vec3 em = shared::resolveEmission(sum3(emissionSum), w, ctx.triangles.emissionScale);
-        for (int c = 0; c < 3; ++c) emission.set(e, c, em[c]);
-      }
-    }
-  });
+  tbb::parallel_for(
+      tbb::blocked_range<size_t>(0, weight.elementCount(), 4096), [&](const auto& range) {
+        for (size_t e = range.begin(); e != range.end(); ++e) {
+          const uint32_t w = weight.words[e];
+          if (w > shared::kMaxWeightSum) tooHeavy = true;
+          opacity.set(e, 0, shared::resolveOpacity(w, antialiased));
+          auto sum3 = [&](const Buffer& b) {
+            return glm::uvec3(b.words[3 * e], b.words[3 * e + 1], b.words[3 * e + 2]);
+          };
+          const glm::vec3 a = shared::resolveAverage(sum3(albedoSum), w);
+          const glm::vec3 nm = shared::resolveNormal(glm::ivec3(sum3(normalSum)), w);
+          for (int c = 0; c < 3; ++c) {
+            albedo.set(e, c, a[c]);
+            normal.set(e, c, nm[c]);
+          }
+          if (emissive) {
+            const glm::vec3 em =
+                shared::resolveEmission(sum3(emissionSum), w, ctx.triangles.emissionScale);
+            for (int c = 0; c < 3; ++c) emission.set(e, c, em[c]);
+          }
+        }
+      });
   if (acc.overflow || tooHeavy)
     throw InputError(ctx.scene.file, "meshes",
                      "more than 32768 voxel faces of surface fall into one voxel (fixed-point "

@@ -33,10 +33,15 @@ class EglContext : public GlContext {
     const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
     EGLConfig config = nullptr;
     EGLint count = 0;
-    eglChooseConfig(display, configAttribs, &config, 1, &count);  // may find none: no-config is fine
-    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
+    eglChooseConfig(display, configAttribs, &config, 1,
+                    &count);  // may find none: no-config is fine
+    const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                     4,
+                                     EGL_CONTEXT_MINOR_VERSION,
+                                     5,
                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+                                     EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                     EGL_NONE};
     if (eglBindAPI(EGL_OPENGL_API))
       context_ = eglCreateContext(display, count > 0 ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT,
                                   contextAttribs);
@@ -86,7 +91,8 @@ std::unique_ptr<GlContext> createEglContext() {
     }
   }
   auto context = std::make_unique<EglContext>();
-  if (!context->open(getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr)))
+  if (!context->open(
+          getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr)))
     throw GlUnavailable("EGL: no hardware device and no surfaceless platform with OpenGL 4.5 core");
   context->finish();
   return context;

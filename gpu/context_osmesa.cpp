@@ -20,9 +20,17 @@ class OsmesaContext : public GlContext {
     auto create = symbol<decltype(&OSMesaCreateContextAttribs)>("OSMesaCreateContextAttribs");
     auto getProc = symbol<decltype(&OSMesaGetProcAddress)>("OSMesaGetProcAddress");
     destroy_ = symbol<decltype(&OSMesaDestroyContext)>("OSMesaDestroyContext");
-    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 0,
-                           OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 4,
-                           OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,
+                           OSMESA_DEPTH_BITS,
+                           0,
+                           OSMESA_PROFILE,
+                           OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION,
+                           4,
+                           OSMESA_CONTEXT_MINOR_VERSION,
+                           5,
+                           0};
     context_ = create(attribs, nullptr);
     if (context_ == nullptr) throw GlUnavailable("OSMesa: cannot create a 4.5 core context");
     makeCurrent_ = symbol<decltype(&OSMesaMakeCurrent)>("OSMesaMakeCurrent");
@@ -55,6 +63,8 @@ class OsmesaContext : public GlContext {
 
 }  // namespace
 
-std::unique_ptr<GlContext> createOsmesaContext() { return std::make_unique<OsmesaContext>(); }
+std::unique_ptr<GlContext> createOsmesaContext() {
+  return std::make_unique<OsmesaContext>();
+}
 
 }  // namespace voxgi::gpu

@@ -5,8 +5,8 @@
 namespace voxgi::gpu {
 
 void Gl::load(ProcLoader getProcAddress) {
-#define VOXGI_GL(type, name)                                                    \
-  name = reinterpret_cast<type>(getProcAddress("gl" #name));                    \
+#define VOXGI_GL(type, name)                                 \
+  name = reinterpret_cast<type>(getProcAddress("gl" #name)); \
   if (name == nullptr) throw GlUnavailable("GL context lacks gl" #name);
 #include "gpu/gl_functions.inc"
 #undef VOXGI_GL
@@ -21,7 +21,11 @@ void Gl::check(const char* what) const {
   }
 }
 
-void deleteBuffer(const Gl& gl, GLuint id) { gl.DeleteBuffers(1, &id); }
-void deleteTexture(const Gl& gl, GLuint id) { gl.DeleteTextures(1, &id); }
+void deleteBuffer(const Gl& gl, GLuint id) {
+  gl.DeleteBuffers(1, &id);
+}
+void deleteTexture(const Gl& gl, GLuint id) {
+  gl.DeleteTextures(1, &id);
+}
 
 }  // namespace voxgi::gpu

@@ -66,7 +66,9 @@ Program::Program(const Gl& gl, std::initializer_list<std::string_view> stages) :
   }
 }
 
-Program::~Program() { gl_.DeleteProgram(id_); }
+Program::~Program() {
+  gl_.DeleteProgram(id_);
+}
 
 GLint Program::location(const char* name) const {
   const GLint loc = gl_.GetUniformLocation(id_, name);
@@ -74,8 +76,14 @@ GLint Program::location(const char* name) const {
   return loc;
 }
 
-void Program::set(const char* name, int value) const { gl_.ProgramUniform1i(id_, location(name), value); }
-void Program::set(const char* name, unsigned value) const { gl_.ProgramUniform1ui(id_, location(name), value); }
-void Program::set(const char* name, float value) const { gl_.ProgramUniform1f(id_, location(name), value); }
+void Program::set(const char* name, int value) const {
+  gl_.ProgramUniform1i(id_, location(name), value);
+}
+void Program::set(const char* name, unsigned value) const {
+  gl_.ProgramUniform1ui(id_, location(name), value);
+}
+void Program::set(const char* name, float value) const {
+  gl_.ProgramUniform1f(id_, location(name), value);
+}
 
 }  // namespace voxgi::gpu

@@ -17,7 +17,8 @@ class ShaderError : public std::runtime_error {
 
 class Program {
  public:
-  // `stages`: embedded file names; the stage type comes from the extension (.vert .geom .frag .comp).
+  // `stages`: embedded file names; the stage type comes from the extension (.vert .geom .frag
+  // .comp).
   Program(const Gl& gl, std::initializer_list<std::string_view> stages);
   Program(const Program&) = delete;
   Program& operator=(const Program&) = delete;

@@ -44,8 +44,10 @@ void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   GlBuffer triangles(gl, [&] {
     GLuint b = 0;
     gl.CreateBuffers(1, &b);
-    gl.NamedBufferStorage(b, static_cast<GLsizeiptr>(std::max<size_t>(1, tris.size()) * sizeof(shared::VoxelTriangle)),
-                          tris.empty() ? nullptr : tris.data(), 0);
+    gl.NamedBufferStorage(
+        b,
+        static_cast<GLsizeiptr>(std::max<size_t>(1, tris.size()) * sizeof(shared::VoxelTriangle)),
+        tris.empty() ? nullptr : tris.data(), 0);
     return b;
   }());
   const uint32_t zero = 0;
@@ -77,13 +79,15 @@ void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
       std::vector<uint32_t> firstRow(tris.size() + 1, 0u);
       for (size_t i = 0; i < tris.size(); ++i) {
         if (uint64_t(firstRow[i]) + tris[i].info.y > 0xFFFFFFFFull - 64u)
-          throw InputError(ctx.scene.file, "meshes", "too many antialiasing sample rows for one dispatch");
+          throw InputError(ctx.scene.file, "meshes",
+                           "too many antialiasing sample rows for one dispatch");
         firstRow[i + 1] = firstRow[i] + tris[i].info.y;
       }
       GlBuffer rows(gl, [&] {
         GLuint b = 0;
         gl.CreateBuffers(1, &b);
-        gl.NamedBufferStorage(b, static_cast<GLsizeiptr>(firstRow.size() * sizeof(uint32_t)), firstRow.data(), 0);
+        gl.NamedBufferStorage(b, static_cast<GLsizeiptr>(firstRow.size() * sizeof(uint32_t)),
+                              firstRow.data(), 0);
         return b;
       }());
       gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, rows.get());

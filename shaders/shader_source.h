@@ -8,8 +8,8 @@
 namespace voxgi {
 
 struct ShaderSource {
-  std::string_view name;                // stage file name, e.g. "voxelize.frag"
-  std::string_view text;                // resolved source
+  std::string_view name;                    // stage file name, e.g. "voxelize.frag"
+  std::string_view text;                    // resolved source
   std::span<const std::string_view> files;  // source-string number -> file, for error messages
 };
 

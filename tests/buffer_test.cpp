@@ -24,7 +24,8 @@ TEST(Buffer, TypedWordsRoundTrip) {
   b.set<int32_t>(5, 2, -7);
   EXPECT_EQ(b.get<int32_t>(5, 2), -7);
   EXPECT_EQ(b.value(5, 2), -7.0);
-  EXPECT_EQ(stageBufferBytes("voxelize", glm::ivec3(4)), 64u * 4u * (1 + 3 + 3 + 3 + 1 + 3 + 3 + 3));
+  EXPECT_EQ(stageBufferBytes("voxelize", glm::ivec3(4)),
+            64u * 4u * (1 + 3 + 3 + 3 + 1 + 3 + 3 + 3));
 }
 
 }  // namespace

@@ -32,7 +32,8 @@ CommandResult voxgi(const std::string& args) {
 
 TEST(Cli, VoxelizeWritesAlignedGrids) {
   const std::string out = testing::TempDir() + "/cornell.vdb";
-  const CommandResult r = voxgi("voxelize " + sourcePath("scenes/cornell_box.json") + " --resolution 32 --out " + out + " --backend cpu");
+  const CommandResult r = voxgi("voxelize " + sourcePath("scenes/cornell_box.json") +
+                                " --resolution 32 --out " + out + " --backend cpu");
   ASSERT_EQ(r.code, 0) << r.output;
   openvdb::initialize();
   openvdb::io::File file(out);
@@ -48,17 +49,19 @@ TEST(Cli, VoxelizeWritesAlignedGrids) {
 
 TEST(Cli, BareMeshAndAutoBackend) {
   const std::string out = testing::TempDir() + "/bunny.vdb";
-  const CommandResult r = voxgi("voxelize " + sourcePath("scenes/bunny.obj") + " --resolution 16 --out " + out + " --backend auto");
+  const CommandResult r = voxgi("voxelize " + sourcePath("scenes/bunny.obj") +
+                                " --resolution 16 --out " + out + " --backend auto");
   EXPECT_EQ(r.code, 0) << r.output;
 }
 
 TEST(Cli, BadInputExitsTwoWithOneLine) {
   const std::string scene = sourcePath("scenes/cornell_box.json");
-  for (const std::string& args : std::vector<std::string>{"voxelize " + scene + " --resolution 100 --out x.vdb",
-                                  "voxelize /nonexistent.json --out x.vdb",
-                                  "voxelize " + scene + " --resolution 2048 --out x.vdb --backend cpu",
-                                  "voxelize " + scene + " --mode blurry --out x.vdb",
-                                  "diff " + scene + " --stage nosuchstage"}) {
+  for (const std::string& args : std::vector<std::string>{
+           "voxelize " + scene + " --resolution 100 --out x.vdb",
+           "voxelize /nonexistent.json --out x.vdb",
+           "voxelize " + scene + " --resolution 2048 --out x.vdb --backend cpu",
+           "voxelize " + scene + " --mode blurry --out x.vdb",
+           "diff " + scene + " --stage nosuchstage"}) {
     const CommandResult r = voxgi(args);
     EXPECT_EQ(r.code, 2) << args << "\n" << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << "\n" << r.output;
@@ -72,11 +75,14 @@ TEST(Cli, BadInputExitsTwoWithOneLine) {
 
 TEST(Cli, DiffReportsEveryBufferAsJson) {
   const std::string json = testing::TempDir() + "/report.json", dump = testing::TempDir() + "/dump";
-  const CommandResult r = voxgi("diff " + sourcePath("scenes/bunny.json") + " --stage voxelize --resolution 32 --json " + json + " --dump " + dump);
+  const CommandResult r =
+      voxgi("diff " + sourcePath("scenes/bunny.json") +
+            " --stage voxelize --resolution 32 --json " + json + " --dump " + dump);
   ASSERT_EQ(r.code, 0) << r.output;
   std::ifstream in(json);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  for (const char* key : {"\"metric\"", "\"tolerance\"", "\"max_abs_diff\"", "\"differing\"", "\"fraction\"", "\"pass\"", "\"non_ties\""})
+  for (const char* key : {"\"metric\"", "\"tolerance\"", "\"max_abs_diff\"", "\"differing\"",
+                          "\"fraction\"", "\"pass\"", "\"non_ties\""})
     EXPECT_NE(text.find(key), std::string::npos) << key;
   for (const char* f : {"/voxelize_cpu.vdb", "/voxelize_gpu.vdb", "/voxelize_diff.vdb"})
     EXPECT_TRUE(std::filesystem::exists(dump + f)) << f;

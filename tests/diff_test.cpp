@@ -28,7 +28,8 @@ TEST(Diff, InjectedDifferencesFailUnlessTheyAreTies) {
   const BufferSet cpu = runCpu(scene, VoxelizeMode::conservative);
   BufferSet gpu = cpu;
   gpu.at("weight_sum").words[123] += 1;
-  gpu.at("albedo").set<float>(77, 1, std::nextafter(gpu.at("albedo").get<float>(77, 1), 2.0f));  // 1 ULP: allowed
+  gpu.at("albedo").set<float>(
+      77, 1, std::nextafter(gpu.at("albedo").get<float>(77, 1), 2.0f));  // 1 ULP: allowed
   auto noTies = [](size_t) { return false; };
   auto allTies = [](size_t) { return true; };
   const auto failing = validation::compareStage("voxelize", cpu, gpu, noTies);
@@ -53,7 +54,8 @@ TEST(Diff, InjectedDifferencesFailUnlessTheyAreTies) {
 TEST(Diff, VoxelizeTiesAreTheVoxelsOnADecisionBoundary) {
   const double h = 1.0 / 16;
   // A wall exactly on the face between layers 7 and 8: both layers touch it at separation 0.
-  const Scene scene = makeScene(quad(2, 8.0 * h, {2.3 * h, 2.3 * h}, {13.7 * h, 13.7 * h}), unitGrid(16));
+  const Scene scene =
+      makeScene(quad(2, 8.0 * h, {2.3 * h, 2.3 * h}, {13.7 * h, 13.7 * h}), unitGrid(16));
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
   Settings settings;
   const auto classify = validation::voxelizeTies(StageContext{scene, settings, tris});

@@ -27,17 +27,21 @@ gpu::GlContext& glContext(gpu::GlPlatform platform) {
 
 namespace {
 
-const char* name(gpu::GlPlatform p) { return p == gpu::GlPlatform::egl ? "egl" : "osmesa"; }
+const char* name(gpu::GlPlatform p) {
+  return p == gpu::GlPlatform::egl ? "egl" : "osmesa";
+}
 
 void expectBackendsAgree(const Scene& scene, VoxelizeMode mode, gpu::GlPlatform platform) {
   Settings settings;
   settings.voxelizeMode = mode;
-  const auto reports = validation::diffStages(scene, settings, glContext(platform), {"voxelize"}, "");
+  const auto reports =
+      validation::diffStages(scene, settings, glContext(platform), {"voxelize"}, "");
   ASSERT_EQ(reports.size(), 1u);
   std::ostringstream table;
   validation::printReport(table, reports);
-  EXPECT_TRUE(reports[0].pass) << scene.file << " " << voxelizeModeName(mode) << " on " << name(platform)
-                               << "\n" << table.str();
+  EXPECT_TRUE(reports[0].pass) << scene.file << " " << voxelizeModeName(mode) << " on "
+                               << name(platform) << "\n"
+                               << table.str();
   // On llvmpipe the shared kernel makes the backends bit-identical: no ties are even needed.
   for (const auto& b : reports[0].buffers) EXPECT_EQ(b.differing, 0u) << b.buffer;
 }
@@ -45,9 +49,13 @@ void expectBackendsAgree(const Scene& scene, VoxelizeMode mode, gpu::GlPlatform 
 struct SceneCase {
   const char* file;
   int resolution;
+  friend void PrintTo(const SceneCase& c, std::ostream* os) {
+    *os << c.file << " at " << c.resolution;
+  }
 };
 
-class GpuVoxelize : public testing::TestWithParam<std::tuple<gpu::GlPlatform, VoxelizeMode, SceneCase>> {};
+class GpuVoxelize
+    : public testing::TestWithParam<std::tuple<gpu::GlPlatform, VoxelizeMode, SceneCase>> {};
 
 TEST_P(GpuVoxelize, MatchesTheCpuOnTheBundledScenes) {
   const auto& [platform, mode, sc] = GetParam();
@@ -60,14 +68,17 @@ INSTANTIATE_TEST_SUITE_P(
     Scenes, GpuVoxelize,
     testing::Combine(testing::Values(gpu::GlPlatform::osmesa, gpu::GlPlatform::egl),
                      testing::Values(VoxelizeMode::conservative, VoxelizeMode::antialiased),
-                     testing::Values(SceneCase{"scenes/cornell_box.json", 32}, SceneCase{"scenes/cornell_box.json", 64},
-                                     SceneCase{"scenes/bunny.json", 32}, SceneCase{"scenes/bunny.json", 64})),
+                     testing::Values(SceneCase{"scenes/cornell_box.json", 32},
+                                     SceneCase{"scenes/cornell_box.json", 64},
+                                     SceneCase{"scenes/bunny.json", 32},
+                                     SceneCase{"scenes/bunny.json", 64})),
     [](const auto& param) {
       const SceneCase& sc = std::get<2>(param.param);
       std::string file = sc.file;
       file = file.substr(file.find('/') + 1, file.find('.') - file.find('/') - 1);
-      return std::string(name(std::get<0>(param.param))) + "_" + voxelizeModeName(std::get<1>(param.param)) +
-             "_" + file + "_" + std::to_string(sc.resolution);
+      return std::string(name(std::get<0>(param.param))) + "_" +
+             voxelizeModeName(std::get<1>(param.param)) + "_" + file + "_" +
+             std::to_string(sc.resolution);
     });
 
 TEST(GpuVoxelizeHardCases, AgreeWithTheCpu) {
@@ -75,17 +86,22 @@ TEST(GpuVoxelizeHardCases, AgreeWithTheCpu) {
   std::vector<Triangle> degenerate = quad(2, 0.5, {0.1, 0.1}, {0.9, 0.9});
   degenerate.push_back({glm::dvec3(0.2), glm::dvec3(0.2), glm::dvec3(0.2)});
   degenerate.push_back({glm::dvec3(0.1), glm::dvec3(0.5), glm::dvec3(0.9)});
-  std::vector<Triangle> far = {{glm::dvec3(0.11, 0.2, 0.3), glm::dvec3(0.83, 0.35, 0.6), glm::dvec3(0.4, 0.9, 0.75)}};
+  std::vector<Triangle> far = {
+      {glm::dvec3(0.11, 0.2, 0.3), glm::dvec3(0.83, 0.35, 0.6), glm::dvec3(0.4, 0.9, 0.75)}};
   for (auto& p : far[0]) p += glm::dvec3(1e6);
   GridSpec farGrid = unitGrid(32);
   farGrid.min += glm::dvec3(1e6);
   const std::vector<std::pair<const char*, Scene>> cases = {
       {"degenerate", makeScene(degenerate, unitGrid(16))},
-      {"wall on a voxel face", makeScene(quad(2, 8.0 * h, {2 * h, 2 * h}, {14 * h, 14 * h}), unitGrid(16))},
-      {"wall moved 1e-4 voxel", makeScene(quad(2, (8.0 + 1e-4) * h, {2 * h, 2 * h}, {14 * h, 14 * h}), unitGrid(16))},
+      {"wall on a voxel face",
+       makeScene(quad(2, 8.0 * h, {2 * h, 2 * h}, {14 * h, 14 * h}), unitGrid(16))},
+      {"wall moved 1e-4 voxel",
+       makeScene(quad(2, (8.0 + 1e-4) * h, {2 * h, 2 * h}, {14 * h, 14 * h}), unitGrid(16))},
       {"larger than the grid", makeScene(quad(0, 0.53, {-100, -100}, {100, 100}), unitGrid(16))},
       {"far from the origin", makeScene(far, farGrid)},
-      {"tiny", makeScene({{glm::dvec3(1e-5, 2e-5, 3e-5), glm::dvec3(8e-5, 3e-5, 6e-5), glm::dvec3(4e-5, 9e-5, 7e-5)}}, unitGrid(32, 1e-4))},
+      {"tiny", makeScene({{glm::dvec3(1e-5, 2e-5, 3e-5), glm::dvec3(8e-5, 3e-5, 6e-5),
+                           glm::dvec3(4e-5, 9e-5, 7e-5)}},
+                         unitGrid(32, 1e-4))},
       {"empty", makeScene({}, unitGrid(16))},
       {"resolution 1", makeScene(quad(1, 0.5, {0.25, 0.25}, {0.75, 0.75}), unitGrid(1))},
   };

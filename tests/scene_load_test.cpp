@@ -57,11 +57,14 @@ TEST(SceneLoad, BareMeshFileGetsDefaults) {
 
 TEST(SceneLoad, GltfAndPlyImport) {
   const std::string ply = writeTemp("tri.ply",
-      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-      "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+                                    "ply\nformat ascii 1.0\nelement vertex 3\nproperty float "
+                                    "x\nproperty float y\nproperty float z\n"
+                                    "element face 1\nproperty list uchar int "
+                                    "vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   EXPECT_EQ(loadScene(ply).triangleCount(), 1u);
   // A minimal glTF 2.0 triangle with an embedded buffer (3 float3 positions).
-  const std::string gltf = writeTemp("tri.gltf", R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
+  const std::string gltf =
+      writeTemp("tri.gltf", R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],
     "nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
     "buffers":[{"byteLength":36,"uri":"data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],
     "bufferViews":[{"buffer":0,"byteLength":36}],
@@ -71,17 +74,38 @@ TEST(SceneLoad, GltfAndPlyImport) {
 
 TEST(SceneLoad, ErrorsNameTheFileAndTheField) {
   EXPECT_NE(errorOf("{").find("malformed JSON"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"meshes": [{"file": "missing.obj"}]})").find("meshes[0].file"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"meshes": [{"file": "tri.obj"}], "colour": 1})").find("unknown field 'colour'"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"meshes": [{"file": "tri.obj"}], "grid": {"resolution": 100}})").find("grid.resolution"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"meshes": [{"file": "tri.obj", "material": "gold"}]})").find("unknown material 'gold'"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"meshes": [], "materials": {"m": {"albedo": [1, -0.5, 0]}}})").find("materials.m.albedo[1]"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"meshes": [], "lights": [{"type": "area", "intensity": [1,1,1]}]})").find("lights[0].type"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [{"file": "missing.obj"}]})").find("meshes[0].file"),
+            std::string::npos);
+  EXPECT_NE(
+      errorOf(R"({"meshes": [{"file": "tri.obj"}], "colour": 1})").find("unknown field 'colour'"),
+      std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [{"file": "tri.obj"}], "grid": {"resolution": 100}})")
+                .find("grid.resolution"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [{"file": "tri.obj", "material": "gold"}]})")
+                .find("unknown material 'gold'"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [], "materials": {"m": {"albedo": [1, -0.5, 0]}}})")
+                .find("materials.m.albedo[1]"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [], "lights": [{"type": "area", "intensity": [1,1,1]}]})")
+                .find("lights[0].type"),
+            std::string::npos);
   EXPECT_NE(errorOf(R"({"meshes": [], "grid": {"min": [0,0,0]}})").find("grid"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"meshes": [], "camera": {"position": [0,0,0], "look_at": [0,0,0]}})").find("camera.look_at"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [], "camera": {"position": [0,0,0], "look_at": [0,0,0]}})")
+                .find("camera.look_at"),
+            std::string::npos);
   EXPECT_EQ(errorOf(R"({"meshes": [{"file": "tri.obj"}]})"), "");
   EXPECT_THROW(loadScene("/nonexistent/scene.json"), InputError);
   EXPECT_THROW(loadScene(writeTemp("broken.obj", "v 0 0\nf 1 2 3 4 5\n")), InputError);
+  writeTemp("negative.mtl", "newmtl dark\nKd -0.5 0.2 0.2\n");
+  try {
+    loadScene(writeTemp("negative.obj",
+                        "mtllib negative.mtl\nusemtl dark\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+    FAIL() << "negative albedo accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("material 'dark'.albedo"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SceneLoad, ErrorsAreOneLine) {

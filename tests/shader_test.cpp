@@ -16,7 +16,8 @@ TEST(Shaders, EveryProgramLinksOnBothPlatforms) {
   for (gpu::GlPlatform p : {gpu::GlPlatform::osmesa, gpu::GlPlatform::egl}) {
     gpu::GlContext& context = glContext(p);
     context.makeCurrent();
-    EXPECT_NO_THROW(gpu::Program(context.gl(), {"voxelize.vert", "voxelize.geom", "voxelize.frag"}));
+    EXPECT_NO_THROW(
+        gpu::Program(context.gl(), {"voxelize.vert", "voxelize.geom", "voxelize.frag"}));
     EXPECT_NO_THROW(gpu::Program(context.gl(), {"voxelize_antialiased.comp"}));
     EXPECT_NO_THROW(gpu::Program(context.gl(), {"voxelize_resolve.comp"}));
   }
@@ -31,7 +32,8 @@ TEST(Shaders, VoxelTriangleLayoutMatchesCpp) {
     const GLuint index = gl.GetProgramResourceIndex(program.id(), GL_BUFFER_VARIABLE, variable);
     EXPECT_NE(index, GL_INVALID_INDEX) << variable;
     GLint value = -1;
-    gl.GetProgramResourceiv(program.id(), GL_BUFFER_VARIABLE, index, 1, &property, 1, nullptr, &value);
+    gl.GetProgramResourceiv(program.id(), GL_BUFFER_VARIABLE, index, 1, &property, 1, nullptr,
+                            &value);
     return value;
   };
   using shared::VoxelTriangle;

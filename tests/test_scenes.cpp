@@ -5,7 +5,8 @@
 
 namespace voxgi::test {
 
-Scene makeScene(const std::vector<Triangle>& triangles, const GridSpec& grid, const Material& material) {
+Scene makeScene(const std::vector<Triangle>& triangles, const GridSpec& grid,
+                const Material& material) {
   Scene scene;
   scene.file = "test scene";
   scene.materials.push_back(material);
@@ -63,6 +64,8 @@ uint64_t hashBuffers(const BufferSet& buffers) {
   return h;
 }
 
-std::string sourcePath(const std::string& relative) { return std::string(VOXGI_SOURCE_DIR) + "/" + relative; }
+std::string sourcePath(const std::string& relative) {
+  return std::string(VOXGI_SOURCE_DIR) + "/" + relative;
+}
 
 }  // namespace voxgi::test

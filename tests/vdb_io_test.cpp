@@ -34,7 +34,8 @@ TEST(VdbIo, VoxelCentresLineUpWithTheWorld) {
   Scene scene = makeScene(quad(2, 0.4, {0.1, 0.2}, {0.8, 0.9}), unitGrid(8));
   scene.grid.min = {10.0, 20.0, 30.0};
   scene.grid.size = 4.0;  // h = 0.5
-  const BufferSet b = runCpu(makeScene(quad(2, 0.4, {0.1, 0.2}, {0.8, 0.9}), unitGrid(8)), VoxelizeMode::conservative);
+  const BufferSet b = runCpu(makeScene(quad(2, 0.4, {0.1, 0.2}, {0.8, 0.9}), unitGrid(8)),
+                             VoxelizeMode::conservative);
   const std::string path = testing::TempDir() + "/transform.vdb";
   writeVdb(path, {&b.at("opacity")}, scene.grid);
   openvdb::io::File file(path);

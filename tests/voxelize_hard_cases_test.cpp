@@ -50,7 +50,9 @@ TEST(VoxelizeHardCases, NonFiniteVerticesAreAnInputError) {
 
 TEST(VoxelizeHardCases, WallOnAVoxelFaceAndMovedByATenThousandthOfAVoxel) {
   const double h = 1.0 / 16;
-  auto wallAt = [&](double z) { return makeScene(quad(2, z * h, {2.0 * h, 2.0 * h}, {14.0 * h, 14.0 * h}), unitGrid(16)); };
+  auto wallAt = [&](double z) {
+    return makeScene(quad(2, z * h, {2.0 * h, 2.0 * h}, {14.0 * h, 14.0 * h}), unitGrid(16));
+  };
   // Conservative, documented: a wall exactly on the face between layers 7 and 8 lies in both
   // closed voxels and fills both with its full area; moved by 1e-4 voxel it fills one layer.
   const BufferSet onFace = runCpu(wallAt(8.0), VoxelizeMode::conservative);
@@ -69,7 +71,8 @@ TEST(VoxelizeHardCases, WallOnAVoxelFaceAndMovedByATenThousandthOfAVoxel) {
       const double oa = a.at("opacity").get<float>(e, 0), ob = b.at("opacity").get<float>(e, 0);
       worst = std::max(worst, std::abs(oa - ob));
       for (int c = 0; c < 3; ++c)
-        worst = std::max(worst, std::abs(oa * a.at("albedo").get<float>(e, c) - ob * b.at("albedo").get<float>(e, c)));
+        worst = std::max(worst, std::abs(oa * a.at("albedo").get<float>(e, c) -
+                                         ob * b.at("albedo").get<float>(e, c)));
     }
     // The tent weight moves by 1e-4 per 1e-4 voxel; rounding to 2^-16 adds a few units.
     EXPECT_LT(worst, 1e-4 + 8.0 / 65536.0) << "wall at " << z;
@@ -96,7 +99,8 @@ TEST(VoxelizeHardCases, TriangleLargerThanTheGrid) {
 
 TEST(VoxelizeHardCases, SceneFarFromTheOriginMatchesTheSameSceneAtTheOrigin) {
   auto shifted = [](double offset) {
-    std::vector<Triangle> tris = {{glm::dvec3(0.11, 0.2, 0.3), glm::dvec3(0.83, 0.35, 0.6), glm::dvec3(0.4, 0.9, 0.75)}};
+    std::vector<Triangle> tris = {
+        {glm::dvec3(0.11, 0.2, 0.3), glm::dvec3(0.83, 0.35, 0.6), glm::dvec3(0.4, 0.9, 0.75)}};
     for (auto& t : tris)
       for (auto& p : t) p += glm::dvec3(offset);
     GridSpec g = unitGrid(32);
@@ -108,13 +112,15 @@ TEST(VoxelizeHardCases, SceneFarFromTheOriginMatchesTheSameSceneAtTheOrigin) {
     const auto& a = near.at("weight_sum").words;
     const auto& b = far.at("weight_sum").words;
     for (size_t e = 0; e < a.size(); ++e)
-      ASSERT_NEAR(double(a[e]), double(b[e]), 2.0 + 1e-4 * a[e]) << voxelizeModeName(mode) << " voxel " << e;
+      ASSERT_NEAR(double(a[e]), double(b[e]), 2.0 + 1e-4 * a[e])
+          << voxelizeModeName(mode) << " voxel " << e;
   }
 }
 
 TEST(VoxelizeHardCases, TinySceneVoxelizesLikeTheUnitScene) {
   auto scaled = [](double s) {
-    std::vector<Triangle> tris = {{glm::dvec3(0.11, 0.2, 0.3) * s, glm::dvec3(0.83, 0.35, 0.6) * s, glm::dvec3(0.4, 0.9, 0.75) * s}};
+    std::vector<Triangle> tris = {{glm::dvec3(0.11, 0.2, 0.3) * s, glm::dvec3(0.83, 0.35, 0.6) * s,
+                                   glm::dvec3(0.4, 0.9, 0.75) * s}};
     return makeScene(tris, unitGrid(32, s));
   };
   const BufferSet unit = runCpu(scaled(1.0), VoxelizeMode::conservative);

@@ -47,7 +47,8 @@ double separation(const Triangle& t, glm::dvec3 lo) {
 TEST(Voxelize, AxisAlignedQuadCoversExactlyItsVoxelsWithTheirAreas) {
   // Quad z = 4.8 voxels, x, y in [4.16, 11.84] voxels on a 16^3 unit grid.
   const double h = 1.0 / 16;
-  const Scene scene = makeScene(quad(2, 4.8 * h, {4.16 * h, 4.16 * h}, {11.84 * h, 11.84 * h}), unitGrid(16));
+  const Scene scene =
+      makeScene(quad(2, 4.8 * h, {4.16 * h, 4.16 * h}, {11.84 * h, 11.84 * h}), unitGrid(16));
   const BufferSet b = runCpu(scene, VoxelizeMode::conservative);
   for (int k = 0; k < 16; ++k)
     for (int j = 0; j < 16; ++j)
@@ -96,7 +97,10 @@ TEST(Voxelize, TotalWeightIsTheSurfaceArea) {
   const double scale = scene.grid.resolution / scene.grid.size;
   for (const Mesh& m : scene.meshes)
     for (const auto& t : m.triangles)
-      area += 0.5 * glm::length(glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x])) * scale * scale;
+      area += 0.5 *
+              glm::length(glm::cross(m.positions[t.y] - m.positions[t.x],
+                                     m.positions[t.z] - m.positions[t.x])) *
+              scale * scale;
   for (VoxelizeMode mode : {VoxelizeMode::conservative, VoxelizeMode::antialiased}) {
     const BufferSet b = runCpu(scene, mode);
     double total = 0.0;
@@ -113,7 +117,8 @@ TEST(Voxelize, ConservativeMatchesAnIndependentDoubleSeparatingAxisTest) {
   for (int trial = 0; trial < 40; ++trial) {
     Triangle t;
     for (auto& p : t) p = {coord(rng), coord(rng), coord(rng)};
-    if (trial % 4 == 0) t[2] = t[0] + 0.3 * (t[1] - t[0]) + glm::dvec3(0.01, -0.02, 0.015);  // sliver
+    if (trial % 4 == 0)
+      t[2] = t[0] + 0.3 * (t[1] - t[0]) + glm::dvec3(0.01, -0.02, 0.015);  // sliver
     const Scene scene = makeScene({t}, grid);
     const BufferSet b = runCpu(scene, VoxelizeMode::conservative);
     for (int k = 0; k < 16; ++k)
@@ -131,7 +136,8 @@ TEST(Voxelize, ConservativeMatchesAnIndependentDoubleSeparatingAxisTest) {
 
 TEST(Voxelize, AntialiasedWallThroughVoxelCentresIsOpaqueInItsLayerOnly) {
   const double h = 1.0 / 16;
-  const Scene scene = makeScene(quad(2, 8.5 * h, {2.0 * h, 2.0 * h}, {14.0 * h, 14.0 * h}), unitGrid(16));
+  const Scene scene =
+      makeScene(quad(2, 8.5 * h, {2.0 * h, 2.0 * h}, {14.0 * h, 14.0 * h}), unitGrid(16));
   const BufferSet b = runCpu(scene, VoxelizeMode::antialiased);
   for (int k = 6; k <= 10; ++k) {
     const float o = b.at("opacity").get<float>(scene.grid.index({8, 8, k}), 0);

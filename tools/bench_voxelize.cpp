@@ -31,7 +31,8 @@ Mesh bumpySphere(int triangles) {
     for (int j = 0; j < slices; ++j) {
       const double theta = std::numbers::pi * i / stacks, phi = 2.0 * std::numbers::pi * j / slices;
       const double r = 1.0 + 0.05 * std::sin(7.0 * theta) * std::sin(5.0 * phi);
-      mesh.positions.push_back(r * glm::dvec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
+      mesh.positions.push_back(r * glm::dvec3(std::sin(theta) * std::cos(phi),
+                                              std::sin(theta) * std::sin(phi), std::cos(theta)));
     }
   mesh.positions.push_back({0.0, 0.0, -1.0});
   auto ring = [&](int i, int j) { return 1u + unsigned((i - 1) * slices + (j % slices)); };
@@ -70,7 +71,8 @@ double meshToVolumeSeconds(const Scene& scene, int repeats, float bandWidth) {
   const auto transform = openvdb::math::Transform::createLinearTransform(scene.grid.voxelSize());
   openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> mesh(points, tris);
   return medianSeconds(repeats, [&] {
-    auto grid = openvdb::tools::meshToVolume<openvdb::FloatGrid>(mesh, *transform, bandWidth, bandWidth);
+    auto grid =
+        openvdb::tools::meshToVolume<openvdb::FloatGrid>(mesh, *transform, bandWidth, bandWidth);
     if (grid->activeVoxelCount() == 0) throw std::runtime_error("meshToVolume produced nothing");
   });
 }
@@ -81,7 +83,8 @@ void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
   cmd.add_option("--resolutions", o.resolutions, "grid resolutions")->delimiter(',');
   cmd.add_option("--bunny", o.bunny, "first mesh (default scenes/bunny.obj)");
   cmd.add_option("--triangles", o.generatedTriangles, "triangles of the generated mesh (0: skip)");
-  cmd.add_option("--repeat", o.repeats, "runs per measurement (the median is reported)")->check(CLI::Range(1, 100));
+  cmd.add_option("--repeat", o.repeats, "runs per measurement (the median is reported)")
+      ->check(CLI::Range(1, 100));
   cmd.add_flag("!--no-gpu", o.gpu, "skip the GPU (OSMesa) column");
   cmd.add_option("--json", o.json, "also write the figures as JSON");
 }
@@ -140,15 +143,21 @@ int runBenchVoxelize(const BenchOptions& o) {
       const double peer3 = meshToVolumeSeconds(scene, o.repeats, 3.0f);
       const double peer1 = meshToVolumeSeconds(scene, o.repeats, 1.0f);
       const std::string name = scene.file == "generated" ? "generated sphere" : scene.file;
-      std::cout << std::fixed << std::setprecision(3) << "| " << name << " | " << scene.triangleCount()
-                << " | " << n << " | " << cpu1 << " | " << cpu2 << " | " << std::setprecision(2)
-                << cpu1 / cpu2 << "x | " << std::setprecision(3) << gpuSeconds << " | " << peer3
-                << " | " << peer1 << " | " << std::setprecision(2) << cpu2 / peer3 << " |\n"
+      std::cout << std::fixed << std::setprecision(3) << "| " << name << " | "
+                << scene.triangleCount() << " | " << n << " | " << cpu1 << " | " << cpu2 << " | "
+                << std::setprecision(2) << cpu1 / cpu2 << "x | " << std::setprecision(3)
+                << gpuSeconds << " | " << peer3 << " | " << peer1 << " | " << std::setprecision(2)
+                << cpu2 / peer3 << " |\n"
                 << std::flush;
-      rows.push_back({{"mesh", name}, {"triangles", scene.triangleCount()}, {"resolution", n},
-                      {"cpu_1_thread_s", cpu1}, {"cpu_2_threads_s", cpu2},
-                      {"gpu_s", std::isnan(gpuSeconds) ? nlohmann::json() : nlohmann::json(gpuSeconds)},
-                      {"mesh_to_volume_band3_s", peer3}, {"mesh_to_volume_band1_s", peer1}});
+      rows.push_back(
+          {{"mesh", name},
+           {"triangles", scene.triangleCount()},
+           {"resolution", n},
+           {"cpu_1_thread_s", cpu1},
+           {"cpu_2_threads_s", cpu2},
+           {"gpu_s", std::isnan(gpuSeconds) ? nlohmann::json() : nlohmann::json(gpuSeconds)},
+           {"mesh_to_volume_band3_s", peer3},
+           {"mesh_to_volume_band1_s", peer1}});
     }
   }
   if (!o.json.empty()) std::ofstream(o.json) << rows.dump(2) << "\n";

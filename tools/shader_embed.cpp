@@ -88,10 +88,14 @@ int main(int argc, char** argv) {
   std::string input, includeDir, output, validator;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
-    if (key == "--input") input = argv[i + 1];
-    else if (key == "--include-dir") includeDir = argv[i + 1];
-    else if (key == "--output") output = argv[i + 1];
-    else if (key == "--validator") validator = argv[i + 1];
+    if (key == "--input")
+      input = argv[i + 1];
+    else if (key == "--include-dir")
+      includeDir = argv[i + 1];
+    else if (key == "--output")
+      output = argv[i + 1];
+    else if (key == "--validator")
+      validator = argv[i + 1];
   }
   if (input.empty() || includeDir.empty() || output.empty()) {
     std::cerr << "usage: voxgi_shader_embed --input F --include-dir D --output F [--validator V]\n";
@@ -128,12 +132,13 @@ int main(int argc, char** argv) {
   cpp << "// Generated from shaders/" << name << " by voxgi_shader_embed. Do not edit.\n"
       << "#include \"shaders/shader_source.h\"\n#include <array>\n"
       << "namespace voxgi::embedded {\n"
-      << "static const std::array<std::string_view, " << resolver.files.size() << "> "
-      << ident << "_files{";
+      << "static const std::array<std::string_view, " << resolver.files.size() << "> " << ident
+      << "_files{";
   for (const auto& f : resolver.files) cpp << cppString(f) << ", ";
   cpp << "};\nextern const ShaderSource " << ident << ";\n"
       << "const ShaderSource " << ident << "{" << cppString(name) << ",\n"
-      << cppString(resolver.text) << ",\n" << ident << "_files};\n}\n";
+      << cppString(resolver.text) << ",\n"
+      << ident << "_files};\n}\n";
   fs::create_directories(fs::path(output).parent_path());
   std::ofstream(output) << cpp.str();
   return 0;

@@ -80,9 +80,11 @@ void runStages(const Scene& scene, const Settings& settings, tools::BackendChoic
                std::string_view until, BufferSet& buffers) {
   const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
   const StageContext ctx{scene, settings, triangles};
-#define VOXGI_STAGE(stage, summary)                                   \
-  if (backend.gpu) gpu::stage(*backend.context, ctx, buffers);        \
-  else cpu::stage(ctx, buffers);                                      \
+#define VOXGI_STAGE(stage, summary)             \
+  if (backend.gpu)                              \
+    gpu::stage(*backend.context, ctx, buffers); \
+  else                                          \
+    cpu::stage(ctx, buffers);                   \
   if (until == #stage) return;
 #include "common/stages.inc"
 #undef VOXGI_STAGE
@@ -97,18 +99,22 @@ int cmdVoxelize(const Common& c, const std::string& out, bool sums) {
   const auto start = std::chrono::steady_clock::now();
   BufferSet buffers;
   runStages(scene, settings, backend, "voxelize", buffers);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   size_t occupied = 0;
   for (uint32_t w : buffers.at("weight_sum").words) occupied += w != 0u;
   writeVdb(out, buffersOf(buffers, "voxelize", sums), scene.grid,
-           {{"voxgi_mode", c.mode}, {"voxgi_backend", backend.gpu ? backend.context->renderer() : "cpu"}});
+           {{"voxgi_mode", c.mode},
+            {"voxgi_backend", backend.gpu ? backend.context->renderer() : "cpu"}});
   std::cout << "voxelized " << scene.triangleCount() << " triangles into " << scene.grid.resolution
-            << "^3 (" << c.mode << ", " << (backend.gpu ? "gpu: " + backend.context->renderer() : "cpu")
-            << "): " << occupied << " occupied voxels in " << seconds << " s -> " << out << "\n";
+            << "^3 (" << c.mode << ", "
+            << (backend.gpu ? "gpu: " + backend.context->renderer() : "cpu") << "): " << occupied
+            << " occupied voxels in " << seconds << " s -> " << out << "\n";
   return kExitOk;
 }
 
-int cmdDiff(const Common& c, const std::string& stage, const std::string& json, const std::string& dumpDir) {
+int cmdDiff(const Common& c, const std::string& stage, const std::string& json,
+            const std::string& dumpDir) {
   Scene scene = loadWithOverrides(c);
   Settings settings;
   settings.voxelizeMode = parseVoxelizeMode(c.mode);
@@ -147,18 +153,22 @@ int main(int argc, char** argv) {
   CLI::App app{"voxgi: real-time global illumination with a CPU reference and OpenGL shaders"};
   app.require_subcommand(1);
   int threads = 0;
-  app.add_option("--threads", threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  app.add_option("--threads", threads, "worker threads (default: all cores)")
+      ->check(CLI::Range(1, 1024));
   Common c;
   auto addCommon = [&](CLI::App* cmd, bool backend) {
     cmd->add_option("scene", c.scene, "scene .json or mesh file (OBJ, glTF, PLY)")->required();
     cmd->add_option("--resolution", c.resolution, "voxel grid resolution (power of two)");
     cmd->add_option("--mode", c.mode, "voxelization: conservative or antialiased")
         ->check(CLI::IsMember({"conservative", "antialiased"}));
-    cmd->add_option("--gl", c.gl, "GL platform for the GPU backend")->check(CLI::IsMember({"egl", "osmesa"}));
+    cmd->add_option("--gl", c.gl, "GL platform for the GPU backend")
+        ->check(CLI::IsMember({"egl", "osmesa"}));
     if (backend)
-      cmd->add_option("--backend", c.backend, "cpu, gpu or auto (hardware GPU if present, else cpu)")
+      cmd->add_option("--backend", c.backend,
+                      "cpu, gpu or auto (hardware GPU if present, else cpu)")
           ->check(CLI::IsMember({"cpu", "gpu", "auto"}));
-    cmd->add_option("--threads", threads, "worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+    cmd->add_option("--threads", threads, "worker threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
   };
   std::string out, stage = "all", json, dumpDir;
   bool sums = false;
@@ -177,7 +187,8 @@ int main(int argc, char** argv) {
   dump->add_option("--out", out, "output folder")->required();
   tools::BenchOptions bench;
   auto* benchCmd = app.add_subcommand("bench", "benchmarks (see docs/benchmarks.md)");
-  auto* benchVoxelize = benchCmd->add_subcommand("voxelize", "voxelize: CPU 1/2 threads, GPU, OpenVDB meshToVolume");
+  auto* benchVoxelize =
+      benchCmd->add_subcommand("voxelize", "voxelize: CPU 1/2 threads, GPU, OpenVDB meshToVolume");
   benchCmd->require_subcommand(1);
   tools::addBenchOptions(*benchVoxelize, bench);
 

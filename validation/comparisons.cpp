@@ -40,9 +40,15 @@ static_assert(everyBufferHasItsComparison(),
 std::string Comparison::describe() const {
   std::ostringstream s;
   switch (metric) {
-    case Metric::exact: s << "exact"; break;
-    case Metric::max_ulp: s << "max " << tolerance << " ULP"; break;
-    case Metric::max_abs: s << "max |gpu-cpu| " << tolerance; break;
+    case Metric::exact:
+      s << "exact";
+      break;
+    case Metric::max_ulp:
+      s << "max " << tolerance << " ULP";
+      break;
+    case Metric::max_abs:
+      s << "max |gpu-cpu| " << tolerance;
+      break;
   }
   return s.str();
 }
@@ -50,7 +56,8 @@ std::string Comparison::describe() const {
 const Comparison& comparisonFor(std::string_view stage, std::string_view buffer) {
   for (const Comparison& c : kComparisons)
     if (c.stage == stage && c.buffer == buffer) return c;
-  throw std::out_of_range("no comparison registered for " + std::string(stage) + "." + std::string(buffer));
+  throw std::out_of_range("no comparison registered for " + std::string(stage) + "." +
+                          std::string(buffer));
 }
 
 }  // namespace voxgi::validation

@@ -47,15 +47,16 @@ double seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-void dump(const std::string& dir, std::string_view stage, const BufferSet& cpu, const BufferSet& gpu,
-          const TieClassifier& classify, const GridSpec& grid) {
+void dump(const std::string& dir, std::string_view stage, const BufferSet& cpu,
+          const BufferSet& gpu, const TieClassifier& classify, const GridSpec& grid) {
   std::filesystem::create_directories(dir);
   const std::string prefix = dir + "/" + std::string(stage);
   std::vector<const Buffer*> cpuList, gpuList, diffList;
   // The difference grids reuse the buffer names but hold gpu - cpu as f32.
   std::vector<BufferSpec> diffSpecs;
   for (const BufferSpec* spec : stageBuffers(stage))
-    diffSpecs.push_back({spec->stage, spec->name, ScalarType::f32, spec->components, spec->meaning});
+    diffSpecs.push_back(
+        {spec->stage, spec->name, ScalarType::f32, spec->components, spec->meaning});
   static constexpr BufferSpec kClassSpec{"", "classification", ScalarType::i32, 1,
                                          "0 agree, 1 tie, 2 not a tie"};
   std::vector<Buffer> diffs;
@@ -73,9 +74,10 @@ void dump(const std::string& dir, std::string_view stage, const BufferSet& cpu, 
       for (int k = 0; k < spec.components; ++k) {
         const double delta = g->second.value(e, k) - c->second.value(e, k);
         d.set(e, k, static_cast<float>(delta));
-        differs |= cmp.metric == Metric::exact ? c->second.words[e * size_t(spec.components) + size_t(k)] !=
-                                                     g->second.words[e * size_t(spec.components) + size_t(k)]
-                                               : delta != 0.0;
+        differs |= cmp.metric == Metric::exact
+                       ? c->second.words[e * size_t(spec.components) + size_t(k)] !=
+                             g->second.words[e * size_t(spec.components) + size_t(k)]
+                       : delta != 0.0;
       }
       if (differs && classes.get<int32_t>(e, 0) == 0)
         classes.set<int32_t>(e, 0, classify && classify(e) ? 1 : 2);
@@ -111,7 +113,9 @@ StageReport compareStage(std::string_view stage, const BufferSet& cpu, const Buf
       continue;
     }
     if (c == cpu.end() || g == gpu.end() || c->second.extent != g->second.extent) {
-      r.status = c == cpu.end() ? "missing on cpu" : g == gpu.end() ? "missing on gpu" : "extents differ";
+      r.status = c == cpu.end()   ? "missing on cpu"
+                 : g == gpu.end() ? "missing on gpu"
+                                  : "extents differ";
       r.pass = false;
       report.pass = false;
       report.buffers.push_back(r);

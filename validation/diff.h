@@ -16,10 +16,10 @@ namespace voxgi::validation {
 
 struct BufferReport {
   std::string buffer;
-  std::string metric;     // Comparison::describe()
+  std::string metric;  // Comparison::describe()
   double tolerance = 0.0;
   std::string reason;
-  std::string status;     // "compared", or why it was skipped ("not produced: ...")
+  std::string status;  // "compared", or why it was skipped ("not produced: ...")
   size_t elements = 0;
   size_t differing = 0;   // elements outside the tolerance
   double fraction = 0.0;  // differing / elements

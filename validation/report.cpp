@@ -12,14 +12,26 @@ nlohmann::json toJson(const std::vector<StageReport>& reports) {
   for (const StageReport& s : reports) {
     nlohmann::json buffers = nlohmann::json::array();
     for (const BufferReport& b : s.buffers)
-      buffers.push_back({{"buffer", b.buffer}, {"metric", b.metric}, {"tolerance", b.tolerance},
-                         {"reason", b.reason}, {"status", b.status}, {"elements", b.elements},
-                         {"differing", b.differing}, {"fraction", b.fraction},
-                         {"max_abs_diff", b.maxAbsDiff}, {"max_ulp", b.maxUlp}, {"ties", b.ties},
-                         {"non_ties", b.nonTies}, {"unclassified", b.unclassified},
-                         {"worst_element", b.worstElement}, {"pass", b.pass}});
-    stages.push_back({{"stage", s.stage}, {"cpu_seconds", s.cpuSeconds},
-                      {"gpu_seconds", s.gpuSeconds}, {"pass", s.pass}, {"buffers", buffers}});
+      buffers.push_back({{"buffer", b.buffer},
+                         {"metric", b.metric},
+                         {"tolerance", b.tolerance},
+                         {"reason", b.reason},
+                         {"status", b.status},
+                         {"elements", b.elements},
+                         {"differing", b.differing},
+                         {"fraction", b.fraction},
+                         {"max_abs_diff", b.maxAbsDiff},
+                         {"max_ulp", b.maxUlp},
+                         {"ties", b.ties},
+                         {"non_ties", b.nonTies},
+                         {"unclassified", b.unclassified},
+                         {"worst_element", b.worstElement},
+                         {"pass", b.pass}});
+    stages.push_back({{"stage", s.stage},
+                      {"cpu_seconds", s.cpuSeconds},
+                      {"gpu_seconds", s.gpuSeconds},
+                      {"pass", s.pass},
+                      {"buffers", buffers}});
     pass &= s.pass;
   }
   return {{"pass", pass}, {"stages", stages}};
@@ -29,10 +41,11 @@ void printReport(std::ostream& out, const std::vector<StageReport>& reports) {
   for (const StageReport& s : reports) {
     out << "stage " << s.stage << ": " << (s.pass ? "PASS" : "FAIL") << "  (cpu " << std::fixed
         << std::setprecision(3) << s.cpuSeconds << " s, gpu " << s.gpuSeconds << " s)\n";
-    out << "  " << std::left << std::setw(14) << "buffer" << std::setw(12) << "metric"
-        << std::right << std::setw(12) << "max |diff|" << std::setw(9) << "max ULP" << std::setw(11)
+    out << "  " << std::left << std::setw(14) << "buffer" << std::setw(12) << "metric" << std::right
+        << std::setw(12) << "max |diff|" << std::setw(9) << "max ULP" << std::setw(11)
         << "differing" << std::setw(11) << "fraction" << std::setw(7) << "ties" << std::setw(10)
-        << "non-ties" << "  result\n";
+        << "non-ties"
+        << "  result\n";
     for (const BufferReport& b : s.buffers) {
       out << "  " << std::left << std::setw(14) << b.buffer << std::setw(12) << b.metric;
       if (b.status != "compared") {

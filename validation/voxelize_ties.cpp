@@ -32,7 +32,8 @@ bool contributionNearHalf(const VoxelTriangle& t, float weightValue) {
 
 bool conservativeTie(const VoxelTriangle& t, const glm::ivec3& v, float satEpsilon) {
   const glm::vec3 centre = glm::vec3(v) + glm::vec3(0.5f);
-  const glm::vec3 a = glm::vec3(t.v0) - centre, b = glm::vec3(t.v1) - centre, c = glm::vec3(t.v2) - centre;
+  const glm::vec3 a = glm::vec3(t.v0) - centre, b = glm::vec3(t.v1) - centre,
+                  c = glm::vec3(t.v2) - centre;
   const float s = shared::satSeparation(a, b, c, true);
   if (std::abs(s) <= satEpsilon) return true;
   if (s > 0.0f) return false;

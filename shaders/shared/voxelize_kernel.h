@@ -44,9 +44,9 @@ VOXGI_FN float axisSeparation(vec3 axis, vec3 a, vec3 b, vec3 c) {
   return s;
 }
 
-// Separating-axis test of the closed triangle (a, b, c), given relative to a voxel's centre, against
-// the closed voxel [-1/2, 1/2]^3 over the 13 axes (3 box normals, the triangle normal, 9 edge
-// crosses). Returns the largest separation: > 0 means disjoint, <= 0 means they touch. With
+// Separating-axis test of the closed triangle (a, b, c), given relative to a voxel's centre,
+// against the closed voxel [-1/2, 1/2]^3 over the 13 axes (3 box normals, the triangle normal, 9
+// edge crosses). Returns the largest separation: > 0 means disjoint, <= 0 means they touch. With
 // `normalized`, each axis's separation is divided by its length (a distance in voxels) — used only
 // by the CPU tie classifier, the decision itself never divides.
 VOXGI_FN float satSeparation(vec3 a, vec3 b, vec3 c, bool normalized) {
@@ -62,8 +62,8 @@ VOXGI_FN float satSeparation(vec3 a, vec3 b, vec3 c, bool normalized) {
       axis = cross3(e0, e1);
     } else {
       int k = i - 4;
-      precise vec3 unit = vec3(k % 3 == 0 ? 1.0f : 0.0f, k % 3 == 1 ? 1.0f : 0.0f,
-                               k % 3 == 2 ? 1.0f : 0.0f);
+      precise vec3 unit =
+          vec3(k % 3 == 0 ? 1.0f : 0.0f, k % 3 == 1 ? 1.0f : 0.0f, k % 3 == 2 ? 1.0f : 0.0f);
       precise vec3 edge = k < 3 ? e0 : (k < 6 ? e1 : e2);
       axis = cross3(unit, edge);
     }
@@ -145,8 +145,12 @@ VOXGI_FN ivec2 columnLayers(VoxelTriangle t, ivec2 col, int resolution) {
 }
 
 // Rounds a non-negative fixed-point value to the nearest unit (ties up).
-VOXGI_FN uint quantize(float x) { return uint(floor(x + 0.5f)); }
-VOXGI_FN int quantizeSigned(float x) { return int(floor(x + 0.5f)); }
+VOXGI_FN uint quantize(float x) {
+  return uint(floor(x + 0.5f));
+}
+VOXGI_FN int quantizeSigned(float x) {
+  return int(floor(x + 0.5f));
+}
 
 // The sums a triangle adds with the given fixed-point weight.
 VOXGI_FN VoxelContribution weightedContribution(VoxelTriangle t, uint weight) {
@@ -187,7 +191,9 @@ VOXGI_FN vec3 antialiasedSample(VoxelTriangle t, int i, int j, bool up) {
 }
 
 // The voxel whose centre is the lower corner of the trilinear tent cell holding p.
-VOXGI_FN ivec3 tentBase(vec3 p) { return ivec3(floor(p - vec3(0.5f))); }
+VOXGI_FN ivec3 tentBase(vec3 p) {
+  return ivec3(floor(p - vec3(0.5f)));
+}
 
 // A sample's weight for corner (0..7: bit 0 = +x, bit 1 = +y, bit 2 = +z) of its tent cell:
 // sample area times the trilinear (tent) kernel, in fixed-point units before rounding.
