@@ -12,8 +12,8 @@ constexpr std::array kStages{
 };
 #undef VOXGI_STAGE
 
-#define VOXGI_BUFFER(stage, name, type, components, meaning) \
-  BufferSpec{#stage, #name, ScalarType::type, components, meaning},
+#define VOXGI_BUFFER(stage, name, type, components, need, meaning) \
+  BufferSpec{#stage, #name, ScalarType::type, components, BufferNeed::need, meaning},
 constexpr std::array kBuffers{
 #include "common/stages.inc"
 };
@@ -60,9 +60,7 @@ const StageSpec* findStage(std::string_view name) {
 }
 
 Buffer::Buffer(const BufferSpec& s, glm::ivec3 e)
-    : spec(&s),
-      extent(e),
-      words(size_t(e.x) * size_t(e.y) * size_t(e.z) * size_t(s.components), 0u) {}
+    : spec(&s), extent(e), words(size_t(e.x) * size_t(e.y) * size_t(e.z) * size_t(s.components)) {}
 
 double Buffer::value(size_t element, int component) const {
   switch (spec->type) {
@@ -76,9 +74,10 @@ double Buffer::value(size_t element, int component) const {
   return 0.0;
 }
 
-uint64_t stageBufferBytes(std::string_view stage, glm::ivec3 extent) {
+uint64_t stageBufferBytes(std::string_view stage, glm::ivec3 extent, bool emissive) {
   uint64_t words = 0;
-  for (const BufferSpec* b : stageBuffers(stage)) words += uint64_t(b->components);
+  for (const BufferSpec* b : stageBuffers(stage))
+    if (b->need == BufferNeed::always || emissive) words += uint64_t(b->components);
   return words * 4u * uint64_t(extent.x) * uint64_t(extent.y) * uint64_t(extent.z);
 }
 

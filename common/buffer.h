@@ -3,19 +3,50 @@
 #pragma once
 
 #include <bit>
+#include <cstdlib>
+#include <new>
 #include <cstdint>
 #include <map>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 namespace voxgi {
 
+// Allocates with calloc and leaves default-inserted elements alone, so the pages of a large buffer
+// arrive zeroed from the kernel when first touched — by the worker threads that fill the buffer —
+// instead of being zero-filled up front by one thread.
+template <class T>
+struct ZeroedAllocator {
+  using value_type = T;
+  ZeroedAllocator() = default;
+  template <class U>
+  ZeroedAllocator(const ZeroedAllocator<U>&) noexcept {}
+  T* allocate(size_t n) {
+    void* p = std::calloc(n, sizeof(T));
+    if (p == nullptr) throw std::bad_alloc();
+    return static_cast<T*>(p);
+  }
+  void deallocate(T* p, size_t) noexcept { std::free(p); }
+  template <class U>
+  void construct(U*) noexcept {}  // default-insertion: keep calloc's zeros
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+  friend bool operator==(const ZeroedAllocator&, const ZeroedAllocator&) { return true; }
+};
+using Words = std::vector<uint32_t, ZeroedAllocator<uint32_t>>;
+
 enum class ScalarType { u32, i32, f32 };
 const char* scalarTypeName(ScalarType t);
+
+// Which scene feature a buffer depends on: a scene without it does not pay for the buffer.
+enum class BufferNeed { always, emission };
 
 // A buffer as declared in common/stages.inc.
 struct BufferSpec {
@@ -23,6 +54,7 @@ struct BufferSpec {
   std::string_view name;
   ScalarType type;
   int components;
+  BufferNeed need;
   std::string_view meaning;
 };
 
@@ -42,7 +74,7 @@ const StageSpec* findStage(std::string_view name);
 struct Buffer {
   const BufferSpec* spec = nullptr;
   glm::ivec3 extent{0};
-  std::vector<uint32_t> words;
+  Words words;
 
   Buffer() = default;
   Buffer(const BufferSpec& s, glm::ivec3 e);
@@ -63,7 +95,7 @@ struct Buffer {
 // Buffers by name; a stage reads its inputs from the set and adds its outputs.
 using BufferSet = std::map<std::string, Buffer, std::less<>>;
 
-// Bytes `stage` would allocate for its buffers on an extent.
-uint64_t stageBufferBytes(std::string_view stage, glm::ivec3 extent);
+// Bytes `stage` allocates for its buffers on an extent (those needing emission only if `emissive`).
+uint64_t stageBufferBytes(std::string_view stage, glm::ivec3 extent, bool emissive);
 
 }  // namespace voxgi

@@ -17,8 +17,8 @@ const char* voxelizeModeName(VoxelizeMode mode) {
 
 void checkStageMemory(const Scene& scene, std::string_view stage, double copies) {
   const int n = scene.grid.resolution;
-  const auto bytes =
-      static_cast<uint64_t>(copies * static_cast<double>(stageBufferBytes(stage, glm::ivec3(n))));
+  const auto bytes = static_cast<uint64_t>(
+      copies * static_cast<double>(stageBufferBytes(stage, glm::ivec3(n), scene.hasEmission())));
   requireMemory(bytes, "the " + std::string(stage) + " buffers at " + std::to_string(n) + "^3",
                 scene.file, "grid.resolution");
 }

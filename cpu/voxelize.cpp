@@ -52,11 +52,9 @@ void conservativeTriangle(const VoxelTriangle& t, int n, Accumulator& acc) {
   const glm::vec3 p2 = shared::toDominant(glm::vec3(t.v2), axis);
   const glm::vec3 lo = glm::min(p0, glm::min(p1, p2));
   const glm::vec3 hi = glm::max(p0, glm::max(p1, p2));
-  // Closed voxels: a coordinate on a column boundary touches the column below it too.
-  const int u0 = std::max(0, int(std::floor(lo.x)) - 1),
-            u1 = std::min(n - 1, int(std::floor(hi.x)));
-  const int w0 = std::max(0, int(std::floor(lo.y)) - 1),
-            w1 = std::min(n - 1, int(std::floor(hi.y)));
+  // Closed columns: column u spans [u, u+1], so it touches [lo, hi] iff ceil(lo) - 1 <= u <= floor(hi).
+  const int u0 = std::max(0, int(std::ceil(lo.x)) - 1), u1 = std::min(n - 1, int(std::floor(hi.x)));
+  const int w0 = std::max(0, int(std::ceil(lo.y)) - 1), w1 = std::min(n - 1, int(std::floor(hi.y)));
   VoxelContribution c{};
   for (int cw = w0; cw <= w1; ++cw)
     for (int cu = u0; cu <= u1; ++cu) {

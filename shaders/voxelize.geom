@@ -22,7 +22,7 @@ void main() {
   for (int i = 0; i < 3; ++i) p[i] = toDominant(gl_in[i].gl_Position.xyz, axis).xy;
   vec2 lo = min(p[0], min(p[1], p[2]));
   vec2 hi = max(p[0], max(p[1], p[2]));
-  ivec4 columns = ivec4(ivec2(floor(lo)) - 1, ivec2(floor(hi)));
+  ivec4 columns = ivec4(ivec2(ceil(lo)) - 1, ivec2(floor(hi)));
 
   // Edge lines n_i . x = c_i, oriented outward, moved out by (0.5 + margin) * |n_i|_1.
   float orientation = sign((p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[1].y - p[0].y) * (p[2].x - p[0].x));

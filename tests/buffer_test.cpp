@@ -24,8 +24,9 @@ TEST(Buffer, TypedWordsRoundTrip) {
   b.set<int32_t>(5, 2, -7);
   EXPECT_EQ(b.get<int32_t>(5, 2), -7);
   EXPECT_EQ(b.value(5, 2), -7.0);
-  EXPECT_EQ(stageBufferBytes("voxelize", glm::ivec3(4)),
+  EXPECT_EQ(stageBufferBytes("voxelize", glm::ivec3(4), true),
             64u * 4u * (1 + 3 + 3 + 3 + 1 + 3 + 3 + 3));
+  EXPECT_EQ(stageBufferBytes("voxelize", glm::ivec3(4), false), 64u * 4u * (1 + 3 + 3 + 1 + 3 + 3));
 }
 
 }  // namespace

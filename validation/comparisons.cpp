@@ -17,7 +17,7 @@ constexpr std::array kComparisons{
 struct Name {
   std::string_view stage, buffer;
 };
-#define VOXGI_BUFFER(stage, buffer, type, components, meaning) Name{#stage, #buffer},
+#define VOXGI_BUFFER(stage, buffer, type, components, need, meaning) Name{#stage, #buffer},
 constexpr std::array kBufferNames{
 #include "common/stages.inc"
 };

@@ -56,9 +56,9 @@ void dump(const std::string& dir, std::string_view stage, const BufferSet& cpu,
   std::vector<BufferSpec> diffSpecs;
   for (const BufferSpec* spec : stageBuffers(stage))
     diffSpecs.push_back(
-        {spec->stage, spec->name, ScalarType::f32, spec->components, spec->meaning});
-  static constexpr BufferSpec kClassSpec{"", "classification", ScalarType::i32, 1,
-                                         "0 agree, 1 tie, 2 not a tie"};
+        {spec->stage, spec->name, ScalarType::f32, spec->components, spec->need, spec->meaning});
+  static constexpr BufferSpec kClassSpec{"", "classification",   ScalarType::i32,
+                                         1,  BufferNeed::always, "0 agree, 1 tie, 2 not a tie"};
   std::vector<Buffer> diffs;
   diffs.reserve(diffSpecs.size() + 1);
   Buffer classes(kClassSpec, glm::ivec3(grid.resolution));

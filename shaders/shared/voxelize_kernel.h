@@ -68,6 +68,7 @@ VOXGI_FN float satSeparation(vec3 a, vec3 b, vec3 c, bool normalized) {
       axis = cross3(unit, edge);
     }
     precise float s = axisSeparation(axis, a, b, c);
+    if (!normalized && s > 0.0f) return s;  // deciding only: the first separating axis settles it
     if (normalized) {
       precise float len = sqrt(dot3(axis, axis));
       if (len == 0.0f) continue;  // an edge parallel to a box axis gives no axis
@@ -118,9 +119,14 @@ VOXGI_FN float projectedAreaInVoxel(vec3 a, vec3 b, vec3 c, uint axis) {
   return area;
 }
 
+// Margin, in voxels, on interpolated plane heights: far above their float error for N <= 2048.
+const float kLayerMargin = 0.0078125f;
+
 // The layers (voxel range along the dominant axis, inclusive, clamped to [0, N-1]) that the
-// triangle can touch inside column `col` of the dominant plane: the triangle's plane over the
-// column's square, widened by one layer each way (the separating-axis test decides).
+// triangle can touch inside column `col` of the dominant plane: closed layer k spans [k, k+1], so
+// it can touch heights [zlo, zhi] iff ceil(zlo) - 1 <= k <= floor(zhi); the heights are the
+// triangle's plane over the column's square, widened by kLayerMargin (the separating-axis test
+// decides).
 VOXGI_FN ivec2 columnLayers(VoxelTriangle t, ivec2 col, int resolution) {
   uint axis = t.info.x;
   precise vec3 p0 = toDominant(vec3(t.v0), axis);
@@ -139,9 +145,9 @@ VOXGI_FN ivec2 columnLayers(VoxelTriangle t, ivec2 col, int resolution) {
   precise float tlo = min(p0.z, min(p1.z, p2.z));
   precise float thi = max(p0.z, max(p1.z, p2.z));
   precise float limit = float(resolution) + 1.0f;
-  zlo = clamp(max(zlo, tlo), -1.0f, limit);
-  zhi = clamp(min(zhi, thi), -1.0f, limit);
-  return ivec2(max(int(floor(zlo)) - 1, 0), min(int(floor(zhi)) + 1, resolution - 1));
+  zlo = clamp(max(zlo - kLayerMargin, tlo), -1.0f, limit);
+  zhi = clamp(min(zhi + kLayerMargin, thi), -1.0f, limit);
+  return ivec2(max(int(ceil(zlo)) - 1, 0), min(int(floor(zhi)), resolution - 1));
 }
 
 // Rounds a non-negative fixed-point value to the nearest unit (ties up).
