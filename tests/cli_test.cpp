@@ -88,5 +88,18 @@ TEST(Cli, DiffReportsEveryBufferAsJson) {
     EXPECT_TRUE(std::filesystem::exists(dump + f)) << f;
 }
 
+TEST(Cli, DumpWritesEveryBufferOfTheStage) {
+  const std::string dir = testing::TempDir() + "/dumpcmd";
+  const CommandResult r = voxgi("dump " + sourcePath("scenes/cornell_box.json") +
+                                " --stage voxelize --resolution 16 --backend cpu --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  openvdb::initialize();
+  openvdb::io::File file(dir + "/voxelize.vdb");
+  file.open();
+  size_t grids = 0;
+  for (auto it = file.beginName(); it != file.endName(); ++it) ++grids;
+  EXPECT_EQ(grids, 8u);  // the Cornell box emits, so every declared buffer exists
+}
+
 }  // namespace
 }  // namespace voxgi::test
