@@ -1,5 +1,6 @@
 #include "gpu/gl.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace voxgi::gpu {
@@ -19,6 +20,14 @@ void Gl::check(const char* what) const {
     std::snprintf(code, sizeof code, "0x%04x", error);
     throw std::runtime_error(std::string(what) + ": GL error " + code);
   }
+}
+
+GLuint createBuffer(const Gl& gl, size_t bytes, const void* data) {
+  GLuint id = 0;
+  gl.CreateBuffers(1, &id);
+  gl.NamedBufferStorage(id, static_cast<GLsizeiptr>(std::max<size_t>(bytes, 1)),
+                        bytes > 0 ? data : nullptr, 0);
+  return id;
 }
 
 void deleteBuffer(const Gl& gl, GLuint id) {

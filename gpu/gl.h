@@ -42,6 +42,9 @@ class GlName {
   GLuint id_;
 };
 
+// An immutable buffer object holding `bytes` bytes copied from `data` (at least 1 byte, so that an
+// empty input still gives a valid binding).
+GLuint createBuffer(const Gl& gl, size_t bytes, const void* data);
 void deleteBuffer(const Gl& gl, GLuint id);
 void deleteTexture(const Gl& gl, GLuint id);
 using GlBuffer = GlName<deleteBuffer>;

@@ -41,22 +41,10 @@ void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   const bool emissive = ctx.triangles.emissionScale > 0.0f;
   const auto& tris = ctx.triangles.triangles;
 
-  GlBuffer triangles(gl, [&] {
-    GLuint b = 0;
-    gl.CreateBuffers(1, &b);
-    gl.NamedBufferStorage(
-        b,
-        static_cast<GLsizeiptr>(std::max<size_t>(1, tris.size()) * sizeof(shared::VoxelTriangle)),
-        tris.empty() ? nullptr : tris.data(), 0);
-    return b;
-  }());
+  GlBuffer triangles(gl,
+                     createBuffer(gl, tris.size() * sizeof(shared::VoxelTriangle), tris.data()));
   const uint32_t zero = 0;
-  GlBuffer status(gl, [&] {
-    GLuint b = 0;
-    gl.CreateBuffers(1, &b);
-    gl.NamedBufferStorage(b, sizeof zero, &zero, 0);
-    return b;
-  }());
+  GlBuffer status(gl, createBuffer(gl, sizeof zero, &zero));
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, triangles.get());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, status.get());
 
@@ -83,13 +71,7 @@ void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
                            "too many antialiasing sample rows for one dispatch");
         firstRow[i + 1] = firstRow[i] + tris[i].info.y;
       }
-      GlBuffer rows(gl, [&] {
-        GLuint b = 0;
-        gl.CreateBuffers(1, &b);
-        gl.NamedBufferStorage(b, static_cast<GLsizeiptr>(firstRow.size() * sizeof(uint32_t)),
-                              firstRow.data(), 0);
-        return b;
-      }());
+      GlBuffer rows(gl, createBuffer(gl, firstRow.size() * sizeof(uint32_t), firstRow.data()));
       gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, rows.get());
       Program splat(gl, {"voxelize_antialiased.comp"});
       splat.set("uResolution", n);

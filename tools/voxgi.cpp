@@ -1,6 +1,10 @@
 // The voxgi command line (DESIGN.md "CLI contract"). Exit codes: 0 ok, 1 internal failure or a
 // failed diff, 2 bad input (one line naming the file and field).
+#include <atomic>
 #include <chrono>
+#include <csignal>
+#include <mutex>
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -11,6 +15,7 @@
 #include <tbb/global_control.h>
 
 #include "common/error.h"
+#include "common/image_io.h"
 #include "common/scene_load.h"
 #include "common/vdb_io.h"
 #include "cpu/stages.h"
@@ -19,6 +24,7 @@
 #include "tools/backend.h"
 #include "tools/bench.h"
 #include "validation/diff.h"
+#include "validation/path_trace.h"
 #include "validation/report.h"
 
 namespace voxgi::tools {
@@ -147,6 +153,52 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
   return kExitOk;
 }
 
+std::atomic<bool> interrupted{false};
+
+// Writes "IMG.variance.exr" beside "IMG.exr".
+std::string variancePath(const std::string& out) {
+  const std::filesystem::path p(out);
+  return (p.parent_path() / (p.stem().string() + ".variance" + p.extension().string())).string();
+}
+
+int cmdRender(const Common& c, const validation::PathTraceOptions& base, const std::string& out,
+              const std::string& png) {
+  const Scene scene = loadWithOverrides(c);
+  validation::PathTraceOptions options = base;
+  options.cancel = &interrupted;
+  std::signal(SIGINT, [](int) { interrupted = true; });
+  const bool tty = isatty(STDERR_FILENO);
+  const auto start = std::chrono::steady_clock::now();
+  std::mutex printing;
+  auto lastPrint = start;
+  if (tty)
+    options.progress = [&](double fraction) {
+      const std::lock_guard<std::mutex> lock(printing);
+      const auto now = std::chrono::steady_clock::now();
+      if (fraction < 1.0 && now - lastPrint < std::chrono::milliseconds(200)) return;
+      lastPrint = now;
+      const double elapsed = std::chrono::duration<double>(now - start).count();
+      std::fprintf(stderr, "\rpath trace %5.1f%%  ETA %6.1f s ", 100.0 * fraction,
+                   fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0);
+    };
+  validation::PathTraceResult result;
+  try {
+    result = validation::pathTrace(scene, options);
+  } catch (const validation::Cancelled&) {
+    std::cerr << (tty ? "\n" : "") << "voxgi: interrupted; nothing written\n";
+    return 130;
+  }
+  if (tty) std::cerr << "\n";
+  writeExr(out, result.image);
+  writeExr(variancePath(out), result.variance);
+  if (!png.empty()) writePng(png, result.image);
+  std::cout << "path traced " << scene.camera.width << "x" << scene.camera.height << " at "
+            << options.spp << " spp in " << result.seconds << " s ("
+            << double(result.rays) / result.seconds / 1e6 << " M rays/s) -> " << out << " and "
+            << variancePath(out) << "\n";
+  return kExitOk;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -185,6 +237,22 @@ int main(int argc, char** argv) {
   addCommon(dump, true);
   dump->add_option("--stage", stage, "stage name")->required();
   dump->add_option("--out", out, "output folder")->required();
+  auto* render =
+      app.add_subcommand("render", "render an image (the reference path tracer for now)");
+  addCommon(render, true);
+  std::string technique = "path", png;
+  validation::PathTraceOptions pathOptions;
+  render->add_option("--technique", technique, "rendering technique")
+      ->check(CLI::IsMember({"path"}));
+  render->add_option("--spp", pathOptions.spp, "samples per pixel")->check(CLI::Range(1, 1 << 20));
+  render
+      ->add_option("--bounces", pathOptions.bounces,
+                   "indirect bounces after the first hit (-1: unlimited, Russian roulette)")
+      ->check(CLI::Range(-1, 1000));
+  render->add_option("--seed", pathOptions.seed, "random seed");
+  render->add_option("--out", out, "output EXR (linear); the variance goes to OUT.variance.exr")
+      ->required();
+  render->add_option("--png", png, "also write a tone-mapped sRGB preview");
   tools::BenchOptions bench;
   auto* benchCmd = app.add_subcommand("bench", "benchmarks (see docs/benchmarks.md)");
   auto* benchVoxelize =
@@ -207,6 +275,7 @@ int main(int argc, char** argv) {
                                                   static_cast<size_t>(threads));
   try {
     if (*voxelize) return cmdVoxelize(c, out, sums);
+    if (*render) return cmdRender(c, pathOptions, out, png);
     if (*diff) return cmdDiff(c, stage, json, dumpDir);
     if (*dump) return cmdDump(c, stage, out);
     if (*benchVoxelize) return tools::runBenchVoxelize(bench);

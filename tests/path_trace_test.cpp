@@ -1,0 +1,149 @@
+// The reference path tracer against scenes with known answers (after pbrt-v4's
+// integrators_test.cpp): statistical tolerances from its own variance image where noise exists.
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include "common/scene_load.h"
+#include "tests/test_scenes.h"
+#include "validation/path_trace.h"
+
+namespace voxgi::test {
+namespace {
+
+using validation::pathTrace;
+using validation::PathTraceOptions;
+
+Scene withCamera(Scene scene, glm::dvec3 position, glm::dvec3 lookAt, glm::dvec3 up, double fov,
+                 int size) {
+  scene.camera.position = position;
+  scene.camera.lookAt = lookAt;
+  scene.camera.up = up;
+  scene.camera.fovYDeg = fov;
+  scene.camera.width = scene.camera.height = size;
+  return scene;
+}
+
+// The inside of a cube [-1, 1]^3 whose faces point inwards.
+std::vector<Triangle> insideOfCube() {
+  std::vector<Triangle> tris;
+  for (int axis = 0; axis < 3; ++axis)
+    for (double side : {-1.0, 1.0})
+      for (Triangle t : quad(axis, side, {-1.0, -1.0}, {1.0, 1.0})) {
+        glm::dvec3 inward(0.0);
+        inward[axis] = -side;
+        if (glm::dot(glm::cross(t[1] - t[0], t[2] - t[0]), inward) < 0.0) std::swap(t[1], t[2]);
+        tris.push_back(t);
+      }
+  return tris;
+}
+
+glm::dvec3 meanOf(const Image& image) {
+  glm::dvec3 sum(0.0);
+  for (const auto& p : image.pixels) sum += glm::dvec3(p);
+  return sum / double(image.pixels.size());
+}
+
+TEST(PathTrace, DiffusePlaneUnderUniformSkyIsAlbedoTimesSky) {
+  Material m;
+  m.albedo = glm::vec3(0.5f, 0.25f, 0.8f);
+  Scene scene = makeScene(quad(1, 0.0, {-1e3, -1e3}, {1e3, 1e3}), unitGrid(8), m);
+  scene.background = {1.0f, 2.0f, 0.5f};
+  scene = withCamera(scene, {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, 60.0, 8);
+  for (int bounces : {0, 3, -1}) {
+    PathTraceOptions o;
+    o.spp = 4;
+    o.bounces = bounces;
+    const auto r = pathTrace(scene, o);
+    for (const auto& p : r.image.pixels)
+      for (int c = 0; c < 3; ++c)
+        ASSERT_NEAR(p[c], m.albedo[c] * scene.background[c], 1e-5) << bounces;
+  }
+}
+
+TEST(PathTrace, PointLightOverAPlaneFollowsTheCosineOverDistanceSquaredLaw) {
+  Material m;
+  m.albedo = glm::vec3(0.6f);
+  Scene scene = makeScene(quad(1, 0.0, {-1e3, -1e3}, {1e3, 1e3}), unitGrid(8), m);
+  Light light;
+  light.position = {0.0, 2.0, 0.0};
+  light.intensity = glm::vec3(10.0f);
+  scene.lights.push_back(light);
+  // A narrow camera looking at (1, 0, 0.5): the pixel footprint is tiny, the answer analytic.
+  const glm::dvec3 target(1.0, 0.0, 0.5);
+  scene = withCamera(scene, {1.0, 3.0, 0.5}, target, {0, 0, 1}, 0.01, 4);
+  PathTraceOptions o;
+  o.spp = 2;
+  o.bounces = 0;
+  const auto r = pathTrace(scene, o);
+  const glm::dvec3 toLight = light.position - target;
+  const double d2 = glm::dot(toLight, toLight), cosTheta = toLight.y / std::sqrt(d2);
+  const double expected = 0.6 / 3.14159265358979 * 10.0 * cosTheta / d2;
+  EXPECT_NEAR(meanOf(r.image).x, expected, expected * 1e-3);
+}
+
+TEST(PathTrace, FurnaceConvergesToEmissionOverOneMinusAlbedo) {
+  Material m;
+  m.albedo = glm::vec3(0.5f);
+  m.emission = glm::vec3(1.0f);
+  const Scene scene = withCamera(makeScene(insideOfCube(), unitGrid(8), m), {0.1, 0.2, 0.3},
+                                 {0.5, 0.1, -1.0}, {0, 1, 0}, 90.0, 16);
+  // bounces k: E * (1 + a + ... + a^(k+1)); unlimited: E / (1 - a).
+  for (const auto& [bounces, expected] :
+       std::vector<std::pair<int, double>>{{0, 1.5}, {1, 1.75}, {-1, 2.0}}) {
+    PathTraceOptions o;
+    o.spp = 16;
+    o.bounces = bounces;
+    const auto r = pathTrace(scene, o);
+    const double mean = meanOf(r.image).x;
+    const double standardError = std::sqrt(meanOf(r.variance).x / double(r.image.pixels.size()));
+    EXPECT_NEAR(mean, expected, 4.0 * standardError + 1e-4)
+        << "bounces " << bounces << " se " << standardError;
+    EXPECT_LT(standardError, 0.01) << bounces;
+  }
+}
+
+TEST(PathTrace, BitIdenticalForAnyThreadCount) {
+  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
+  scene.camera.width = scene.camera.height = 16;
+  PathTraceOptions o;
+  o.spp = 4;
+  std::vector<glm::vec3> reference;
+  for (int threads : {1, 2, 8}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    tbb::task_arena arena(threads);
+    const auto r = arena.execute([&] { return pathTrace(scene, o); });
+    if (reference.empty()) reference = r.image.pixels;
+    EXPECT_EQ(r.image.pixels, reference) << threads << " threads";
+  }
+}
+
+TEST(PathTrace, CornellBoxErrorFallsAsOneOverSqrtSpp) {
+  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
+  scene.camera.width = scene.camera.height = 24;
+  PathTraceOptions o;
+  o.spp = 1024;
+  o.seed = 99;
+  const Image reference = pathTrace(scene, o).image;
+  // Mean absolute error: RMSE on 576 pixels is dominated by a few heavy-tailed pixels (the
+  // light's edges under pixel jitter) and fluctuates too much from seed to seed to test.
+  auto meanAbsoluteError = [&](int spp) {
+    PathTraceOptions p;
+    p.spp = spp;
+    const Image image = pathTrace(scene, p).image;
+    double sum = 0.0;
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+      for (int c = 0; c < 3; ++c)
+        sum += std::abs(double(image.pixels[i][c]) - reference.pixels[i][c]);
+    return sum / double(image.pixels.size());
+  };
+  const double e4 = meanAbsoluteError(4), e16 = meanAbsoluteError(16), e64 = meanAbsoluteError(64);
+  // Each 4x more samples halves the error; allow for the reference's own noise.
+  EXPECT_GT(e4 / e16, 1.5) << e4 << " " << e16;
+  EXPECT_LT(e4 / e16, 2.7) << e4 << " " << e16;
+  EXPECT_GT(e16 / e64, 1.5) << e16 << " " << e64;
+  EXPECT_LT(e16 / e64, 2.7) << e16 << " " << e64;
+}
+
+}  // namespace
+}  // namespace voxgi::test
