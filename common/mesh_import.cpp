@@ -1,5 +1,4 @@
 // Mesh files through Assimp: triangles of every node, in world space, with their materials.
-#include <cmath>
 #include <filesystem>
 
 #include <assimp/Importer.hpp>
@@ -82,11 +81,7 @@ void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& tra
       mesh.material = materialOf.empty() ? 0 : materialOf[am.mMaterialIndex];
       mesh.positions.reserve(am.mNumVertices);
       for (unsigned v = 0; v < am.mNumVertices; ++v) {
-        const aiVector3D& p = am.mVertices[v];
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-          throw InputError(
-              path, "mesh '" + std::string(am.mName.C_Str()) + "' vertex " + std::to_string(v),
-              "coordinate is NaN or infinite");
+        const aiVector3D& p = am.mVertices[v];  // NaN/Inf: validateGeometry rejects them
         mesh.positions.push_back(glm::dvec3(item.toWorld * glm::dvec4(p.x, p.y, p.z, 1.0)));
       }
       for (unsigned f = 0; f < am.mNumFaces; ++f)

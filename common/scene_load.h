@@ -18,7 +18,8 @@ Scene loadScene(const std::string& path);
 int readResolution(const std::string& file, const std::string& field, int64_t n);
 
 // Appends the triangles of a mesh file to `scene`, transformed by `transform`. Materials come from
-// the file unless `materialOverride` names one of scene.materials. Throws InputError.
+// the file unless `materialOverride` names one of scene.materials. Throws InputError; call
+// validateGeometry afterwards (it rejects NaN/Inf vertices and bad materials).
 void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& transform,
                     const std::optional<uint32_t>& materialOverride);
 

@@ -52,7 +52,8 @@ void conservativeTriangle(const VoxelTriangle& t, int n, Accumulator& acc) {
   const glm::vec3 p2 = shared::toDominant(glm::vec3(t.v2), axis);
   const glm::vec3 lo = glm::min(p0, glm::min(p1, p2));
   const glm::vec3 hi = glm::max(p0, glm::max(p1, p2));
-  // Closed columns: column u spans [u, u+1], so it touches [lo, hi] iff ceil(lo) - 1 <= u <= floor(hi).
+  // Closed columns: column u spans [u, u+1], so it touches [lo, hi] iff ceil(lo) - 1 <= u <=
+  // floor(hi).
   const int u0 = std::max(0, int(std::ceil(lo.x)) - 1), u1 = std::min(n - 1, int(std::floor(hi.x)));
   const int w0 = std::max(0, int(std::ceil(lo.y)) - 1), w1 = std::min(n - 1, int(std::floor(hi.y)));
   VoxelContribution c{};
@@ -70,10 +71,9 @@ void antialiasedTriangle(const VoxelTriangle& t, int n, Accumulator& acc) {
   const int s = int(t.info.y);
   for (int i = 0; i < s; ++i)
     for (int j = 0; j < s - i; ++j)
-      for (int part = 0; part < 2; ++part) {
-        const bool up = part == 0;
-        if (!up && j == s - 1 - i) continue;  // the last cell of a row has no downward triangle
-        const glm::vec3 p = shared::antialiasedSample(t, i, j, up);
+      // The last cell of a row has only the upward half (as shaders/voxelize_antialiased.comp).
+      for (int part = 0, parts = j == s - 1 - i ? 1 : 2; part < parts; ++part) {
+        const glm::vec3 p = shared::antialiasedSample(t, i, j, part == 0);
         const glm::ivec3 base = shared::tentBase(p);
         for (int corner = 0; corner < 8; ++corner) {
           const glm::ivec3 voxel = shared::tentCorner(base, corner);

@@ -46,7 +46,19 @@ TEST(Diff, InjectedDifferencesFailUnlessTheyAreTies) {
       EXPECT_EQ(r.maxUlp, 1.0);
     }
   }
+  // Only the out-of-tolerance voxel is recorded (what the dump's classification grid shows).
+  ASSERT_EQ(failing.outside.size(), 1u);
+  EXPECT_EQ(failing.outside.at(123), validation::ElementClass::not_a_tie);
   EXPECT_TRUE(validation::compareStage("voxelize", cpu, gpu, allTies).pass);
+  // A voxel differing in several buffers is classified once.
+  gpu.at("albedo_sum").words[3 * 123] += 1;
+  int calls = 0;
+  const auto counted = validation::compareStage("voxelize", cpu, gpu, [&](size_t) {
+    ++calls;
+    return true;
+  });
+  EXPECT_EQ(calls, 1);
+  EXPECT_TRUE(counted.pass);
   gpu.erase("normal");
   EXPECT_FALSE(validation::compareStage("voxelize", cpu, gpu, allTies).pass);
 }

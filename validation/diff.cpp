@@ -47,44 +47,35 @@ double seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-void dump(const std::string& dir, std::string_view stage, const BufferSet& cpu,
-          const BufferSet& gpu, const TieClassifier& classify, const GridSpec& grid) {
+void dump(const std::string& dir, const StageReport& report, const BufferSet& cpu,
+          const BufferSet& gpu, const GridSpec& grid) {
   std::filesystem::create_directories(dir);
-  const std::string prefix = dir + "/" + std::string(stage);
+  const std::string prefix = dir + "/" + report.stage;
   std::vector<const Buffer*> cpuList, gpuList, diffList;
   // The difference grids reuse the buffer names but hold gpu - cpu as f32.
   std::vector<BufferSpec> diffSpecs;
-  for (const BufferSpec* spec : stageBuffers(stage))
+  for (const BufferSpec* spec : stageBuffers(report.stage))
     diffSpecs.push_back(
         {spec->stage, spec->name, ScalarType::f32, spec->components, spec->need, spec->meaning});
   static constexpr BufferSpec kClassSpec{"", "classification",   ScalarType::i32,
                                          1,  BufferNeed::always, "0 agree, 1 tie, 2 not a tie"};
   std::vector<Buffer> diffs;
-  diffs.reserve(diffSpecs.size() + 1);
-  Buffer classes(kClassSpec, glm::ivec3(grid.resolution));
+  diffs.reserve(diffSpecs.size());
   for (const BufferSpec& spec : diffSpecs) {
     const auto c = cpu.find(spec.name), g = gpu.find(spec.name);
-    if (c == cpu.end() || g == gpu.end()) continue;
+    if (c == cpu.end() || g == gpu.end() || c->second.extent != g->second.extent) continue;
     cpuList.push_back(&c->second);
     gpuList.push_back(&g->second);
     Buffer d(spec, c->second.extent);
-    const Comparison& cmp = comparisonFor(spec.stage, spec.name);
-    for (size_t e = 0; e < d.elementCount(); ++e) {
-      bool differs = false;
-      for (int k = 0; k < spec.components; ++k) {
-        const double delta = g->second.value(e, k) - c->second.value(e, k);
-        d.set(e, k, static_cast<float>(delta));
-        differs |= cmp.metric == Metric::exact
-                       ? c->second.words[e * size_t(spec.components) + size_t(k)] !=
-                             g->second.words[e * size_t(spec.components) + size_t(k)]
-                       : delta != 0.0;
-      }
-      if (differs && classes.get<int32_t>(e, 0) == 0)
-        classes.set<int32_t>(e, 0, classify && classify(e) ? 1 : 2);
-    }
+    for (size_t e = 0; e < d.elementCount(); ++e)
+      for (int k = 0; k < spec.components; ++k)
+        d.set(e, k, static_cast<float>(g->second.value(e, k) - c->second.value(e, k)));
     diffs.push_back(std::move(d));
   }
   for (const Buffer& d : diffs) diffList.push_back(&d);
+  Buffer classes(kClassSpec, glm::ivec3(grid.resolution));
+  for (const auto& [element, kind] : report.outside)
+    if (element < classes.elementCount()) classes.set<int32_t>(element, 0, int32_t(kind));
   diffList.push_back(&classes);
   writeVdb(prefix + "_cpu.vdb", cpuList, grid, {{"voxgi_backend", "cpu"}});
   writeVdb(prefix + "_gpu.vdb", gpuList, grid, {{"voxgi_backend", "gpu"}});
@@ -97,8 +88,11 @@ StageReport compareStage(std::string_view stage, const BufferSet& cpu, const Buf
                          const TieClassifier& classify) {
   StageReport report;
   report.stage = std::string(stage);
+  // Classifying is costly (it revisits nearby geometry): each element is classified once, for
+  // all buffers, and at most kMaxClassified elements per stage.
   constexpr size_t kMaxClassified = 20000;
   size_t classified = 0;
+  std::map<size_t, bool> decided;  // element -> tie (false also for unclassified)
   for (const BufferSpec* spec : stageBuffers(stage)) {
     const Comparison& cmp = comparisonFor(stage, spec->name);
     BufferReport r;
@@ -149,12 +143,19 @@ StageReport compareStage(std::string_view stage, const BufferSet& cpu, const Buf
       }
       if (!outside) continue;
       ++r.differing;
-      if (!classify || classified >= kMaxClassified) {
-        ++r.unclassified;
+      auto known = decided.find(e);
+      if (known == decided.end()) {
+        const bool canClassify = classify && classified < kMaxClassified;
+        classified += canClassify;
+        known = decided.emplace(e, canClassify && classify(e)).first;
+        if (!canClassify)
+          ++r.unclassified;
+        else
+          known->second ? ++r.ties : ++r.nonTies;
       } else {
-        ++classified;
-        classify(e) ? ++r.ties : ++r.nonTies;
+        known->second ? ++r.ties : ++r.nonTies;
       }
+      report.outside[e] = known->second ? ElementClass::tie : ElementClass::not_a_tie;
     }
     r.fraction = r.elements ? double(r.differing) / double(r.elements) : 0.0;
     r.pass = r.nonTies == 0 && r.unclassified == 0;
@@ -185,8 +186,8 @@ std::vector<StageReport> diffStages(const Scene& scene, const Settings& settings
       StageReport report = compareStage(stage.name, cpuOut, gpuOut, classify);
       report.cpuSeconds = cpuSeconds;
       report.gpuSeconds = gpuSeconds;
+      if (!dumpDir.empty()) dump(dumpDir, report, cpuOut, gpuOut, scene.grid);
       reports.push_back(std::move(report));
-      if (!dumpDir.empty()) dump(dumpDir, stage.name, cpuOut, gpuOut, classify, scene.grid);
     }
     inputs = std::move(cpuOut);
   }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -30,9 +31,14 @@ struct BufferReport {
   bool pass = true;
 };
 
+// How an element outside its tolerance was classified (decided once per element, for every
+// buffer of the stage; the dump's classification grid shows the same decision).
+enum class ElementClass : uint8_t { tie = 1, not_a_tie = 2 };
+
 struct StageReport {
   std::string stage;
   std::vector<BufferReport> buffers;
+  std::map<size_t, ElementClass> outside;  // element -> class; unclassified counts as not_a_tie
   double cpuSeconds = 0.0, gpuSeconds = 0.0;
   bool pass = true;
 };
