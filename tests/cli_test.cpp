@@ -31,7 +31,7 @@ CommandResult voxgi(const std::string& args) {
 }
 
 TEST(Cli, VoxelizeWritesAlignedGrids) {
-  const std::string out = testing::TempDir() + "/cornell.vdb";
+  const std::string out = testTempDir() + "cornell.vdb";
   const CommandResult r = voxgi("voxelize " + sourcePath("scenes/cornell_box.json") +
                                 " --resolution 32 --out " + out + " --backend cpu");
   ASSERT_EQ(r.code, 0) << r.output;
@@ -48,7 +48,7 @@ TEST(Cli, VoxelizeWritesAlignedGrids) {
 }
 
 TEST(Cli, BareMeshAndAutoBackend) {
-  const std::string out = testing::TempDir() + "/bunny.vdb";
+  const std::string out = testTempDir() + "bunny.vdb";
   const CommandResult r = voxgi("voxelize " + sourcePath("scenes/bunny.obj") +
                                 " --resolution 16 --out " + out + " --backend auto");
   EXPECT_EQ(r.code, 0) << r.output;
@@ -66,7 +66,7 @@ TEST(Cli, BadInputExitsTwoWithOneLine) {
     EXPECT_EQ(r.code, 2) << args << "\n" << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << "\n" << r.output;
   }
-  const std::string broken = testing::TempDir() + "/broken.json";
+  const std::string broken = testTempDir() + "broken.json";
   std::ofstream(broken) << "{\"meshes\": [";
   const CommandResult r = voxgi("voxelize " + broken + " --out x.vdb");
   EXPECT_EQ(r.code, 2);
@@ -74,7 +74,7 @@ TEST(Cli, BadInputExitsTwoWithOneLine) {
 }
 
 TEST(Cli, DiffReportsEveryBufferAsJson) {
-  const std::string json = testing::TempDir() + "/report.json", dump = testing::TempDir() + "/dump";
+  const std::string json = testTempDir() + "report.json", dump = testTempDir() + "dump";
   const CommandResult r =
       voxgi("diff " + sourcePath("scenes/bunny.json") +
             " --stage voxelize --resolution 32 --json " + json + " --dump " + dump);
@@ -89,7 +89,7 @@ TEST(Cli, DiffReportsEveryBufferAsJson) {
 }
 
 TEST(Cli, DumpWritesEveryBufferOfTheStage) {
-  const std::string dir = testing::TempDir() + "/dumpcmd";
+  const std::string dir = testTempDir() + "dumpcmd";
   const CommandResult r = voxgi("dump " + sourcePath("scenes/cornell_box.json") +
                                 " --stage voxelize --resolution 16 --backend cpu --out " + dir);
   ASSERT_EQ(r.code, 0) << r.output;

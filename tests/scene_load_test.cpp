@@ -10,7 +10,7 @@ namespace voxgi::test {
 namespace {
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = testing::TempDir() + "/" + name;
+  const std::string path = testTempDir() + name;
   std::ofstream(path) << text;
   return path;
 }

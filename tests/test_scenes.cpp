@@ -1,5 +1,9 @@
 #include "tests/test_scenes.h"
 
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
 #include "common/voxel_triangles.h"
 #include "cpu/stages.h"
 
@@ -62,6 +66,14 @@ uint64_t hashBuffers(const BufferSet& buffers) {
     for (uint32_t w : b.words) mix(w);
   }
   return h;
+}
+
+std::string testTempDir() {
+  const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+  const std::string dir =
+      testing::TempDir() + "voxgi_" + info->test_suite_name() + "." + info->name() + "/";
+  std::filesystem::create_directories(dir);
+  return dir;
 }
 
 std::string sourcePath(const std::string& relative) {

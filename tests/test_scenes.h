@@ -25,5 +25,7 @@ BufferSet runCpu(const Scene& scene, VoxelizeMode mode);
 // FNV-1a over every buffer's name and words.
 uint64_t hashBuffers(const BufferSet& buffers);
 std::string sourcePath(const std::string& relative);  // relative to the project root
+// A folder of the running test's own (ctest runs tests as parallel processes), ending in '/'.
+std::string testTempDir();
 
 }  // namespace voxgi::test

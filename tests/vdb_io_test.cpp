@@ -17,7 +17,7 @@ TEST(VdbIo, EveryVoxelizeBufferRoundTrips) {
   const BufferSet b = runCpu(scene, VoxelizeMode::antialiased);
   std::vector<const Buffer*> all;
   for (const auto& [name, buffer] : b) all.push_back(&buffer);
-  const std::string path = testing::TempDir() + "/roundtrip.vdb";
+  const std::string path = testTempDir() + "roundtrip.vdb";
   writeVdb(path, all, scene.grid);
   GridSpec read;
   std::vector<const BufferSpec*> specs;
@@ -36,7 +36,7 @@ TEST(VdbIo, VoxelCentresLineUpWithTheWorld) {
   scene.grid.size = 4.0;  // h = 0.5
   const BufferSet b = runCpu(makeScene(quad(2, 0.4, {0.1, 0.2}, {0.8, 0.9}), unitGrid(8)),
                              VoxelizeMode::conservative);
-  const std::string path = testing::TempDir() + "/transform.vdb";
+  const std::string path = testTempDir() + "transform.vdb";
   writeVdb(path, {&b.at("opacity")}, scene.grid);
   openvdb::io::File file(path);
   file.open();

@@ -43,7 +43,7 @@ TEST(VoxelizeHardCases, NonFiniteVerticesAreAnInputError) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("vertex 1"), std::string::npos) << e.what();
   }
-  const std::string path = testing::TempDir() + "/inf.obj";
+  const std::string path = testTempDir() + "inf.obj";
   std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n";
   EXPECT_THROW(loadScene(path), InputError);
 }
