@@ -1,5 +1,7 @@
 #include "common/buffer.h"
 
+#include "common/mips.h"
+
 #include <array>
 #include <stdexcept>
 
@@ -12,8 +14,9 @@ constexpr std::array kStages{
 };
 #undef VOXGI_STAGE
 
-#define VOXGI_BUFFER(stage, name, type, components, need, meaning) \
-  BufferSpec{#stage, #name, ScalarType::type, components, BufferNeed::need, meaning},
+#define VOXGI_BUFFER(stage, name, type, components, shape, need, meaning)                \
+  BufferSpec{#stage,           #name,  ScalarType::type, components, BufferShape::shape, \
+             BufferNeed::need, meaning},
 constexpr std::array kBuffers{
 #include "common/stages.inc"
 };
@@ -74,11 +77,31 @@ double Buffer::value(size_t element, int component) const {
   return 0.0;
 }
 
-uint64_t stageBufferBytes(std::string_view stage, glm::ivec3 extent, bool emissive) {
-  uint64_t words = 0;
-  for (const BufferSpec* b : stageBuffers(stage))
-    if (b->need == BufferNeed::always || emissive) words += uint64_t(b->components);
-  return words * 4u * uint64_t(extent.x) * uint64_t(extent.y) * uint64_t(extent.z);
+uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image) {
+  const auto n = static_cast<uint64_t>(resolution);
+  const int levels = mipLevelCount(resolution);
+  switch (shape) {
+    case BufferShape::volume:
+      return n * n * n;
+    case BufferShape::mips:
+      return mipLevelOffset(resolution, levels + 1, 1);
+    case BufferShape::mips6:
+      return mipLevelOffset(resolution, levels + 1, 6);
+    case BufferShape::image:
+      return uint64_t(image.x) * uint64_t(image.y);
+  }
+  return 0;
+}
+
+glm::ivec3 shapeExtent(BufferShape shape, int resolution, glm::ivec2 image) {
+  switch (shape) {
+    case BufferShape::volume:
+      return glm::ivec3(resolution);
+    case BufferShape::image:
+      return {image.x, image.y, 1};
+    default:
+      return {static_cast<int>(shapeElements(shape, resolution, image)), 1, 1};
+  }
 }
 
 }  // namespace voxgi

@@ -45,8 +45,15 @@ using Words = std::vector<uint32_t, ZeroedAllocator<uint32_t>>;
 enum class ScalarType { u32, i32, f32 };
 const char* scalarTypeName(ScalarType t);
 
-// Which scene feature a buffer depends on: a scene without it does not pay for the buffer.
-enum class BufferNeed { always, emission };
+// Which scene feature (or setting) a buffer depends on: without it the buffer is not produced.
+enum class BufferNeed { always, emission, isotropic, anisotropic, ambient_occlusion };
+
+// How a buffer's elements are laid out (common/pyramid.h has the level offsets):
+// volume: N^3 voxels; mips: levels 1..log2(N) of an N^3 volume, level l is (N>>l)^3, one after
+// another; mips6: the same levels, each six (N>>l)^3 volumes side by side along x (faces +x, -x,
+// +y, -y, +z, -z), so level l is (6(N>>l)) x (N>>l) x (N>>l); image: the camera's pixels, row 0 at
+// the top.
+enum class BufferShape { volume, mips, mips6, image };
 
 // A buffer as declared in common/stages.inc.
 struct BufferSpec {
@@ -54,6 +61,7 @@ struct BufferSpec {
   std::string_view name;
   ScalarType type;
   int components;
+  BufferShape shape;
   BufferNeed need;
   std::string_view meaning;
 };
@@ -95,7 +103,9 @@ struct Buffer {
 // Buffers by name; a stage reads its inputs from the set and adds its outputs.
 using BufferSet = std::map<std::string, Buffer, std::less<>>;
 
-// Bytes `stage` allocates for its buffers on an extent (those needing emission only if `emissive`).
-uint64_t stageBufferBytes(std::string_view stage, glm::ivec3 extent, bool emissive);
+// Elements of a buffer of `shape` for an N^3 grid or a width x height image.
+uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image);
+// Elements of a buffer in `shape` as a 3D extent (x-fastest); pyramids are one row.
+glm::ivec3 shapeExtent(BufferShape shape, int resolution, glm::ivec2 image);
 
 }  // namespace voxgi

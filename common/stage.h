@@ -5,17 +5,10 @@
 
 #include "common/buffer.h"
 #include "common/scene.h"
+#include "common/settings.h"
 #include "common/voxel_triangles.h"
 
 namespace voxgi {
-
-enum class VoxelizeMode { conservative, antialiased };
-VoxelizeMode parseVoxelizeMode(const std::string& text);  // throws InputError
-const char* voxelizeModeName(VoxelizeMode mode);
-
-struct Settings {
-  VoxelizeMode voxelizeMode = VoxelizeMode::conservative;
-};
 
 struct StageContext {
   const Scene& scene;
@@ -23,8 +16,13 @@ struct StageContext {
   const VoxelTriangles& triangles;  // prepareVoxelTriangles(scene, scene.grid)
 };
 
-// Checks the grid and memory before a stage allocates its buffers on `scene.grid`;
-// throws InputError naming the scene's grid.resolution.
-void checkStageMemory(const Scene& scene, std::string_view stage, double copies = 1.0);
+// Whether a stage run with `settings` on `scene` produces the buffer.
+bool bufferNeeded(const BufferSpec& spec, const Scene& scene, const Settings& settings);
+// Bytes of the buffers `stage` produces.
+uint64_t stageBufferBytes(std::string_view stage, const Scene& scene, const Settings& settings);
+
+// Checks the grid and memory before a stage allocates its buffers; throws InputError naming the
+// scene's grid.resolution (or camera.resolution for image stages).
+void checkStageMemory(const StageContext& ctx, std::string_view stage, double copies = 1.0);
 
 }  // namespace voxgi

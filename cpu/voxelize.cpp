@@ -89,7 +89,7 @@ void antialiasedTriangle(const VoxelTriangle& t, int n, Accumulator& acc) {
 void voxelize(const StageContext& ctx, BufferSet& buffers) {
   const GridSpec& grid = ctx.scene.grid;
   const int n = grid.resolution;
-  checkStageMemory(ctx.scene, "voxelize");
+  checkStageMemory(ctx, "voxelize");
   const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
   const bool emissive = ctx.triangles.emissionScale > 0.0f;
   const glm::ivec3 extent(n);

@@ -36,7 +36,7 @@ void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
                      std::to_string(n) + " needs 3D images of width " + std::to_string(3 * n) +
                          ", above this GL's GL_MAX_3D_TEXTURE_SIZE " +
                          std::to_string(context.max3dTextureSize()));
-  checkStageMemory(ctx.scene, "voxelize", 2.0);  // GPU copies plus the read-back buffers
+  checkStageMemory(ctx, "voxelize", 2.0);  // GPU copies plus the read-back buffers
   const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
   const bool emissive = ctx.triangles.emissionScale > 0.0f;
   const auto& tris = ctx.triangles.triangles;

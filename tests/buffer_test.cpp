@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include "common/buffer.h"
+#include "common/mips.h"
+#include "common/stage.h"
 #include "validation/comparisons.h"
 
 namespace voxgi {
@@ -24,9 +26,23 @@ TEST(Buffer, TypedWordsRoundTrip) {
   b.set<int32_t>(5, 2, -7);
   EXPECT_EQ(b.get<int32_t>(5, 2), -7);
   EXPECT_EQ(b.value(5, 2), -7.0);
-  EXPECT_EQ(stageBufferBytes("voxelize", glm::ivec3(4), true),
+}
+
+TEST(Buffer, ShapesAndStageBytes) {
+  EXPECT_EQ(shapeElements(BufferShape::volume, 8, {}), 512u);
+  EXPECT_EQ(shapeElements(BufferShape::mips, 8, {}), 64u + 8u + 1u);
+  EXPECT_EQ(shapeElements(BufferShape::mips6, 8, {}), 6u * (64u + 8u + 1u));
+  EXPECT_EQ(shapeElements(BufferShape::image, 8, {5, 3}), 15u);
+  EXPECT_EQ(mipLevelOffset(8, 3, 6), 6u * (64u + 8u));
+  Scene scene;
+  scene.grid.resolution = 4;
+  const Settings settings;
+  EXPECT_EQ(stageBufferBytes("voxelize", scene, settings), 64u * 4u * (1 + 3 + 3 + 1 + 3 + 3));
+  scene.materials.push_back({});
+  scene.materials[0].emission = glm::vec3(1.0f);
+  scene.meshes.push_back({"m", {glm::dvec3(0.0)}, {glm::uvec3(0u)}, 0});
+  EXPECT_EQ(stageBufferBytes("voxelize", scene, settings),
             64u * 4u * (1 + 3 + 3 + 3 + 1 + 3 + 3 + 3));
-  EXPECT_EQ(stageBufferBytes("voxelize", glm::ivec3(4), false), 64u * 4u * (1 + 3 + 3 + 1 + 3 + 3));
 }
 
 }  // namespace

@@ -55,6 +55,27 @@ BufferSet runCpu(const Scene& scene, VoxelizeMode mode) {
   return out;
 }
 
+BufferSet runCpuUntil(const Scene& scene, const Settings& settings, std::string_view last) {
+  const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
+  const StageContext ctx{scene, settings, tris};
+  BufferSet out;
+#define VOXGI_STAGE(stage, summary) \
+  cpu::stage(ctx, out);             \
+  if (last == #stage) return out;
+#include "common/stages.inc"
+#undef VOXGI_STAGE
+  ADD_FAILURE() << "no stage " << last;
+  return out;
+}
+
+glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v) {
+  const int n = b.extent.x;
+  const size_t e = size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z));
+  glm::vec4 r(0.0f);
+  for (int c = 0; c < b.components(); ++c) r[c] = b.get<float>(e, c);
+  return r;
+}
+
 uint64_t hashBuffers(const BufferSet& buffers) {
   uint64_t h = 1469598103934665603ull;
   auto mix = [&](uint64_t x) {

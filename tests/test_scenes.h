@@ -22,6 +22,10 @@ std::vector<Triangle> quad(int axis, double at, glm::dvec2 lo, glm::dvec2 hi);
 GridSpec unitGrid(int n, double size = 1.0);
 
 BufferSet runCpu(const Scene& scene, VoxelizeMode mode);
+// Runs the CPU stages in graph order up to and including `last`.
+BufferSet runCpuUntil(const Scene& scene, const Settings& settings, std::string_view last);
+// Voxel v's components of a volume buffer.
+glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v);
 // FNV-1a over every buffer's name and words.
 uint64_t hashBuffers(const BufferSet& buffers);
 std::string sourcePath(const std::string& relative);  // relative to the project root

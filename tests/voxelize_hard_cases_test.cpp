@@ -153,7 +153,9 @@ TEST(VoxelizeHardCases, ResolutionOne) {
 TEST(VoxelizeHardCases, ResolutionTooLargeForMemoryIsAnErrorBeforeAllocating) {
   Scene scene = makeScene(quad(2, 0.5, {0.25, 0.25}, {0.75, 0.75}), unitGrid(2048));
   try {
-    checkStageMemory(scene, "voxelize");
+    const Settings settings;
+    const VoxelTriangles none{};
+    checkStageMemory(StageContext{scene, settings, none}, "voxelize");
     FAIL() << "2048^3 voxelize buffers accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("grid.resolution"), std::string::npos) << e.what();

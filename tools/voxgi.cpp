@@ -63,7 +63,17 @@ struct Common {
   std::string mode = "conservative";
   std::string backend = "auto";
   std::string gl = "egl";
+  std::string preset = "default";
+  std::vector<std::string> sets;  // --set key=value, applied after the preset and --mode
 };
+
+Settings makeSettings(const Common& c) {
+  Settings settings;
+  applyPreset(settings, c.preset);
+  settings.voxelizeMode = parseVoxelizeMode(c.mode);
+  for (const std::string& s : c.sets) applySetting(settings, s, "--set");
+  return settings;
+}
 
 Scene loadWithOverrides(const Common& c) {
   Scene scene = loadScene(c.scene);
@@ -98,8 +108,7 @@ void runStages(const Scene& scene, const Settings& settings, tools::BackendChoic
 
 int cmdVoxelize(const Common& c, const std::string& out, bool sums) {
   Scene scene = loadWithOverrides(c);
-  Settings settings;
-  settings.voxelizeMode = parseVoxelizeMode(c.mode);
+  const Settings settings = makeSettings(c);
   auto backend = tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl));
   if (!backend.note.empty()) std::cerr << "voxgi: " << backend.note << "\n";
   const auto start = std::chrono::steady_clock::now();
@@ -122,8 +131,7 @@ int cmdVoxelize(const Common& c, const std::string& out, bool sums) {
 int cmdDiff(const Common& c, const std::string& stage, const std::string& json,
             const std::string& dumpDir) {
   Scene scene = loadWithOverrides(c);
-  Settings settings;
-  settings.voxelizeMode = parseVoxelizeMode(c.mode);
+  const Settings settings = makeSettings(c);
   std::vector<std::string> stages;
   for (const StageSpec& s : stageSpecs())
     if (stage == "all" || stage == s.name) stages.emplace_back(s.name);
@@ -141,8 +149,7 @@ int cmdDiff(const Common& c, const std::string& stage, const std::string& json,
 int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
   if (findStage(stage) == nullptr) throw InputError("--stage", "", "unknown stage '" + stage + "'");
   Scene scene = loadWithOverrides(c);
-  Settings settings;
-  settings.voxelizeMode = parseVoxelizeMode(c.mode);
+  const Settings settings = makeSettings(c);
   auto backend = tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl));
   BufferSet buffers;
   runStages(scene, settings, backend, stage, buffers);
@@ -221,6 +228,9 @@ int main(int argc, char** argv) {
           ->check(CLI::IsMember({"cpu", "gpu", "auto"}));
     cmd->add_option("--threads", threads, "worker threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
+    cmd->add_option("--preset", c.preset, "parameter preset: default, kahl2019, villegas2017");
+    cmd->add_option("--set", c.sets,
+                    "technique parameter key=value (repeatable; see render --help)");
   };
   std::string out, stage = "all", json, dumpDir;
   bool sums = false;
@@ -253,6 +263,7 @@ int main(int argc, char** argv) {
   render->add_option("--out", out, "output EXR (linear); the variance goes to OUT.variance.exr")
       ->required();
   render->add_option("--png", png, "also write a tone-mapped sRGB preview");
+  render->footer(describeSettings());
   tools::BenchOptions bench;
   auto* benchCmd = app.add_subcommand("bench", "benchmarks (see docs/benchmarks.md)");
   auto* benchVoxelize =

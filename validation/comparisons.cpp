@@ -17,7 +17,7 @@ constexpr std::array kComparisons{
 struct Name {
   std::string_view stage, buffer;
 };
-#define VOXGI_BUFFER(stage, buffer, type, components, need, meaning) Name{#stage, #buffer},
+#define VOXGI_BUFFER(stage, buffer, type, components, shape, need, meaning) Name{#stage, #buffer},
 constexpr std::array kBufferNames{
 #include "common/stages.inc"
 };
@@ -48,6 +48,9 @@ std::string Comparison::describe() const {
       break;
     case Metric::max_abs:
       s << "max |gpu-cpu| " << tolerance;
+      break;
+    case Metric::max_rel:
+      s << "max |gpu-cpu| / max |element| " << tolerance;
       break;
   }
   return s.str();

@@ -6,7 +6,9 @@
 
 namespace voxgi::validation {
 
-enum class Metric { exact, max_ulp, max_abs };
+// max_rel: |gpu - cpu| <= tolerance * the largest |component| of the element on either backend,
+// so a colour channel near zero is judged against the element's magnitude, not its own.
+enum class Metric { exact, max_ulp, max_abs, max_rel };
 
 struct Comparison {
   std::string_view stage;
@@ -14,7 +16,7 @@ struct Comparison {
   Metric metric;
   double tolerance;
   std::string_view reason;
-  std::string describe() const;  // "exact", "max 3 ULP", "max |gpu-cpu| 1e-06"
+  std::string describe() const;  // "exact", "max 3 ULP", "max |gpu-cpu| 1e-06", "max rel 1e-05"
 };
 
 // The registered comparison of a buffer; throws std::out_of_range for an unknown one.

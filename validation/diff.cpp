@@ -55,10 +55,15 @@ void dump(const std::string& dir, const StageReport& report, const BufferSet& cp
   // The difference grids reuse the buffer names but hold gpu - cpu as f32.
   std::vector<BufferSpec> diffSpecs;
   for (const BufferSpec* spec : stageBuffers(report.stage))
-    diffSpecs.push_back(
-        {spec->stage, spec->name, ScalarType::f32, spec->components, spec->need, spec->meaning});
-  static constexpr BufferSpec kClassSpec{"", "classification",   ScalarType::i32,
-                                         1,  BufferNeed::always, "0 agree, 1 tie, 2 not a tie"};
+    diffSpecs.push_back({spec->stage, spec->name, ScalarType::f32, spec->components, spec->shape,
+                         spec->need, spec->meaning});
+  static constexpr BufferSpec kClassSpec{"",
+                                         "classification",
+                                         ScalarType::i32,
+                                         1,
+                                         BufferShape::volume,
+                                         BufferNeed::always,
+                                         "0 agree, 1 tie, 2 not a tie"};
   std::vector<Buffer> diffs;
   diffs.reserve(diffSpecs.size());
   for (const BufferSpec& spec : diffSpecs) {
@@ -123,6 +128,10 @@ StageReport compareStage(std::string_view stage, const BufferSet& cpu, const Buf
     for (size_t e = 0; e < r.elements; ++e) {
       bool outside = false;
       double elementWorst = 0.0;
+      double magnitude = 0.0;  // for max_rel
+      if (cmp.metric == Metric::max_rel)
+        for (int k = 0; k < spec->components; ++k)
+          magnitude = std::max({magnitude, std::abs(a.value(e, k)), std::abs(b.value(e, k))});
       for (int k = 0; k < spec->components; ++k) {
         const size_t w = e * size_t(spec->components) + size_t(k);
         if (a.words[w] == b.words[w]) continue;
@@ -135,7 +144,8 @@ StageReport compareStage(std::string_view stage, const BufferSet& cpu, const Buf
           if (cmp.metric == Metric::max_ulp) outside |= ulp > cmp.tolerance;
         }
         if (cmp.metric == Metric::exact) outside = true;
-        if (cmp.metric == Metric::max_abs) outside |= abs > cmp.tolerance;
+        if (cmp.metric == Metric::max_abs) outside |= !(abs <= cmp.tolerance);
+        if (cmp.metric == Metric::max_rel) outside |= !(abs <= cmp.tolerance * magnitude);
       }
       if (elementWorst > worst && elementWorst > 0.0) {
         worst = elementWorst;

@@ -3,19 +3,10 @@
 // See docs/stages/voxelize.md for the method and glsl_cpp.h for the rules of shared code.
 #ifndef VOXGI_VOXELIZE_KERNEL_H
 #define VOXGI_VOXELIZE_KERNEL_H
+#include "vector_math.h"
 #include "voxelize_layout.h"
 
 VOXGI_NAMESPACE_BEGIN
-
-VOXGI_FN float dot3(vec3 a, vec3 b) {
-  precise float r = (a.x * b.x + a.y * b.y) + a.z * b.z;
-  return r;
-}
-
-VOXGI_FN vec3 cross3(vec3 a, vec3 b) {
-  precise vec3 r = vec3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
-  return r;
-}
 
 // Permutes p so that the dominant axis becomes z: (p[a+1], p[a+2], p[a]) (indices mod 3).
 VOXGI_FN vec3 toDominant(vec3 p, uint axis) {

@@ -1,0 +1,202 @@
+#include "common/settings.h"
+
+#include <charconv>
+#include <cmath>
+#include <functional>
+#include <sstream>
+
+#include "common/error.h"
+
+namespace voxgi {
+namespace {
+
+// One --set key: how to read and write it on Settings, and how to describe it.
+struct Param {
+  std::string key;
+  std::string range;  // "[lo, hi]" or "a|b|c"
+  std::string meaning;
+  std::function<std::string(const Settings&)> get;
+  std::function<bool(Settings&, const std::string&)> set;  // false: value rejected
+};
+
+template <class T>
+std::string formatNumber(T v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+// Built with a stream: GCC 12 warns falsely (-Wrestrict) on chained std::string operator+.
+template <class T>
+std::string interval(T lo, T hi) {
+  std::ostringstream s;
+  s << '[' << lo << ", " << hi << ']';
+  return s.str();
+}
+
+// A float or int key; the whole text must parse (std::from_chars) to a finite value in range.
+template <class T>
+Param number(std::string key, T Settings::*field, T lo, T hi, std::string meaning) {
+  return {key, interval(lo, hi), std::move(meaning),
+          [field](const Settings& s) { return formatNumber(s.*field); },
+          [field, lo, hi](Settings& s, const std::string& text) {
+            T v{};
+            const char* end = text.data() + text.size();
+            const auto [ptr, ec] = std::from_chars(text.data(), end, v);
+            if (ec != std::errc() || ptr != end || !std::isfinite(double(v)) || v < lo || v > hi)
+              return false;
+            s.*field = v;
+            return true;
+          }};
+}
+
+Param flag(std::string key, bool Settings::*field, std::string meaning) {
+  return {key, "true|false", std::move(meaning),
+          [field](const Settings& s) { return std::string(s.*field ? "true" : "false"); },
+          [field](Settings& s, const std::string& text) {
+            if (text != "true" && text != "false") return false;
+            s.*field = text == "true";
+            return true;
+          }};
+}
+
+template <class E>
+Param choice(std::string key, E Settings::*field, std::vector<std::string> names,
+             std::string meaning) {
+  std::string range;
+  for (const auto& n : names) {
+    if (!range.empty()) range += '|';
+    range += n;
+  }
+  return {key, range, std::move(meaning),
+          [field, names](const Settings& s) { return names[static_cast<size_t>(s.*field)]; },
+          [field, names](Settings& s, const std::string& text) {
+            for (size_t i = 0; i < names.size(); ++i)
+              if (names[i] == text) {
+                s.*field = static_cast<E>(i);
+                return true;
+              }
+            return false;
+          }};
+}
+
+const std::vector<Param>& params() {
+  static const std::vector<Param> table{
+      choice("voxelize.mode", &Settings::voxelizeMode, {"conservative", "antialiased"},
+             "closed triangle/voxel overlap, or trilinear splats continuous under motion"),
+      choice("light.attenuation", &Settings::attenuation, {"cosine", "normal_weighted"},
+             "per-voxel direct light: max(n.l, 0), or Villegas' per-face weighting"),
+      choice("voxel_shadow.mode", &Settings::voxelShadow, {"none", "hard", "soft"},
+             "voxel visibility toward each light by marching the opacity volume"),
+      number("voxel_shadow.kappa", &Settings::voxelShadowKappa, 0.0f, 64.0f,
+             "soft voxel shadows: occlusion added per opaque voxel, divided by the distance"),
+      number("voxel_shadow.offset", &Settings::voxelShadowOffset, 0.5f, 8.0f,
+             "voxels the shadow ray skips before testing opacity (self-shadowing)"),
+      choice("mip.mode", &Settings::mip, {"isotropic", "anisotropic"},
+             "one averaged pyramid, or six directional pyramids"),
+      number("bounce.count", &Settings::bounces, 0, 8,
+             "extra diffuse bounces gathered per voxel before the final gather"),
+      choice("cone.diffuse_set", &Settings::diffuseCones, {"villegas6", "kahl5", "equal7"},
+             "diffuse cone set (docs/stages/trace_cones.md)"),
+      choice(
+          "cone.diffuse_mode", &Settings::diffuseMode, {"composite", "first_hit"},
+          "front-to-back compositing, or seed 000's stop at the first sample with opacity > 0.01"),
+      number("cone.beta", &Settings::beta, 0.05f, 4.0f,
+             "step length as a fraction of the cone diameter"),
+      number("cone.start_offset", &Settings::startOffset, 0.0f, 8.0f,
+             "voxels the cone apex is pushed along the surface normal"),
+      number("cone.max_distance", &Settings::maxDistance, 0.0f, 1e6f,
+             "voxels a cone travels at most; 0: until it leaves the grid"),
+      number("cone.specular_min_aperture", &Settings::specularMinAperture, 1e-3f, 1.0f,
+             "radians; the specular cone's aperture for very high shininess"),
+      number("shadow.aperture", &Settings::shadowAperture, 1e-3f, 3.0f,
+             "radians; aperture of the shadow cone toward each light"),
+      choice("shadow.falloff", &Settings::shadowFalloff, {"standard", "kahl2019"},
+             "shadow cone occlusion as sampled, or damped by smoothstep(0, max, sqrt(t)*strength)"),
+      number("shadow.strength", &Settings::shadowStrength, 0.0f, 100.0f,
+             "kahl2019 shadow falloff strength"),
+      choice("specular.model", &Settings::specularModel, {"phong", "kahl2019"},
+             "indirect specular weight: specular colour, or seed 000's light-angle BRDF per light"),
+      number("specular.shininess_falloff", &Settings::shininessFalloff, 0.0f, 64.0f,
+             "kahl2019 specular BRDF exponent q"),
+      flag("ao.enabled", &Settings::ambientOcclusion,
+           "compute ambient occlusion (an extra output)"),
+      number("ao.lambda", &Settings::aoLambda, 0.0f, 100.0f,
+             "AO weight 1/(1 + lambda r), r the cone radius in voxels"),
+  };
+  return table;
+}
+
+const std::vector<std::pair<std::string, std::vector<std::string>>>& presets() {
+  static const std::vector<std::pair<std::string, std::vector<std::string>>> table{
+      {"default", {}},
+      {"kahl2019",
+       {"cone.diffuse_set=kahl5", "cone.diffuse_mode=first_hit", "shadow.falloff=kahl2019",
+        "shadow.aperture=0.5", "specular.model=kahl2019", "mip.mode=isotropic",
+        "voxel_shadow.mode=none"}},
+      {"villegas2017",
+       {"cone.diffuse_set=villegas6", "light.attenuation=normal_weighted", "voxel_shadow.mode=soft",
+        "mip.mode=anisotropic"}},
+  };
+  return table;
+}
+
+}  // namespace
+
+VoxelizeMode parseVoxelizeMode(const std::string& text) {
+  if (text == "conservative") return VoxelizeMode::conservative;
+  if (text == "antialiased") return VoxelizeMode::antialiased;
+  throw InputError("--mode", "", "must be conservative or antialiased, got '" + text + "'");
+}
+
+const char* voxelizeModeName(VoxelizeMode mode) {
+  return mode == VoxelizeMode::conservative ? "conservative" : "antialiased";
+}
+
+void applySetting(Settings& settings, const std::string& assignment, const std::string& source) {
+  const size_t eq = assignment.find('=');
+  if (eq == std::string::npos)
+    throw InputError(source, "", "expected key=value, got '" + assignment + "'");
+  const std::string key = assignment.substr(0, eq), value = assignment.substr(eq + 1);
+  for (const Param& p : params())
+    if (p.key == key) {
+      if (!p.set(settings, value))
+        throw InputError(source, key, "must be in " + p.range + ", got '" + value + "'");
+      return;
+    }
+  throw InputError(source, key, "unknown parameter (voxgi render --help lists them)");
+}
+
+void applyPreset(Settings& settings, const std::string& preset) {
+  for (const auto& [name, assignments] : presets())
+    if (name == preset) {
+      for (const std::string& a : assignments) applySetting(settings, a, "preset " + name);
+      return;
+    }
+  throw InputError("--preset", "",
+                   "must be default, kahl2019 or villegas2017, got '" + preset + "'");
+}
+
+std::vector<std::string> settingValues(const Settings& settings) {
+  std::vector<std::string> out;
+  for (const Param& p : params()) out.push_back(p.key + "=" + p.get(settings));
+  return out;
+}
+
+std::string describeSettings() {
+  const Settings defaults;
+  std::ostringstream s;
+  s << "Parameters (--set key=value):\n";
+  for (const Param& p : params())
+    s << "  " << p.key << " = " << p.get(defaults) << "  " << p.range << "\n      " << p.meaning
+      << "\n";
+  s << "Presets (--preset NAME, applied before --set):\n";
+  for (const auto& [name, assignments] : presets()) {
+    s << "  " << name << ":";
+    for (const std::string& a : assignments) s << " " << a;
+    s << (assignments.empty() ? " the defaults above\n" : "\n");
+  }
+  return s.str();
+}
+
+}  // namespace voxgi

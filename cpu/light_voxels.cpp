@@ -1,0 +1,65 @@
+// CPU light_voxels stage: the shared kernel (shaders/shared/light_voxels_kernel.h) per voxel.
+// Each voxel is written by exactly one task, so the result does not depend on the thread count.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "common/kernel_params.h"
+#include "common/lights.h"
+#include "cpu/stages.h"
+
+namespace voxgi::cpu {
+namespace {
+
+// The volumes the kernel reads (FETCH in the shared code).
+struct LightVoxelsVolumes {
+  const Buffer& opacity;
+  const Buffer& albedo;
+  const Buffer& normal;
+  const Buffer* emission;
+  const std::vector<shared::LightData>& lights;
+  int n;
+
+  size_t index(glm::ivec3 v) const {
+    return size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z));
+  }
+  float opacityAt(glm::ivec3 v) const { return opacity.get<float>(index(v), 0); }
+  glm::vec3 vec3At(const Buffer& b, glm::ivec3 v) const {
+    const size_t e = index(v);
+    return {b.get<float>(e, 0), b.get<float>(e, 1), b.get<float>(e, 2)};
+  }
+  glm::vec3 albedoAt(glm::ivec3 v) const { return vec3At(albedo, v); }
+  glm::vec3 normalAt(glm::ivec3 v) const { return vec3At(normal, v); }
+  glm::vec3 emissionAt(glm::ivec3 v) const { return vec3At(*emission, v); }
+  shared::LightData lightAt(int i) const { return lights[size_t(i)]; }
+};
+
+}  // namespace
+
+void light_voxels(const StageContext& ctx, BufferSet& buffers) {
+  checkStageMemory(ctx, "light_voxels");
+  const int n = ctx.scene.grid.resolution;
+  const auto lights = voxelLights(ctx.scene);
+  const auto emission = buffers.find("emission");
+  const bool emissive = emission != buffers.end();
+  const LightVoxelsVolumes volumes{buffers.at("opacity"),
+                                   buffers.at("albedo"),
+                                   buffers.at("normal"),
+                                   emissive ? &emission->second : nullptr,
+                                   lights,
+                                   n};
+  const shared::LightVoxelsParams params =
+      lightVoxelsParams(ctx, static_cast<int>(lights.size()), emissive);
+  Buffer radiance(bufferSpec("light_voxels", "radiance"), glm::ivec3(n));
+  tbb::parallel_for(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
+    for (int row = rows.begin(); row != rows.end(); ++row)
+      for (int x = 0; x < n; ++x) {
+        const glm::ivec3 v(x, row % n, row / n);
+        const glm::vec4 r = shared::lightVoxel(volumes, v, params);
+        const size_t e = volumes.index(v);
+        for (int c = 0; c < 4; ++c) radiance.set(e, c, r[c]);
+      }
+  });
+  buffers["radiance"] = std::move(radiance);
+}
+
+}  // namespace voxgi::cpu

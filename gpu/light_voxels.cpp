@@ -1,0 +1,55 @@
+// GPU light_voxels stage: shaders/light_voxels.comp runs the shared kernel per voxel on the
+// voxelize buffers uploaded as textures; the radiance volume is read back.
+#include <cstring>
+#include <vector>
+
+#include "common/kernel_params.h"
+#include "common/lights.h"
+#include "gpu/program.h"
+#include "gpu/stages.h"
+#include "gpu/volumes.h"
+
+namespace voxgi::gpu {
+
+void light_voxels(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+  context.makeCurrent();
+  const Gl& gl = context.gl();
+  checkStageMemory(ctx, "light_voxels", 2.0);
+  const int n = ctx.scene.grid.resolution;
+  const auto lights = voxelLights(ctx.scene);
+  const auto emission = buffers.find("emission");
+  const bool emissive = emission != buffers.end();
+  const shared::LightVoxelsParams params =
+      lightVoxelsParams(ctx, static_cast<int>(lights.size()), emissive);
+
+  std::vector<std::byte> block(sizeof params + lights.size() * sizeof(shared::LightData));
+  std::memcpy(block.data(), &params, sizeof params);
+  if (!lights.empty())
+    std::memcpy(block.data() + sizeof params, lights.data(), lights.size() * sizeof lights[0]);
+  GlBuffer lightBlock(gl, createBuffer(gl, block.size(), block.data()));
+  GlTexture opacity(gl, uploadVolume(gl, buffers.at("opacity")));
+  GlTexture albedo(gl, uploadVolume(gl, buffers.at("albedo")));
+  GlTexture normal(gl, uploadVolume(gl, buffers.at("normal")));
+  GlTexture emissionTexture(gl, emissive ? uploadVolume(gl, emission->second) : 0);
+  GlTexture radiance(gl, createVolume(gl, 4, glm::ivec3(n)));
+
+  Program program(gl, {"light_voxels.comp"});
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, lightBlock.get());
+  gl.BindTextureUnit(0, opacity.get());
+  gl.BindTextureUnit(1, albedo.get());
+  gl.BindTextureUnit(2, normal.get());
+  gl.BindTextureUnit(3, emissionTexture.get());
+  gl.BindImageTexture(0, radiance.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  program.use();
+  const auto groups = static_cast<GLuint>((n + 3) / 4);
+  gl.DispatchCompute(groups, groups, groups);
+  gl.MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  gl.check("light_voxels: dispatch");
+
+  Buffer out(bufferSpec("light_voxels", "radiance"), glm::ivec3(n));
+  readVolume(gl, radiance.get(), 0, glm::ivec3(n), out);
+  gl.check("light_voxels: reading back");
+  buffers["radiance"] = std::move(out);
+}
+
+}  // namespace voxgi::gpu

@@ -1,0 +1,72 @@
+#include "gpu/volumes.h"
+
+#include "common/mips.h"
+
+namespace voxgi::gpu {
+namespace {
+
+GLenum pixelFormat(int components) {
+  constexpr GLenum formats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
+  return formats[components - 1];
+}
+
+}  // namespace
+
+GLenum floatFormat(int components) {
+  constexpr GLenum formats[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
+  return formats[components - 1];
+}
+
+GLuint createVolume(const Gl& gl, int components, glm::ivec3 size, int levels) {
+  GLuint texture = 0;
+  gl.CreateTextures(GL_TEXTURE_3D, 1, &texture);
+  gl.TextureStorage3D(texture, levels, floatFormat(components), size.x, size.y, size.z);
+  return texture;
+}
+
+GLuint uploadVolume(const Gl& gl, const Buffer& b) {
+  const GLuint texture = createVolume(gl, b.components(), b.extent);
+  gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  gl.TextureSubImage3D(texture, 0, 0, 0, 0, b.extent.x, b.extent.y, b.extent.z,
+                       pixelFormat(b.components()), GL_FLOAT, b.words.data());
+  return texture;
+}
+
+void readVolume(const Gl& gl, GLuint texture, int level, glm::ivec3 size, Buffer& out,
+                size_t offset) {
+  gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
+  const size_t words = size_t(size.x) * size_t(size.y) * size_t(size.z) * size_t(out.components());
+  gl.GetTextureImage(texture, level, pixelFormat(out.components()), GL_FLOAT,
+                     static_cast<GLsizei>(words * 4),
+                     out.words.data() + offset * size_t(out.components()));
+}
+
+GLuint createPyramid(const Gl& gl, int resolution, int faces) {
+  const int half = resolution / 2;
+  return createVolume(gl, 4, {faces * half, half, half}, mipLevelCount(resolution));
+}
+
+GLuint uploadPyramid(const Gl& gl, const Buffer& b, int resolution, int faces) {
+  const GLuint texture = createPyramid(gl, resolution, faces);
+  gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  for (int level = 1; level <= mipLevelCount(resolution); ++level) {
+    const int s = resolution >> level;
+    gl.TextureSubImage3D(
+        texture, level - 1, 0, 0, 0, faces * s, s, s, pixelFormat(b.components()), GL_FLOAT,
+        b.words.data() + mipLevelOffset(resolution, level, faces) * size_t(b.components()));
+  }
+  return texture;
+}
+
+Buffer readPyramid(const Gl& gl, GLuint texture, const BufferSpec& spec, int resolution,
+                   int faces) {
+  Buffer out(spec, shapeExtent(spec.shape, resolution, {}));
+  for (int level = 1; level <= mipLevelCount(resolution); ++level) {
+    const int s = resolution >> level;
+    readVolume(gl, texture, level - 1, {faces * s, s, s}, out,
+               mipLevelOffset(resolution, level, faces));
+  }
+  return out;
+}
+
+}  // namespace voxgi::gpu

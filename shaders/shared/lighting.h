@@ -1,0 +1,62 @@
+// Analytic lights shared by light_voxels (per voxel) and compose (per pixel): the std430 light
+// record and the irradiance a light delivers at a point, with seed 000 §2.1.5's falloff models.
+// Same semantics as the path tracer (validation/path_trace.cpp): hard spot cut-off at half the
+// spot angle, falloff on world-space distance.
+#ifndef VOXGI_LIGHTING_H
+#define VOXGI_LIGHTING_H
+#include "vector_math.h"
+
+VOXGI_NAMESPACE_BEGIN
+
+const uint kLightPoint = 0u;
+const uint kLightSpot = 1u;
+const uint kLightDirectional = 2u;
+
+// One light in voxel-local coordinates (common/lights.cpp builds them). 64 bytes, std430.
+struct LightData {
+  vec4 position;   // xyz: voxel-local position (point, spot)
+  vec4 direction;  // xyz: unit direction the light travels (spot axis, directional); w: cos(half spot angle)
+  vec4 intensity;  // rgb: W/sr (point, spot) or irradiance (directional)
+  vec4 falloff;    // xyz: constant, linear, quadratic (world units); w: 1 polynomial, 0 inverse square
+  uvec4 info;      // x: kLight*; y: 1 if it casts shadows; z: shadow slot (compose); w: 0
+};
+
+// Irradiance on a plane facing the light at p (voxel-local), without the cosine. `toLight` gets
+// the unit direction toward the light and `distance` the distance in voxels (1e30 for a
+// directional light). `voxelSize` converts voxels to world units for the falloff.
+VOXGI_FN vec3 lightIrradiance(LightData l, vec3 p, float voxelSize, OUT(vec3) toLight,
+                              OUT(float) distance) {
+  if (l.info.x == kLightDirectional) {
+    toLight = -vec3(l.direction);
+    distance = 1e30f;
+    return vec3(l.intensity);
+  }
+  precise vec3 d = vec3(l.position) - p;
+  distance = length3(d);
+  if (distance == 0.0f) {
+    toLight = vec3(0.0f);
+    return vec3(0.0f);
+  }
+  toLight = d / distance;
+  if (l.info.x == kLightSpot && dot3(-toLight, vec3(l.direction)) < l.direction.w) return vec3(0.0f);
+  precise float r = distance * voxelSize;
+  precise float att = l.falloff.w == 0.0f
+                          ? 1.0f / (r * r)
+                          : 1.0f / ((l.falloff.x + l.falloff.y * r) + l.falloff.z * (r * r));
+  precise vec3 e = vec3(l.intensity) * att;
+  return e;
+}
+
+// Villegas' normal-weighted attenuation (seed 001 §2.1): per-face cosines D = (l.x, l.y, l.z),
+// each taken on the side the normal points to, weighted by W = n^2. Equals max(n.l, 0) when n is
+// an axis; is positive wherever a face of the voxel the normal leans toward sees the light.
+VOXGI_FN float normalWeightedAttenuation(vec3 n, vec3 l) {
+  precise vec3 w = n * n;
+  precise vec3 d = vec3(n.x > 0.0f ? max(l.x, 0.0f) : max(-l.x, 0.0f),
+                        n.y > 0.0f ? max(l.y, 0.0f) : max(-l.y, 0.0f),
+                        n.z > 0.0f ? max(l.z, 0.0f) : max(-l.z, 0.0f));
+  return dot3(w, d);
+}
+
+VOXGI_NAMESPACE_END
+#endif

@@ -1,0 +1,55 @@
+// Every stage after voxelize, GPU against the CPU reference (each fed the CPU's inputs), on the
+// bundled scenes with each preset, on both GL platforms. Registered comparisons decide.
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "common/scene_load.h"
+#include "tests/gl_contexts.h"
+#include "tests/test_scenes.h"
+#include "validation/diff.h"
+#include "validation/report.h"
+
+namespace voxgi::test {
+namespace {
+
+struct Case {
+  const char* scene;
+  const char* preset;
+  gpu::GlPlatform platform;
+};
+
+class GpuStages : public testing::TestWithParam<Case> {};
+
+TEST_P(GpuStages, AgreeWithCpu) {
+  const Case& c = GetParam();
+  Scene scene = loadScene(sourcePath(c.scene));
+  scene.grid.resolution = 32;
+  scene.camera.width = scene.camera.height = 64;
+  Settings settings;
+  applyPreset(settings, c.preset);
+  std::vector<std::string> stages;
+  for (const StageSpec& s : stageSpecs())
+    if (s.name != "voxelize") stages.emplace_back(s.name);
+  const auto reports = validation::diffStages(scene, settings, glContext(c.platform), stages, "");
+  std::ostringstream table;
+  validation::printReport(table, reports);
+  for (const auto& r : reports) EXPECT_TRUE(r.pass) << r.stage << "\n" << table.str();
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, GpuStages,
+    testing::Values(Case{"scenes/cornell_box.json", "default", gpu::GlPlatform::egl},
+                    Case{"scenes/bunny.json", "default", gpu::GlPlatform::egl},
+                    Case{"scenes/bunny.json", "villegas2017", gpu::GlPlatform::egl},
+                    Case{"scenes/bunny.json", "kahl2019", gpu::GlPlatform::osmesa},
+                    Case{"scenes/cornell_box.json", "villegas2017", gpu::GlPlatform::osmesa}),
+    [](const testing::TestParamInfo<Case>& p) {
+      std::string name = std::string(p.param.scene).substr(7);
+      name = name.substr(0, name.find('.')) + "_" + p.param.preset + "_" +
+             (p.param.platform == gpu::GlPlatform::egl ? "egl" : "osmesa");
+      return name;
+    });
+
+}  // namespace
+}  // namespace voxgi::test

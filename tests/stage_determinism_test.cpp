@@ -1,0 +1,31 @@
+// Every CPU stage is bit-identical for any thread count and run (DESIGN.md determinism policy).
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include "common/scene_load.h"
+#include "tests/test_scenes.h"
+
+namespace voxgi::test {
+namespace {
+
+TEST(StageDeterminism, AllStagesBitIdenticalOn1_2_8Threads) {
+  Scene scene = loadScene(sourcePath("scenes/bunny.json"));
+  scene.grid.resolution = 32;
+  scene.camera.width = scene.camera.height = 48;
+  Settings settings;
+  applyPreset(settings, "villegas2017");  // soft voxel shadows: the longest marches
+  const std::string last(stageSpecs().back().name);
+  uint64_t reference = 0;
+  for (int threads : {1, 2, 8}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    tbb::task_arena arena(threads);
+    const uint64_t h =
+        arena.execute([&] { return hashBuffers(runCpuUntil(scene, settings, last)); });
+    if (threads == 1) reference = h;
+    EXPECT_EQ(h, reference) << threads << " threads";
+  }
+}
+
+}  // namespace
+}  // namespace voxgi::test
