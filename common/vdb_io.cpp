@@ -3,33 +3,73 @@
 #include <openvdb/openvdb.h>
 
 #include "common/error.h"
+#include "common/mips.h"
 
 namespace voxgi {
 namespace {
 
-openvdb::math::Transform::Ptr gridTransform(const GridSpec& grid) {
-  const double h = grid.voxelSize();
+// Voxel (i,j,k) of a level-`level` grid (voxel size h*2^level) centred in world space.
+openvdb::math::Transform::Ptr gridTransform(const GridSpec& grid, int level = 0) {
+  const double h = grid.voxelSize() * double(1 << level);
   auto t = openvdb::math::Transform::createLinearTransform(h);
   const glm::dvec3 origin = grid.min + glm::dvec3(0.5 * h);
   t->postTranslate(openvdb::Vec3d(origin.x, origin.y, origin.z));
   return t;
 }
 
+// A size^3 block of a buffer: element of (i,j,k) = first + i + rowWidth * (j + size * k).
+struct Block {
+  size_t first;
+  int size;
+  size_t rowWidth;
+  size_t element(int i, int j, int k) const {
+    return first + size_t(i) + rowWidth * (size_t(j) + size_t(size) * size_t(k));
+  }
+};
+
 template <class GridT, class Convert>
-openvdb::GridBase::Ptr makeGrid(const Buffer& b, const GridSpec& grid, Convert convert) {
+openvdb::GridBase::Ptr makeGrid(const Buffer& b, const Block& block, Convert convert) {
   auto g = GridT::create();
   auto acc = g->getAccessor();
-  const int n = grid.resolution;
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const size_t e = grid.index({i, j, k});
+  for (int k = 0; k < block.size; ++k)
+    for (int j = 0; j < block.size; ++j)
+      for (int i = 0; i < block.size; ++i) {
+        const size_t e = block.element(i, j, k);
         bool nonzero = false;
         for (int c = 0; c < b.components(); ++c)
           nonzero |= b.words[e * size_t(b.components()) + size_t(c)] != 0u;
         if (nonzero) acc.setValue(openvdb::Coord(i, j, k), convert(b, e));
       }
   return g;
+}
+
+// The grids of one block: a scalar or vector grid named `name`; 4-component buffers give the
+// rgb vector grid and `name`_alpha.
+openvdb::GridPtrVec blockGrids(const Buffer& b, const Block& block, const std::string& name) {
+  openvdb::GridPtrVec out;
+  const int comps = b.components();
+  const bool f32 = b.spec->type == ScalarType::f32;
+  if (comps >= 3 && f32)
+    out.push_back(makeGrid<openvdb::Vec3SGrid>(b, block, [](const Buffer& x, size_t e) {
+      return openvdb::Vec3s(x.get<float>(e, 0), x.get<float>(e, 1), x.get<float>(e, 2));
+    }));
+  else if (comps == 3)  // integers keep their bits: u32 is stored bit-cast as int32
+    out.push_back(makeGrid<openvdb::Vec3IGrid>(b, block, [](const Buffer& x, size_t e) {
+      return openvdb::Vec3i(x.get<int32_t>(e, 0), x.get<int32_t>(e, 1), x.get<int32_t>(e, 2));
+    }));
+  else if (f32)
+    out.push_back(makeGrid<openvdb::FloatGrid>(
+        b, block, [](const Buffer& x, size_t e) { return x.get<float>(e, 0); }));
+  else
+    out.push_back(makeGrid<openvdb::Int32Grid>(
+        b, block, [](const Buffer& x, size_t e) { return x.get<int32_t>(e, 0); }));
+  out.back()->setName(name);
+  if (comps == 4) {
+    out.push_back(makeGrid<openvdb::FloatGrid>(
+        b, block, [](const Buffer& x, size_t e) { return x.get<float>(e, 3); }));
+    out.back()->setName(name + "_alpha");
+  }
+  return out;
 }
 
 template <class GridT, class Store>
@@ -50,38 +90,42 @@ void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers
               const GridSpec& grid, const std::map<std::string, std::string>& metadata) {
   openvdb::initialize();
   openvdb::GridPtrVec grids;
+  const int n = grid.resolution;
+  static const char* const kFaceNames[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
   for (const Buffer* b : buffers) {
-    openvdb::GridBase::Ptr g;
-    const bool vec = b->components() == 3;
-    if (b->spec->type == ScalarType::f32) {
-      if (vec)
-        g = makeGrid<openvdb::Vec3SGrid>(*b, grid, [](const Buffer& x, size_t e) {
-          return openvdb::Vec3s(x.get<float>(e, 0), x.get<float>(e, 1), x.get<float>(e, 2));
-        });
-      else
-        g = makeGrid<openvdb::FloatGrid>(
-            *b, grid, [](const Buffer& x, size_t e) { return x.get<float>(e, 0); });
-    } else {  // integers keep their bits: u32 is stored bit-cast as int32
-      if (vec)
-        g = makeGrid<openvdb::Vec3IGrid>(*b, grid, [](const Buffer& x, size_t e) {
-          return openvdb::Vec3i(x.get<int32_t>(e, 0), x.get<int32_t>(e, 1), x.get<int32_t>(e, 2));
-        });
-      else
-        g = makeGrid<openvdb::Int32Grid>(
-            *b, grid, [](const Buffer& x, size_t e) { return x.get<int32_t>(e, 0); });
+    const std::string name(b->spec->name);
+    // (grids, pyramid level) per block of the buffer
+    std::vector<std::pair<openvdb::GridPtrVec, int>> blocks;
+    if (b->spec->shape == BufferShape::volume) {
+      blocks.emplace_back(blockGrids(*b, {0, n, size_t(n)}, name), 0);
+    } else if (b->spec->shape != BufferShape::image) {
+      const int faces = b->spec->shape == BufferShape::mips6 ? 6 : 1;
+      for (int level = 1; level <= mipLevelCount(n); ++level) {
+        const int s = n >> level;
+        for (int f = 0; f < faces; ++f) {
+          const std::string face = faces == 6 ? std::string("_") + kFaceNames[f] : "";
+          const Block block{mipLevelOffset(n, level, faces) + size_t(f * s), s, size_t(faces * s)};
+          blocks.emplace_back(blockGrids(*b, block, name + face + "_L" + std::to_string(level)),
+                              level);
+        }
+      }
     }
-    g->setName(std::string(b->spec->name));
-    g->setTransform(gridTransform(grid));
-    if (b->spec->name == "opacity") g->setGridClass(openvdb::GRID_FOG_VOLUME);
-    if (b->spec->name == "normal") g->setVectorType(openvdb::VEC_COVARIANT);
-    g->insertMeta("voxgi_stage", openvdb::StringMetadata(std::string(b->spec->stage)));
-    g->insertMeta("voxgi_type", openvdb::StringMetadata(scalarTypeName(b->spec->type)));
-    g->insertMeta("voxgi_grid_min",
-                  openvdb::Vec3DMetadata(openvdb::Vec3d(grid.min.x, grid.min.y, grid.min.z)));
-    g->insertMeta("voxgi_grid_size", openvdb::DoubleMetadata(grid.size));
-    g->insertMeta("voxgi_resolution", openvdb::Int32Metadata(grid.resolution));
-    for (const auto& [key, value] : metadata) g->insertMeta(key, openvdb::StringMetadata(value));
-    grids.push_back(g);
+    for (auto& [levelGrids, level] : blocks)
+      for (const auto& g : levelGrids) {
+        g->setTransform(gridTransform(grid, level));
+        if (name == "opacity") g->setGridClass(openvdb::GRID_FOG_VOLUME);
+        if (name == "normal") g->setVectorType(openvdb::VEC_COVARIANT);
+        g->insertMeta("voxgi_stage", openvdb::StringMetadata(std::string(b->spec->stage)));
+        g->insertMeta("voxgi_type", openvdb::StringMetadata(scalarTypeName(b->spec->type)));
+        g->insertMeta("voxgi_level", openvdb::Int32Metadata(level));
+        g->insertMeta("voxgi_grid_min",
+                      openvdb::Vec3DMetadata(openvdb::Vec3d(grid.min.x, grid.min.y, grid.min.z)));
+        g->insertMeta("voxgi_grid_size", openvdb::DoubleMetadata(grid.size));
+        g->insertMeta("voxgi_resolution", openvdb::Int32Metadata(grid.resolution));
+        for (const auto& [key, value] : metadata)
+          g->insertMeta(key, openvdb::StringMetadata(value));
+        grids.push_back(g);
+      }
   }
   try {
     openvdb::io::File file(path);

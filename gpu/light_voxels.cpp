@@ -12,9 +12,7 @@
 namespace voxgi::gpu {
 
 void light_voxels(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
-  context.makeCurrent();
-  const Gl& gl = context.gl();
-  checkStageMemory(ctx, "light_voxels", 2.0);
+  const Gl& gl = beginStage(context, ctx, "light_voxels");
   const int n = ctx.scene.grid.resolution;
   const auto lights = voxelLights(ctx.scene);
   const auto emission = buffers.find("emission");

@@ -12,6 +12,12 @@ GLenum pixelFormat(int components) {
 
 }  // namespace
 
+const Gl& beginStage(GlContext& context, const StageContext& ctx, std::string_view stage) {
+  context.makeCurrent();
+  checkStageMemory(ctx, stage, 2.0);
+  return context.gl();
+}
+
 GLenum floatFormat(int components) {
   constexpr GLenum formats[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
   return formats[components - 1];

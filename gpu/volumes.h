@@ -5,9 +5,15 @@
 #pragma once
 
 #include "common/buffer.h"
+#include "common/stage.h"
+#include "gpu/context.h"
 #include "gpu/gl.h"
 
 namespace voxgi::gpu {
+
+// Makes the context current and checks memory for the stage's buffers twice over (GL copies plus
+// the read-back); returns the function table.
+const Gl& beginStage(GlContext& context, const StageContext& ctx, std::string_view stage);
 
 // Float internal format for 1, 2, 3 or 4 components (R32F ... RGBA32F).
 GLenum floatFormat(int components);

@@ -1,5 +1,6 @@
 #include "validation/report.h"
 
+#include <algorithm>
 #include <iomanip>
 
 #include <nlohmann/json.hpp>
@@ -41,13 +42,20 @@ void printReport(std::ostream& out, const std::vector<StageReport>& reports) {
   for (const StageReport& s : reports) {
     out << "stage " << s.stage << ": " << (s.pass ? "PASS" : "FAIL") << "  (cpu " << std::fixed
         << std::setprecision(3) << s.cpuSeconds << " s, gpu " << s.gpuSeconds << " s)\n";
-    out << "  " << std::left << std::setw(14) << "buffer" << std::setw(12) << "metric" << std::right
-        << std::setw(12) << "max |diff|" << std::setw(9) << "max ULP" << std::setw(11)
-        << "differing" << std::setw(11) << "fraction" << std::setw(7) << "ties" << std::setw(10)
-        << "non-ties"
+    // Columns as wide as the longest buffer name and metric.
+    int nameWidth = 8, metricWidth = 8;
+    for (const BufferReport& b : s.buffers) {
+      nameWidth = std::max(nameWidth, int(b.buffer.size()) + 2);
+      metricWidth = std::max(metricWidth, int(b.metric.size()) + 2);
+    }
+    out << "  " << std::left << std::setw(nameWidth) << "buffer" << std::setw(metricWidth)
+        << "metric" << std::right << std::setw(12) << "max |diff|" << std::setw(9) << "max ULP"
+        << std::setw(11) << "differing" << std::setw(11) << "fraction" << std::setw(7) << "ties"
+        << std::setw(10) << "non-ties"
         << "  result\n";
     for (const BufferReport& b : s.buffers) {
-      out << "  " << std::left << std::setw(14) << b.buffer << std::setw(12) << b.metric;
+      out << "  " << std::left << std::setw(nameWidth) << b.buffer << std::setw(metricWidth)
+          << b.metric;
       if (b.status != "compared") {
         out << b.status << (b.pass ? "" : "  FAIL") << "\n";
         continue;
