@@ -86,4 +86,16 @@ void Program::set(const char* name, float value) const {
   gl_.ProgramUniform1f(id_, location(name), value);
 }
 
+void Program::set(const char* name, glm::vec2 value) const {
+  gl_.ProgramUniform2f(id_, location(name), value.x, value.y);
+}
+
+void Program::set(const char* name, glm::vec3 value) const {
+  gl_.ProgramUniform3f(id_, location(name), value.x, value.y, value.z);
+}
+
+void Program::set(const char* name, const glm::mat4& value) const {
+  gl_.ProgramUniformMatrix4fv(id_, location(name), 1, GL_FALSE, &value[0][0]);
+}
+
 }  // namespace voxgi::gpu

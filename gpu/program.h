@@ -6,6 +6,8 @@
 #include <string>
 #include <string_view>
 
+#include <glm/glm.hpp>
+
 #include "gpu/gl.h"
 
 namespace voxgi::gpu {
@@ -29,6 +31,9 @@ class Program {
   void set(const char* name, int value) const;
   void set(const char* name, unsigned value) const;
   void set(const char* name, float value) const;
+  void set(const char* name, glm::vec2 value) const;
+  void set(const char* name, glm::vec3 value) const;
+  void set(const char* name, const glm::mat4& value) const;
 
  private:
   GLint location(const char* name) const;

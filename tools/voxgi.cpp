@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 #include <tbb/global_control.h>
 
+#include "common/buffer_io.h"
 #include "common/error.h"
 #include "common/image_io.h"
 #include "common/scene_load.h"
@@ -154,9 +155,9 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
   BufferSet buffers;
   runStages(scene, settings, backend, stage, buffers);
   std::filesystem::create_directories(dir);
-  const std::string path = dir + "/" + stage + ".vdb";
-  writeVdb(path, buffersOf(buffers, stage, true), scene.grid);
-  std::cout << "wrote " << path << "\n";
+  for (const std::string& path :
+       writeBuffers(dir + "/" + stage, buffersOf(buffers, stage, true), scene.grid))
+    std::cout << "wrote " << path << "\n";
   return kExitOk;
 }
 

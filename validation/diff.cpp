@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <limits>
 
-#include "common/vdb_io.h"
+#include "common/buffer_io.h"
 #include "cpu/stages.h"
 #include "gpu/stages.h"
 #include "validation/comparisons.h"
@@ -38,8 +38,10 @@ const StageFunctions kStageFunctions[] = {
 };
 #undef VOXGI_STAGE
 
-TieClassifier classifierFor(std::string_view stage, const StageContext& ctx) {
+TieClassifier classifierFor(std::string_view stage, const StageContext& ctx, const BufferSet& cpu,
+                            const BufferSet& gpu) {
   if (stage == "voxelize") return voxelizeTies(ctx);
+  if (stage == "gbuffer") return gbufferTies(cpu, gpu);
   return {};
 }
 
@@ -57,13 +59,6 @@ void dump(const std::string& dir, const StageReport& report, const BufferSet& cp
   for (const BufferSpec* spec : stageBuffers(report.stage))
     diffSpecs.push_back({spec->stage, spec->name, ScalarType::f32, spec->components, spec->shape,
                          spec->need, spec->meaning});
-  static constexpr BufferSpec kClassSpec{"",
-                                         "classification",
-                                         ScalarType::i32,
-                                         1,
-                                         BufferShape::volume,
-                                         BufferNeed::always,
-                                         "0 agree, 1 tie, 2 not a tie"};
   std::vector<Buffer> diffs;
   diffs.reserve(diffSpecs.size());
   for (const BufferSpec& spec : diffSpecs) {
@@ -78,13 +73,25 @@ void dump(const std::string& dir, const StageReport& report, const BufferSet& cp
     diffs.push_back(std::move(d));
   }
   for (const Buffer& d : diffs) diffList.push_back(&d);
-  Buffer classes(kClassSpec, glm::ivec3(grid.resolution));
-  for (const auto& [element, kind] : report.outside)
-    if (element < classes.elementCount()) classes.set<int32_t>(element, 0, int32_t(kind));
-  diffList.push_back(&classes);
-  writeVdb(prefix + "_cpu.vdb", cpuList, grid, {{"voxgi_backend", "cpu"}});
-  writeVdb(prefix + "_gpu.vdb", gpuList, grid, {{"voxgi_backend", "gpu"}});
-  writeVdb(prefix + "_diff.vdb", diffList, grid, {{"voxgi_backend", "gpu minus cpu"}});
+  // Per element of the stage (all its buffers share one shape and extent).
+  BufferSpec classSpec{"",
+                       "classification",
+                       ScalarType::i32,
+                       1,
+                       BufferShape::volume,
+                       BufferNeed::always,
+                       "0 agree, 1 tie, 2 not a tie"};
+  Buffer classes;
+  if (!cpuList.empty()) {
+    classSpec.shape = cpuList[0]->spec->shape;
+    classes = Buffer(classSpec, cpuList[0]->extent);
+    for (const auto& [element, kind] : report.outside)
+      if (element < classes.elementCount()) classes.set<int32_t>(element, 0, int32_t(kind));
+    diffList.push_back(&classes);
+  }
+  writeBuffers(prefix + "_cpu", cpuList, grid, {{"voxgi_backend", "cpu"}});
+  writeBuffers(prefix + "_gpu", gpuList, grid, {{"voxgi_backend", "gpu"}});
+  writeBuffers(prefix + "_diff", diffList, grid, {{"voxgi_backend", "gpu minus cpu"}});
 }
 
 }  // namespace
@@ -192,7 +199,7 @@ std::vector<StageReport> diffStages(const Scene& scene, const Settings& settings
       start = std::chrono::steady_clock::now();
       stage.gpu(context, ctx, gpuOut);
       const double gpuSeconds = seconds(start);
-      const TieClassifier classify = classifierFor(stage.name, ctx);
+      const TieClassifier classify = classifierFor(stage.name, ctx, cpuOut, gpuOut);
       StageReport report = compareStage(stage.name, cpuOut, gpuOut, classify);
       report.cpuSeconds = cpuSeconds;
       report.gpuSeconds = gpuSeconds;

@@ -59,5 +59,9 @@ std::vector<StageReport> diffStages(const Scene& scene, const Settings& settings
 
 // The voxelize stage's tie classifier (validation/voxelize_ties.cpp).
 TieClassifier voxelizeTies(const StageContext& ctx);
+// The gbuffer stage's: a pixel whose backends saw different triangles is a tie if, in the CPU
+// image, it lies on a triangle edge (a 4-neighbour sees another triangle or the background).
+// The buffers must outlive the classifier.
+TieClassifier gbufferTies(const BufferSet& cpu, const BufferSet& gpu);
 
 }  // namespace voxgi::validation

@@ -49,7 +49,7 @@ void printReport(std::ostream& out, const std::vector<StageReport>& reports) {
       metricWidth = std::max(metricWidth, int(b.metric.size()) + 2);
     }
     out << "  " << std::left << std::setw(nameWidth) << "buffer" << std::setw(metricWidth)
-        << "metric" << std::right << std::setw(12) << "max |diff|" << std::setw(9) << "max ULP"
+        << "metric" << std::right << std::setw(12) << "max |diff|" << std::setw(12) << "max ULP"
         << std::setw(11) << "differing" << std::setw(11) << "fraction" << std::setw(7) << "ties"
         << std::setw(10) << "non-ties"
         << "  result\n";
@@ -61,7 +61,7 @@ void printReport(std::ostream& out, const std::vector<StageReport>& reports) {
         continue;
       }
       out << std::right << std::setw(12) << std::setprecision(3) << std::scientific << b.maxAbsDiff
-          << std::fixed << std::setprecision(0) << std::setw(9) << b.maxUlp << std::setw(11)
+          << std::fixed << std::setprecision(0) << std::setw(12) << b.maxUlp << std::setw(11)
           << b.differing << std::setw(11) << std::setprecision(6) << b.fraction << std::setw(7)
           << b.ties << std::setw(10) << b.nonTies + b.unclassified << "  "
           << (b.pass ? "pass" : "FAIL") << "\n";

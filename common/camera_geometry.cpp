@@ -1,0 +1,67 @@
+#include "common/camera_geometry.h"
+
+#include <cmath>
+
+#include "shaders/shared/camera.h"
+
+namespace voxgi {
+
+glm::vec3 CameraRays::pixelDirection(int x, int y) const {
+  return shared::pixelDirection(forward, right, up, tanHalfFov, aspect,
+                                {float(x) + 0.5f, float(y) + 0.5f}, {float(width), float(height)});
+}
+
+glm::mat4 CameraRays::viewProjection(float nearPlane, float farPlane) const {
+  // Rows of the view matrix are the camera axes; the camera looks down -z.
+  glm::mat4 view(1.0f);
+  for (int i = 0; i < 3; ++i) {
+    view[i][0] = right[i];
+    view[i][1] = up[i];
+    view[i][2] = -forward[i];
+  }
+  view[3] =
+      glm::vec4(-glm::dot(right, origin), -glm::dot(up, origin), glm::dot(forward, origin), 1.0f);
+  glm::mat4 proj(0.0f);
+  proj[0][0] = 1.0f / (tanHalfFov * aspect);
+  proj[1][1] = -1.0f / tanHalfFov;  // flipped: GL row 0 is the image's top row
+  proj[2][2] = -(farPlane + nearPlane) / (farPlane - nearPlane);
+  proj[2][3] = -1.0f;
+  proj[3][2] = -2.0f * farPlane * nearPlane / (farPlane - nearPlane);
+  return proj * view;
+}
+
+CameraGeometry prepareCameraGeometry(const Scene& scene) {
+  CameraGeometry g;
+  const Camera& cam = scene.camera;
+  const GridSpec& grid = scene.grid;
+  const glm::dvec3 forward = glm::normalize(cam.lookAt - cam.position);
+  const glm::dvec3 right = glm::normalize(glm::cross(forward, cam.up));
+  g.camera.origin = glm::vec3(grid.toVoxel(cam.position));
+  g.camera.forward = glm::vec3(forward);
+  g.camera.right = glm::vec3(right);
+  g.camera.up = glm::vec3(glm::cross(right, forward));
+  g.camera.tanHalfFov = static_cast<float>(std::tan(cam.fovYDeg * 3.14159265358979323846 / 360.0));
+  g.camera.width = cam.width;
+  g.camera.height = cam.height;
+  g.camera.aspect = float(cam.width) / float(cam.height);
+  double farthest = 1.0;
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
+    for (const glm::uvec3& t : mesh.triangles) {
+      const glm::dvec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
+      const glm::dvec3 n = glm::cross(b - a, c - a);
+      const double len = glm::length(n);
+      g.triangles.push_back({glm::vec4(len > 0.0 ? glm::vec3(n / len) : glm::vec3(0.0f), 0.0f),
+                             glm::uvec4(uint32_t(m) + 1u, mesh.material, 0u, 0u)});
+      for (const glm::dvec3& p : {a, b, c}) {
+        const glm::dvec3 v = grid.toVoxel(p);
+        g.vertices.emplace_back(v);
+        farthest = std::max(farthest, glm::length(v - glm::dvec3(g.camera.origin)));
+      }
+    }
+  }
+  g.farPlane = static_cast<float>(2.0 * farthest);
+  return g;
+}
+
+}  // namespace voxgi

@@ -1,0 +1,39 @@
+// What the gbuffer stage needs on both backends, prepared once: the camera and the scene's
+// triangles in voxel-local coordinates (the space every later stage works in), with per-triangle
+// unit normals and material indices.
+#pragma once
+
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "common/scene.h"
+
+namespace voxgi {
+
+struct CameraRays {
+  glm::vec3 origin, forward, right, up;  // voxel-local; right/up unit
+  float tanHalfFov = 0.0f, aspect = 1.0f;
+  int width = 0, height = 0;
+  // Unnormalised direction through pixel (x, y)'s centre, row 0 at the top (as the path tracer).
+  glm::vec3 pixelDirection(int x, int y) const;
+  // OpenGL view-projection with depth range [near, far] in voxels and y flipped, so that GL
+  // framebuffer row 0 is image row 0 and pixel centres coincide with pixelDirection's.
+  glm::mat4 viewProjection(float nearPlane, float farPlane) const;
+};
+
+struct SurfaceTriangle {
+  glm::vec4 normal;  // xyz: unit normal (right-handed winding), 0 if degenerate
+  glm::uvec4 info;   // x: object id (mesh index + 1), y: material index
+};
+
+struct CameraGeometry {
+  CameraRays camera;
+  std::vector<glm::vec3> vertices;         // 3 per triangle, voxel-local
+  std::vector<SurfaceTriangle> triangles;  // one per triangle
+  float farPlane = 1.0f;                   // beyond every vertex, in voxels
+};
+
+CameraGeometry prepareCameraGeometry(const Scene& scene);
+
+}  // namespace voxgi

@@ -1,0 +1,40 @@
+#version 450 core
+// gbuffer: the visible surface's position, facing normal, material and ids per pixel, with the
+// CPU's camera ray (shaders/shared/camera.h) deciding which side of the triangle faces the viewer.
+#include "shared/camera.h"
+#include "shared/gbuffer_kernel.h"
+
+struct SurfaceTriangle {
+  vec4 normal;  // xyz: unit normal
+  uvec4 info;   // x: object id, y: material index
+};
+layout(std430, binding = 1) readonly buffer Triangles { SurfaceTriangle triangles[]; };
+layout(std430, binding = 2) readonly buffer Materials { MaterialData materials[]; };
+uniform vec3 uForward;
+uniform vec3 uRight;
+uniform vec3 uUp;
+uniform float uTanHalfFov;
+uniform float uAspect;
+uniform vec2 uSize;
+
+in vec3 vPosition;
+layout(location = 0) out vec4 outPosition;
+layout(location = 1) out vec4 outNormal;
+layout(location = 2) out vec4 outAlbedo;
+layout(location = 3) out vec4 outSpecular;
+layout(location = 4) out vec4 outEmission;
+layout(location = 5) out uint outObjectId;
+layout(location = 6) out uint outPrimitiveId;
+
+void main() {
+  SurfaceTriangle t = triangles[gl_PrimitiveID];
+  MaterialData m = materials[t.info.y];
+  vec3 d = pixelDirection(uForward, uRight, uUp, uTanHalfFov, uAspect, gl_FragCoord.xy, uSize);
+  outPosition = vec4(vPosition, 0.0f);
+  outNormal = vec4(facingNormal(t.normal.xyz, d), 0.0f);
+  outAlbedo = m.albedo;
+  outSpecular = m.specular;
+  outEmission = m.emission;
+  outObjectId = t.info.x;
+  outPrimitiveId = uint(gl_PrimitiveID) + 1u;
+}

@@ -1,0 +1,23 @@
+// What a pixel stores about the surface it sees, shared by cpu/gbuffer.cpp (Embree hit) and
+// shaders/gbuffer.frag (rasterized fragment): the normal turned toward the camera and the
+// material's attributes.
+#ifndef VOXGI_GBUFFER_KERNEL_H
+#define VOXGI_GBUFFER_KERNEL_H
+#include "vector_math.h"
+
+VOXGI_NAMESPACE_BEGIN
+
+// One material (std430).
+struct MaterialData {
+  vec4 albedo;    // rgb
+  vec4 specular;  // rgb: specular colour; a: Phong shininess
+  vec4 emission;  // rgb
+};
+
+// The surface normal facing the viewer: `normal` flipped when the camera sees its back.
+VOXGI_FN vec3 facingNormal(vec3 normal, vec3 viewDir) {
+  return dot3(normal, viewDir) > 0.0f ? -normal : normal;
+}
+
+VOXGI_NAMESPACE_END
+#endif
