@@ -61,7 +61,10 @@ TEST(Cli, BadInputExitsTwoWithOneLine) {
            "voxelize /nonexistent.json --out x.vdb",
            "voxelize " + scene + " --resolution 2048 --out x.vdb --backend cpu",
            "voxelize " + scene + " --mode blurry --out x.vdb",
-           "diff " + scene + " --stage nosuchstage"}) {
+           "diff " + scene + " --stage nosuchstage",
+           "dump " + scene + " --stage mip --out x --set cone.beta=9",
+           "dump " + scene + " --stage mip --out x --set no.such.key=1",
+           "dump " + scene + " --stage mip --out x --preset nobody2020"}) {
     const CommandResult r = voxgi(args);
     EXPECT_EQ(r.code, 2) << args << "\n" << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << "\n" << r.output;
@@ -102,4 +105,32 @@ TEST(Cli, DumpWritesEveryBufferOfTheStage) {
 }
 
 }  // namespace
+TEST(Cli, RenderHelpListsEveryParameterWithItsDefault) {
+  const CommandResult r = voxgi("render --help");
+  EXPECT_EQ(r.code, 0);
+  for (const char* key : {"cone.beta = 1", "voxel_shadow.mode = hard", "mip.mode = anisotropic",
+                          "kahl2019:", "villegas2017:"})
+    EXPECT_NE(r.output.find(key), std::string::npos) << key << "\n" << r.output;
+}
+
+TEST(Cli, DumpWritesPyramidsAsVdbAndImagesAsExr) {
+  const std::string dir = testTempDir();
+  const std::string scene = sourcePath("scenes/bunny.json");
+  const CommandResult mip =
+      voxgi("dump " + scene + " --stage mip --resolution 16 --backend cpu --out " + dir);
+  ASSERT_EQ(mip.code, 0) << mip.output;
+  openvdb::initialize();
+  openvdb::io::File file(dir + "/mip.vdb");
+  file.open();
+  std::set<std::string> names;
+  for (auto it = file.beginName(); it != file.endName(); ++it) names.insert(*it);
+  EXPECT_TRUE(names.count("radiance_mips6_+x_L1") && names.count("radiance_mips6_-z_L4") &&
+              names.count("radiance_mips6_+y_L2_alpha"))
+      << names.size();
+  const CommandResult g =
+      voxgi("dump " + scene + " --stage gbuffer --resolution 16 --backend cpu --out " + dir);
+  ASSERT_EQ(g.code, 0) << g.output;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/gbuffer.pixel_normal.exr"));
+}
+
 }  // namespace voxgi::test

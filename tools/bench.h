@@ -1,7 +1,9 @@
-// `voxgi bench voxelize`: wall-clock medians of the voxelize stage, side by side in one run with
-// OpenVDB's tools::meshToVolume on the same mesh and voxel size (docs/benchmarks.md).
+// Benchmarks (docs/benchmarks.md), wall-clock medians measured side by side in one run:
+// `voxgi bench voxelize` against OpenVDB's tools::meshToVolume on the same mesh and voxel size;
+// `voxgi bench vct` per-stage times of the VCT pipeline, plus mip against a memcpy of its input.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -20,5 +22,24 @@ struct BenchOptions {
 
 void addBenchOptions(CLI::App& cmd, BenchOptions& options);
 int runBenchVoxelize(const BenchOptions& options);
+
+struct BenchVctOptions {
+  std::vector<std::string> scenes{"scenes/cornell_box.json", "scenes/bunny.json"};
+  std::vector<int> resolutions{64, 128, 256};
+  std::vector<int> images{256, 512};
+  std::vector<int> threads{1, 2};
+  int mipResolution = 256;  // 0: skip the mip-vs-memcpy line
+  int repeats = 3;
+  bool gpu = true;
+  std::string preset = "default";
+  std::vector<std::string> sets;
+  std::string json;
+};
+
+void addBenchVctOptions(CLI::App& cmd, BenchVctOptions& options);
+int runBenchVct(const BenchVctOptions& options);
+
+// The median wall-clock time of `repeats` runs of `run`.
+double medianSeconds(int repeats, const std::function<void()>& run);
 
 }  // namespace voxgi::tools

@@ -49,17 +49,6 @@ Mesh bumpySphere(int triangles) {
   return mesh;
 }
 
-double medianSeconds(int repeats, const std::function<void()>& run) {
-  std::vector<double> t;
-  for (int r = 0; r < repeats; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    run();
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
-
 double meshToVolumeSeconds(const Scene& scene, int repeats, float bandWidth) {
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> tris;

@@ -271,6 +271,10 @@ int main(int argc, char** argv) {
       benchCmd->add_subcommand("voxelize", "voxelize: CPU 1/2 threads, GPU, OpenVDB meshToVolume");
   benchCmd->require_subcommand(1);
   tools::addBenchOptions(*benchVoxelize, bench);
+  tools::BenchVctOptions benchVct;
+  auto* benchVctCmd = benchCmd->add_subcommand(
+      "vct", "every stage after voxelize: CPU per thread count, GPU (OSMesa); mip vs memcpy");
+  tools::addBenchVctOptions(*benchVctCmd, benchVct);
 
   try {
     app.parse(argc, argv);
@@ -291,6 +295,7 @@ int main(int argc, char** argv) {
     if (*diff) return cmdDiff(c, stage, json, dumpDir);
     if (*dump) return cmdDump(c, stage, out);
     if (*benchVoxelize) return tools::runBenchVoxelize(bench);
+    if (*benchVctCmd) return tools::runBenchVct(benchVct);
   } catch (const InputError& e) {
     std::cerr << "voxgi: " << e.what() << "\n";
     return kExitBadInput;
