@@ -6,7 +6,6 @@ namespace voxgi {
 
 std::vector<shared::LightData> voxelLights(const Scene& scene) {
   std::vector<shared::LightData> out;
-  uint32_t shadowSlot = 0;
   for (const Light& l : scene.lights) {
     shared::LightData d{};
     d.position = glm::vec4(glm::vec3(scene.grid.toVoxel(l.position)), 1.0f);
@@ -19,8 +18,7 @@ std::vector<shared::LightData> voxelLights(const Scene& scene) {
     const uint32_t type = l.type == Light::Type::point  ? shared::kLightPoint
                           : l.type == Light::Type::spot ? shared::kLightSpot
                                                         : shared::kLightDirectional;
-    d.info = glm::uvec4(type, l.castsShadows ? 1u : 0u, l.castsShadows ? shadowSlot : 0u, 0u);
-    shadowSlot += l.castsShadows ? 1u : 0u;
+    d.info = glm::uvec4(type, l.castsShadows ? 1u : 0u, 0u, 0u);
     out.push_back(d);
   }
   return out;

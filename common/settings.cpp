@@ -50,16 +50,6 @@ Param number(std::string key, T Settings::*field, T lo, T hi, std::string meanin
           }};
 }
 
-Param flag(std::string key, bool Settings::*field, std::string meaning) {
-  return {key, "true|false", std::move(meaning),
-          [field](const Settings& s) { return std::string(s.*field ? "true" : "false"); },
-          [field](Settings& s, const std::string& text) {
-            if (text != "true" && text != "false") return false;
-            s.*field = text == "true";
-            return true;
-          }};
-}
-
 template <class E>
 Param choice(std::string key, E Settings::*field, std::vector<std::string> names,
              std::string meaning) {
@@ -94,35 +84,6 @@ const std::vector<Param>& params() {
              "voxels the shadow ray skips before testing opacity (self-shadowing)"),
       choice("mip.mode", &Settings::mip, {"isotropic", "anisotropic"},
              "one averaged pyramid, or six directional pyramids"),
-      number("bounce.count", &Settings::bounces, 0, 8,
-             "extra diffuse bounces gathered per voxel before the final gather"),
-      choice("cone.diffuse_set", &Settings::diffuseCones, {"villegas6", "kahl5", "equal7"},
-             "diffuse cone set (docs/stages/trace_cones.md)"),
-      choice(
-          "cone.diffuse_mode", &Settings::diffuseMode, {"composite", "first_hit"},
-          "front-to-back compositing, or seed 000's stop at the first sample with opacity > 0.01"),
-      number("cone.beta", &Settings::beta, 0.05f, 4.0f,
-             "step length as a fraction of the cone diameter"),
-      number("cone.start_offset", &Settings::startOffset, 0.0f, 8.0f,
-             "voxels the cone apex is pushed along the surface normal"),
-      number("cone.max_distance", &Settings::maxDistance, 0.0f, 1e6f,
-             "voxels a cone travels at most; 0: until it leaves the grid"),
-      number("cone.specular_min_aperture", &Settings::specularMinAperture, 1e-3f, 1.0f,
-             "radians; the specular cone's aperture for very high shininess"),
-      number("shadow.aperture", &Settings::shadowAperture, 1e-3f, 3.0f,
-             "radians; aperture of the shadow cone toward each light"),
-      choice("shadow.falloff", &Settings::shadowFalloff, {"standard", "kahl2019"},
-             "shadow cone occlusion as sampled, or damped by smoothstep(0, max, sqrt(t)*strength)"),
-      number("shadow.strength", &Settings::shadowStrength, 0.0f, 100.0f,
-             "kahl2019 shadow falloff strength"),
-      choice("specular.model", &Settings::specularModel, {"phong", "kahl2019"},
-             "indirect specular weight: specular colour, or seed 000's light-angle BRDF per light"),
-      number("specular.shininess_falloff", &Settings::shininessFalloff, 0.0f, 64.0f,
-             "kahl2019 specular BRDF exponent q"),
-      flag("ao.enabled", &Settings::ambientOcclusion,
-           "compute ambient occlusion (an extra output)"),
-      number("ao.lambda", &Settings::aoLambda, 0.0f, 100.0f,
-             "AO weight 1/(1 + lambda r), r the cone radius in voxels"),
   };
   return table;
 }
@@ -130,13 +91,11 @@ const std::vector<Param>& params() {
 const std::vector<std::pair<std::string, std::vector<std::string>>>& presets() {
   static const std::vector<std::pair<std::string, std::vector<std::string>>> table{
       {"default", {}},
-      {"kahl2019",
-       {"cone.diffuse_set=kahl5", "cone.diffuse_mode=first_hit", "shadow.falloff=kahl2019",
-        "shadow.aperture=0.5", "specular.model=kahl2019", "mip.mode=isotropic",
-        "voxel_shadow.mode=none"}},
+      // Seed 000: direct light computed while voxelizing (no voxel shadows), glGenerateMipmap.
+      {"kahl2019", {"mip.mode=isotropic", "voxel_shadow.mode=none"}},
+      // Seed 001: normal-weighted attenuation, soft voxel shadows, directional volumes.
       {"villegas2017",
-       {"cone.diffuse_set=villegas6", "light.attenuation=normal_weighted", "voxel_shadow.mode=soft",
-        "mip.mode=anisotropic"}},
+       {"light.attenuation=normal_weighted", "voxel_shadow.mode=soft", "mip.mode=anisotropic"}},
   };
   return table;
 }

@@ -15,8 +15,6 @@ bool bufferNeeded(const BufferSpec& spec, const Scene& scene, const Settings& se
       return settings.mip == MipMode::isotropic;
     case BufferNeed::anisotropic:
       return settings.mip == MipMode::anisotropic;
-    case BufferNeed::ambient_occlusion:
-      return settings.ambientOcclusion;
   }
   return true;
 }

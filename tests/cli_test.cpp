@@ -62,7 +62,7 @@ TEST(Cli, BadInputExitsTwoWithOneLine) {
            "voxelize " + scene + " --resolution 2048 --out x.vdb --backend cpu",
            "voxelize " + scene + " --mode blurry --out x.vdb",
            "diff " + scene + " --stage nosuchstage",
-           "dump " + scene + " --stage mip --out x --set cone.beta=9",
+           "dump " + scene + " --stage mip --out x --set voxel_shadow.kappa=99",
            "dump " + scene + " --stage mip --out x --set no.such.key=1",
            "dump " + scene + " --stage mip --out x --preset nobody2020"}) {
     const CommandResult r = voxgi(args);
@@ -108,8 +108,8 @@ TEST(Cli, DumpWritesEveryBufferOfTheStage) {
 TEST(Cli, RenderHelpListsEveryParameterWithItsDefault) {
   const CommandResult r = voxgi("render --help");
   EXPECT_EQ(r.code, 0);
-  for (const char* key : {"cone.beta = 1", "voxel_shadow.mode = hard", "mip.mode = anisotropic",
-                          "kahl2019:", "villegas2017:"})
+  for (const char* key : {"voxel_shadow.kappa = 1", "voxel_shadow.mode = hard",
+                          "mip.mode = anisotropic", "kahl2019:", "villegas2017:"})
     EXPECT_NE(r.output.find(key), std::string::npos) << key << "\n" << r.output;
 }
 

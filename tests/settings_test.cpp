@@ -19,28 +19,24 @@ void expectRejected(const std::string& assignment, const std::string& mention) {
 
 TEST(Settings, AssignmentsParseAndRangesHold) {
   Settings s;
-  applySetting(s, "cone.beta=0.5", "--set");
-  applySetting(s, "bounce.count=2", "--set");
+  applySetting(s, "voxel_shadow.kappa=0.5", "--set");
   applySetting(s, "mip.mode=isotropic", "--set");
-  applySetting(s, "ao.enabled=true", "--set");
-  EXPECT_EQ(s.beta, 0.5f);
-  EXPECT_EQ(s.bounces, 2);
+  applySetting(s, "voxel_shadow.mode=soft", "--set");
+  EXPECT_EQ(s.voxelShadowKappa, 0.5f);
   EXPECT_EQ(s.mip, MipMode::isotropic);
-  EXPECT_TRUE(s.ambientOcclusion);
-  expectRejected("cone.beta=0", "cone.beta");     // below the range
-  expectRejected("cone.beta=0.5x", "cone.beta");  // trailing junk
-  expectRejected("cone.beta=nan", "cone.beta");   // not finite
-  expectRejected("bounce.count=1.5", "bounce.count");
+  EXPECT_EQ(s.voxelShadow, VoxelShadow::soft);
+  expectRejected("voxel_shadow.offset=0", "voxel_shadow.offset");   // below the range
+  expectRejected("voxel_shadow.kappa=0.5x", "voxel_shadow.kappa");  // trailing junk
+  expectRejected("voxel_shadow.kappa=nan", "voxel_shadow.kappa");   // not finite
   expectRejected("mip.mode=fancy", "isotropic|anisotropic");
   expectRejected("no.such=1", "unknown parameter");
-  expectRejected("cone.beta", "key=value");
+  expectRejected("voxel_shadow.kappa", "key=value");
 }
 
 TEST(Settings, PresetsSetTheirKeysAndListEveryKey) {
   Settings s;
   applyPreset(s, "kahl2019");
-  EXPECT_EQ(s.diffuseCones, DiffuseCones::kahl5);
-  EXPECT_EQ(s.diffuseMode, DiffuseMode::first_hit);
+  EXPECT_EQ(s.voxelShadow, VoxelShadow::none);
   EXPECT_EQ(s.mip, MipMode::isotropic);
   Settings v;
   applyPreset(v, "villegas2017");

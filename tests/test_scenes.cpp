@@ -6,6 +6,7 @@
 
 #include "common/voxel_triangles.h"
 #include "cpu/stages.h"
+#include "validation/stage_functions.h"
 
 namespace voxgi::test {
 
@@ -59,11 +60,10 @@ BufferSet runCpuUntil(const Scene& scene, const Settings& settings, std::string_
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
   const StageContext ctx{scene, settings, tris};
   BufferSet out;
-#define VOXGI_STAGE(stage, summary) \
-  cpu::stage(ctx, out);             \
-  if (last == #stage) return out;
-#include "common/stages.inc"
-#undef VOXGI_STAGE
+  for (const validation::StageFunctions& stage : validation::stageFunctions()) {
+    stage.cpu(ctx, out);
+    if (last == stage.name) return out;
+  }
   ADD_FAILURE() << "no stage " << last;
   return out;
 }

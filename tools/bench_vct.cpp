@@ -17,8 +17,8 @@
 #include "common/scene_load.h"
 #include "common/voxel_triangles.h"
 #include "cpu/stages.h"
-#include "gpu/stages.h"
 #include "tools/bench.h"
+#include "validation/stage_functions.h"
 
 namespace voxgi::tools {
 
@@ -35,23 +35,12 @@ double medianSeconds(int repeats, const std::function<void()>& run) {
 
 namespace {
 
-struct StageRun {
-  std::string_view name;
-  void (*cpu)(const StageContext&, BufferSet&);
-  void (*gpu)(gpu::GlContext&, const StageContext&, BufferSet&);
-};
-#define VOXGI_STAGE(stage, summary) StageRun{#stage, &cpu::stage, &gpu::stage},
-const StageRun kStages[] = {
-#include "common/stages.inc"
-};
-#undef VOXGI_STAGE
-
 // Times each stage on `inputs` (the CPU outputs of the stages before it); returns stage -> s.
 std::vector<std::pair<std::string, double>> timeStages(const StageContext& ctx, int repeats,
                                                        gpu::GlContext* context) {
   std::vector<std::pair<std::string, double>> out;
   BufferSet inputs;
-  for (const StageRun& stage : kStages) {
+  for (const validation::StageFunctions& stage : validation::stageFunctions()) {
     // Copying the inputs is not timed: only the stage call.
     std::vector<double> times;
     BufferSet result;

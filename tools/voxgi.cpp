@@ -19,14 +19,13 @@
 #include "common/image_io.h"
 #include "common/scene_load.h"
 #include "common/vdb_io.h"
-#include "cpu/stages.h"
 #include "gpu/program.h"
-#include "gpu/stages.h"
 #include "tools/backend.h"
 #include "tools/bench.h"
 #include "validation/diff.h"
 #include "validation/path_trace.h"
 #include "validation/report.h"
+#include "validation/stage_functions.h"
 
 namespace voxgi::tools {
 
@@ -97,14 +96,13 @@ void runStages(const Scene& scene, const Settings& settings, tools::BackendChoic
                std::string_view until, BufferSet& buffers) {
   const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
   const StageContext ctx{scene, settings, triangles};
-#define VOXGI_STAGE(stage, summary)             \
-  if (backend.gpu)                              \
-    gpu::stage(*backend.context, ctx, buffers); \
-  else                                          \
-    cpu::stage(ctx, buffers);                   \
-  if (until == #stage) return;
-#include "common/stages.inc"
-#undef VOXGI_STAGE
+  for (const validation::StageFunctions& stage : validation::stageFunctions()) {
+    if (backend.gpu)
+      stage.gpu(*backend.context, ctx, buffers);
+    else
+      stage.cpu(ctx, buffers);
+    if (until == stage.name) return;
+  }
 }
 
 int cmdVoxelize(const Common& c, const std::string& out, bool sums) {

@@ -8,9 +8,8 @@
 #include <limits>
 
 #include "common/buffer_io.h"
-#include "cpu/stages.h"
-#include "gpu/stages.h"
 #include "validation/comparisons.h"
+#include "validation/stage_functions.h"
 
 namespace voxgi::validation {
 namespace {
@@ -25,18 +24,6 @@ double ulpDistance(float a, float b) {
   };
   return std::abs(static_cast<double>(ordered(a) - ordered(b)));
 }
-
-struct StageFunctions {
-  std::string_view name;
-  void (*cpu)(const StageContext&, BufferSet&);
-  void (*gpu)(gpu::GlContext&, const StageContext&, BufferSet&);
-};
-
-#define VOXGI_STAGE(stage, summary) StageFunctions{#stage, &cpu::stage, &gpu::stage},
-const StageFunctions kStageFunctions[] = {
-#include "common/stages.inc"
-};
-#undef VOXGI_STAGE
 
 TieClassifier classifierFor(std::string_view stage, const StageContext& ctx, const BufferSet& cpu,
                             const BufferSet& gpu) {
@@ -189,7 +176,7 @@ std::vector<StageReport> diffStages(const Scene& scene, const Settings& settings
   const StageContext ctx{scene, settings, triangles};
   std::vector<StageReport> reports;
   BufferSet inputs;  // the CPU's outputs of the stages run so far
-  for (const StageFunctions& stage : kStageFunctions) {
+  for (const StageFunctions& stage : stageFunctions()) {
     BufferSet cpuOut = inputs, gpuOut = inputs;
     auto start = std::chrono::steady_clock::now();
     stage.cpu(ctx, cpuOut);

@@ -18,7 +18,7 @@ struct LightData {
   vec4 direction;  // xyz: unit direction the light travels (spot axis, directional); w: cos(half spot angle)
   vec4 intensity;  // rgb: W/sr (point, spot) or irradiance (directional)
   vec4 falloff;    // xyz: constant, linear, quadratic (world units); w: 1 polynomial, 0 inverse square
-  uvec4 info;      // x: kLight*; y: 1 if it casts shadows; z: shadow slot (compose); w: 0
+  uvec4 info;      // x: kLight*; y: 1 if it casts shadows; zw: 0
 };
 
 // Irradiance on a plane facing the light at p (voxel-local), without the cosine. `toLight` gets

@@ -5,7 +5,6 @@
 
 VOXGI_NAMESPACE_BEGIN
 
-const float kPi = 3.14159265358979f;
 const float kInvPi = 0.318309886183791f;
 
 VOXGI_FN float dot3(vec3 a, vec3 b) {
@@ -28,22 +27,6 @@ VOXGI_FN vec3 normalize3(vec3 a) {
   precise float len = length3(a);
   if (len == 0.0f) return vec3(0.0f);
   precise vec3 r = a / len;
-  return r;
-}
-
-// An orthonormal tangent frame around unit n (Duff et al. 2017), columns t, b, n.
-VOXGI_FN mat3 tangentFrame(vec3 n) {
-  float s = n.z >= 0.0f ? 1.0f : -1.0f;
-  precise float a = -1.0f / (s + n.z);
-  precise float b = n.x * n.y * a;
-  precise vec3 t = vec3(1.0f + s * n.x * n.x * a, s * b, -s * n.x);
-  precise vec3 bt = vec3(b, s + n.y * n.y * a, -n.y);
-  return mat3(t, bt, n);
-}
-
-// frame * local, summed in a fixed order.
-VOXGI_FN vec3 fromFrame(mat3 frame, vec3 local) {
-  precise vec3 r = (frame[0] * local.x + frame[1] * local.y) + frame[2] * local.z;
   return r;
 }
 
