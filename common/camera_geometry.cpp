@@ -30,20 +30,26 @@ glm::mat4 CameraRays::viewProjection(float nearPlane, float farPlane) const {
   return proj * view;
 }
 
-CameraGeometry prepareCameraGeometry(const Scene& scene) {
-  CameraGeometry g;
+CameraRays cameraRays(const Scene& scene) {
+  CameraRays r;
   const Camera& cam = scene.camera;
-  const GridSpec& grid = scene.grid;
   const glm::dvec3 forward = glm::normalize(cam.lookAt - cam.position);
   const glm::dvec3 right = glm::normalize(glm::cross(forward, cam.up));
-  g.camera.origin = glm::vec3(grid.toVoxel(cam.position));
-  g.camera.forward = glm::vec3(forward);
-  g.camera.right = glm::vec3(right);
-  g.camera.up = glm::vec3(glm::cross(right, forward));
-  g.camera.tanHalfFov = static_cast<float>(std::tan(cam.fovYDeg * 3.14159265358979323846 / 360.0));
-  g.camera.width = cam.width;
-  g.camera.height = cam.height;
-  g.camera.aspect = float(cam.width) / float(cam.height);
+  r.origin = glm::vec3(scene.grid.toVoxel(cam.position));
+  r.forward = glm::vec3(forward);
+  r.right = glm::vec3(right);
+  r.up = glm::vec3(glm::cross(right, forward));
+  r.tanHalfFov = static_cast<float>(std::tan(cam.fovYDeg * 3.14159265358979323846 / 360.0));
+  r.width = cam.width;
+  r.height = cam.height;
+  r.aspect = float(cam.width) / float(cam.height);
+  return r;
+}
+
+CameraGeometry prepareCameraGeometry(const Scene& scene) {
+  CameraGeometry g;
+  const GridSpec& grid = scene.grid;
+  g.camera = cameraRays(scene);
   double farthest = 1.0;
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];

@@ -34,6 +34,7 @@ struct CameraGeometry {
   float farPlane = 1.0f;                   // beyond every vertex, in voxels
 };
 
+CameraRays cameraRays(const Scene& scene);
 CameraGeometry prepareCameraGeometry(const Scene& scene);
 
 }  // namespace voxgi

@@ -19,6 +19,10 @@ struct Material {
   float shininess = 0.0f;    // Phong exponent, >= 0
   glm::vec3 emission{0.0f};  // emitted radiance, linear RGB, >= 0
   bool emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
+  // Has a Phong lobe: a specular colour and a shininess above 0 (docs/path-tracer.md).
+  bool glossy() const {
+    return shininess > 0.0f && (specular.x > 0.0f || specular.y > 0.0f || specular.z > 0.0f);
+  }
 };
 
 // World-space triangles of one material. Positions are double so that a scene far from the
@@ -65,6 +69,8 @@ struct Scene {
 
   size_t triangleCount() const;
   bool hasEmission() const;
+  bool hasGlossy() const;        // a mesh with triangles has a glossy material
+  bool hasShadowCaster() const;  // a light casts shadows
   // Bounds of all mesh vertices; min > max when there is no geometry.
   std::pair<glm::dvec3, glm::dvec3> bounds() const;
 };

@@ -84,6 +84,28 @@ const std::vector<Param>& params() {
              "voxels the shadow ray skips before testing opacity (self-shadowing)"),
       choice("mip.mode", &Settings::mip, {"isotropic", "anisotropic"},
              "one averaged pyramid, or six directional pyramids"),
+      choice("cones.set", &Settings::cones, {"equal7", "villegas6", "kahl5", "kahl9"},
+             "diffuse cone set (docs/stages/trace_cones.md)"),
+      choice("cones.diffuse", &Settings::diffuseCones, {"weighted", "first_hit"},
+             "composite each diffuse cone, or take the first surface it hits (Kahl)"),
+      number("cones.step", &Settings::coneStep, 0.05f, 4.0f,
+             "step along a cone as a fraction of its diameter (beta)"),
+      number("cones.offset", &Settings::coneOffset, 0.0f, 8.0f,
+             "voxels along the normal before a cone starts (self-intersection)"),
+      number("shadow.aperture", &Settings::shadowAperture, 0.1f, 120.0f,
+             "aperture of the shadow cone toward each light, degrees"),
+      choice("shadow.falloff", &Settings::shadowFalloff, {"plain", "kahl2019"},
+             "shadow cone occlusion as sampled, or faded by smoothstep of sqrt(distance)"),
+      number("shadow.strength", &Settings::shadowStrength, 0.01f, 1000.0f,
+             "kahl2019 shadow falloff: sqrt(distance) multiplier"),
+      choice("specular.brdf", &Settings::specularBrdf, {"phong", "light_angle"},
+             "indirect specular as traced, or weighted by the angle to each light (Kahl)"),
+      number("specular.falloff", &Settings::specularFalloff, 0.0f, 64.0f,
+             "light_angle specular: exponent q"),
+      choice("ao.mode", &Settings::ambientOcclusion, {"off", "on"},
+             "ambient occlusion from the diffuse cones, multiplied into indirect diffuse"),
+      number("ao.lambda", &Settings::ambientLambda, 0.0f, 100.0f,
+             "ambient occlusion falloff 1 / (1 + lambda r), r the cone radius in voxels"),
   };
   return table;
 }
@@ -91,11 +113,17 @@ const std::vector<Param>& params() {
 const std::vector<std::pair<std::string, std::vector<std::string>>>& presets() {
   static const std::vector<std::pair<std::string, std::vector<std::string>>> table{
       {"default", {}},
-      // Seed 000: direct light computed while voxelizing (no voxel shadows), glGenerateMipmap.
-      {"kahl2019", {"mip.mode=isotropic", "voxel_shadow.mode=none"}},
-      // Seed 001: normal-weighted attenuation, soft voxel shadows, directional volumes.
+      // Seed 000: direct light computed while voxelizing (no voxel shadows), glGenerateMipmap, and
+      // §5.4.4's cone variants: 5 cones, first hit, smoothstep/sqrt shadows, light-angle specular.
+      {"kahl2019",
+       {"mip.mode=isotropic", "voxel_shadow.mode=none", "cones.set=kahl5",
+        "cones.diffuse=first_hit", "shadow.falloff=kahl2019", "shadow.aperture=30",
+        "specular.brdf=light_angle"}},
+      // Seed 001: normal-weighted attenuation, soft voxel shadows, directional volumes, 6 cones,
+      // AO.
       {"villegas2017",
-       {"light.attenuation=normal_weighted", "voxel_shadow.mode=soft", "mip.mode=anisotropic"}},
+       {"light.attenuation=normal_weighted", "voxel_shadow.mode=soft", "mip.mode=anisotropic",
+        "cones.set=villegas6", "ao.mode=on"}},
   };
   return table;
 }

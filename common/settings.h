@@ -11,6 +11,11 @@ enum class VoxelizeMode { conservative, antialiased };
 enum class LightAttenuation { cosine, normal_weighted };  // seed 001 §2.1
 enum class VoxelShadow { none, hard, soft };              // seed 001 §2.2, §2.2.1
 enum class MipMode { isotropic, anisotropic };            // seed 001 §3
+enum class ConeSet { equal7, villegas6, kahl5, kahl9 };   // common/cone_sets.cpp
+enum class DiffuseCones { weighted, first_hit };          // first_hit: seed 000 §5.4.4
+enum class ShadowFalloff { plain, kahl2019 };    // kahl2019: seed 000 §5.4.4 smoothstep/sqrt
+enum class SpecularBrdf { phong, light_angle };  // light_angle: seed 000 eq. 5.6
+enum class AmbientOcclusion { off, on };         // seed 001 §4.2
 
 struct Settings {
   VoxelizeMode voxelizeMode = VoxelizeMode::conservative;
@@ -21,6 +26,18 @@ struct Settings {
   float voxelShadowOffset = 1.5f;  // voxels skipped before the shadow ray tests opacity
   // mip
   MipMode mip = MipMode::anisotropic;
+  // trace_cones
+  ConeSet cones = ConeSet::equal7;
+  DiffuseCones diffuseCones = DiffuseCones::weighted;
+  float coneStep = 0.5f;         // beta: step = beta * cone diameter
+  float coneOffset = 1.0f;       // voxels along the normal before a cone starts
+  float shadowAperture = 10.0f;  // degrees
+  ShadowFalloff shadowFalloff = ShadowFalloff::plain;
+  float shadowStrength = 1.0f;  // Kahl's shadow_str
+  SpecularBrdf specularBrdf = SpecularBrdf::phong;
+  float specularFalloff = 10.0f;  // Kahl's shininess_falloff q
+  AmbientOcclusion ambientOcclusion = AmbientOcclusion::off;
+  float ambientLambda = 0.1f;  // AO falloff 1 / (1 + lambda r), r in voxels
 };
 
 VoxelizeMode parseVoxelizeMode(const std::string& text);  // throws InputError

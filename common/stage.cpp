@@ -15,6 +15,10 @@ bool bufferNeeded(const BufferSpec& spec, const Scene& scene, const Settings& se
       return settings.mip == MipMode::isotropic;
     case BufferNeed::anisotropic:
       return settings.mip == MipMode::anisotropic;
+    case BufferNeed::glossy:
+      return scene.hasGlossy();
+    case BufferNeed::ambient_occlusion:
+      return settings.ambientOcclusion == AmbientOcclusion::on;
   }
   return true;
 }

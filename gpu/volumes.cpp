@@ -52,6 +52,17 @@ GLuint createPyramid(const Gl& gl, int resolution, int faces) {
   return createVolume(gl, 4, {faces * half, half, half}, mipLevelCount(resolution));
 }
 
+GLuint uploadPyramid(const Gl& gl, const Buffer& b, int resolution, int faces) {
+  const GLuint texture = createPyramid(gl, resolution, faces);
+  gl.PixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  for (int level = 1; level <= mipLevelCount(resolution); ++level) {
+    const int s = resolution >> level;
+    gl.TextureSubImage3D(texture, level - 1, 0, 0, 0, faces * s, s, s, GL_RGBA, GL_FLOAT,
+                         b.words.data() + 4 * mipLevelOffset(resolution, level, faces));
+  }
+  return texture;
+}
+
 Buffer readPyramid(const Gl& gl, GLuint texture, const BufferSpec& spec, int resolution,
                    int faces) {
   Buffer out(spec, shapeExtent(spec.shape, resolution, {}));

@@ -29,6 +29,8 @@ void readVolume(const Gl& gl, GLuint texture, int level, glm::ivec3 size, Buffer
 // A pyramid texture for an N^3 volume: levels 1..log2(N) at texture levels 0.., `faces` volumes
 // side by side along x.
 GLuint createPyramid(const Gl& gl, int resolution, int faces);
+// A pyramid texture holding the pyramid buffer `b` (shape mips or mips6).
+GLuint uploadPyramid(const Gl& gl, const Buffer& b, int resolution, int faces);
 Buffer readPyramid(const Gl& gl, GLuint texture, const BufferSpec& spec, int resolution, int faces);
 
 }  // namespace voxgi::gpu

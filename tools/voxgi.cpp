@@ -167,6 +167,34 @@ std::string variancePath(const std::string& out) {
   return (p.parent_path() / (p.stem().string() + ".variance" + p.extension().string())).string();
 }
 
+Image imageOf(const Buffer& color) {
+  Image image(color.extent.x, color.extent.y);
+  for (size_t e = 0; e < image.pixels.size(); ++e)
+    image.pixels[e] = {color.get<float>(e, 0), color.get<float>(e, 1), color.get<float>(e, 2)};
+  return image;
+}
+
+// Voxel cone tracing: every stage up to compose on the chosen backend.
+int cmdRenderVct(const Common& c, const std::string& out, const std::string& png) {
+  const Scene scene = loadWithOverrides(c);
+  const Settings settings = makeSettings(c);
+  auto backend = tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl));
+  if (!backend.note.empty()) std::cerr << "voxgi: " << backend.note << "\n";
+  const auto start = std::chrono::steady_clock::now();
+  BufferSet buffers;
+  runStages(scene, settings, backend, "compose", buffers);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const Image image = imageOf(buffers.at("color"));
+  writeExr(out, image);
+  if (!png.empty()) writePng(png, image);
+  std::cout << "cone traced " << scene.camera.width << "x" << scene.camera.height << " at "
+            << scene.grid.resolution << "^3 ("
+            << (backend.gpu ? "gpu: " + backend.context->renderer() : "cpu") << ") in " << seconds
+            << " s -> " << out << "\n";
+  return kExitOk;
+}
+
 int cmdRender(const Common& c, const validation::PathTraceOptions& base, const std::string& out,
               const std::string& png) {
   const Scene scene = loadWithOverrides(c);
@@ -246,20 +274,21 @@ int main(int argc, char** argv) {
   addCommon(dump, true);
   dump->add_option("--stage", stage, "stage name")->required();
   dump->add_option("--out", out, "output folder")->required();
-  auto* render =
-      app.add_subcommand("render", "render an image (the reference path tracer for now)");
+  auto* render = app.add_subcommand(
+      "render", "render an image: voxel cone tracing or the reference path tracer");
   addCommon(render, true);
-  std::string technique = "path", png;
+  std::string technique = "vct", png;
   validation::PathTraceOptions pathOptions;
-  render->add_option("--technique", technique, "rendering technique")
-      ->check(CLI::IsMember({"path"}));
-  render->add_option("--spp", pathOptions.spp, "samples per pixel")->check(CLI::Range(1, 1 << 20));
+  render->add_option("--technique", technique, "vct (voxel cone tracing) or path (reference)")
+      ->check(CLI::IsMember({"vct", "path"}));
+  render->add_option("--spp", pathOptions.spp, "path: samples per pixel")
+      ->check(CLI::Range(1, 1 << 20));
   render
       ->add_option("--bounces", pathOptions.bounces,
-                   "indirect bounces after the first hit (-1: unlimited, Russian roulette)")
+                   "path: indirect bounces after the first hit (-1: unlimited, Russian roulette)")
       ->check(CLI::Range(-1, 1000));
-  render->add_option("--seed", pathOptions.seed, "random seed");
-  render->add_option("--out", out, "output EXR (linear); the variance goes to OUT.variance.exr")
+  render->add_option("--seed", pathOptions.seed, "path: random seed");
+  render->add_option("--out", out, "output EXR (linear); path also writes OUT.variance.exr")
       ->required();
   render->add_option("--png", png, "also write a tone-mapped sRGB preview");
   render->footer(describeSettings());
@@ -289,7 +318,8 @@ int main(int argc, char** argv) {
                                                   static_cast<size_t>(threads));
   try {
     if (*voxelize) return cmdVoxelize(c, out, sums);
-    if (*render) return cmdRender(c, pathOptions, out, png);
+    if (*render)
+      return technique == "vct" ? cmdRenderVct(c, out, png) : cmdRender(c, pathOptions, out, png);
     if (*diff) return cmdDiff(c, stage, json, dumpDir);
     if (*dump) return cmdDump(c, stage, out);
     if (*benchVoxelize) return tools::runBenchVoxelize(bench);

@@ -1,0 +1,52 @@
+// CPU compose stage: the shared kernel (shaders/shared/compose_kernel.h) per pixel.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "cpu/stages.h"
+#include "shaders/shared/compose_kernel.h"
+
+namespace voxgi::cpu {
+namespace {
+
+const Buffer* optional(const BufferSet& buffers, const char* name) {
+  const auto it = buffers.find(name);
+  return it == buffers.end() ? nullptr : &it->second;
+}
+
+// A pixel's rgb, or 0 where the scene does not produce the buffer (no glossy or emissive material).
+glm::vec3 rgbOr0(const Buffer* b, size_t e) {
+  if (b == nullptr) return glm::vec3(0.0f);
+  return {b->get<float>(e, 0), b->get<float>(e, 1), b->get<float>(e, 2)};
+}
+
+}  // namespace
+
+void compose(const StageContext& ctx, BufferSet& buffers) {
+  checkStageMemory(ctx, "compose");
+  const Buffer& objectId = buffers.at("object_id");
+  const Buffer* ambient = optional(buffers, "ambient_occlusion");
+  const Buffer *albedo = optional(buffers, "pixel_albedo"),
+               *specular = optional(buffers, "pixel_specular"),
+               *emission = optional(buffers, "pixel_emission"),
+               *directDiffuse = optional(buffers, "direct_diffuse"),
+               *directSpecular = optional(buffers, "direct_specular"),
+               *indirectDiffuse = optional(buffers, "indirect_diffuse"),
+               *indirectSpecular = optional(buffers, "indirect_specular");
+  Buffer color(bufferSpec("compose", "color"), objectId.extent);
+  const int width = objectId.extent.x;
+  tbb::parallel_for(tbb::blocked_range<int>(0, objectId.extent.y), [&](const auto& rows) {
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x < width; ++x) {
+        const size_t e = size_t(y) * size_t(width) + size_t(x);
+        const glm::vec3 c = shared::composePixel(
+            objectId.get<uint32_t>(e, 0), rgbOr0(albedo, e), rgbOr0(specular, e),
+            rgbOr0(emission, e), rgbOr0(directDiffuse, e), rgbOr0(directSpecular, e),
+            rgbOr0(indirectDiffuse, e), rgbOr0(indirectSpecular, e),
+            ambient == nullptr ? 0.0f : ambient->get<float>(e, 0), ctx.scene.background);
+        for (int ch = 0; ch < 3; ++ch) color.set(e, ch, c[ch]);
+      }
+  });
+  buffers["color"] = std::move(color);
+}
+
+}  // namespace voxgi::cpu

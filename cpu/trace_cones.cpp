@@ -1,0 +1,68 @@
+// CPU trace_cones stage: the shared kernel (shaders/shared/cone_kernel.h) per pixel. Each pixel
+// is written by one task, so the image does not depend on the thread count.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "common/kernel_params.h"
+#include "cpu/cone_volumes.h"
+#include "cpu/stages.h"
+
+namespace voxgi::cpu {
+namespace {
+
+glm::vec3 pixelVec3(const Buffer& b, size_t e) {
+  return {b.get<float>(e, 0), b.get<float>(e, 1), b.get<float>(e, 2)};
+}
+
+void setVec3(Buffer& b, size_t e, glm::vec3 v) {
+  for (int c = 0; c < 3; ++c) b.set(e, c, v[c]);
+}
+
+}  // namespace
+
+void trace_cones(const StageContext& ctx, BufferSet& buffers) {
+  checkStageMemory(ctx, "trace_cones");
+  const Scene& scene = ctx.scene;
+  const int n = scene.grid.resolution;
+  const ConeTraceSetup setup = prepareConeTrace(ctx);
+  const ConeVolumes volumes(buffers, ctx.settings.mip, n, setup.lights, setup.cones);
+
+  const Buffer& position = buffers.at("pixel_position");
+  const Buffer& normal = buffers.at("pixel_normal");
+  const Buffer& objectId = buffers.at("object_id");
+  const glm::ivec3 extent = position.extent;
+  std::map<std::string, Buffer, std::less<>> out;
+  for (const BufferSpec* spec : stageBuffers("trace_cones"))
+    if (bufferNeeded(*spec, scene, ctx.settings))
+      out[std::string(spec->name)] = Buffer(*spec, extent);
+  const auto find = [&](const char* name) {
+    const auto it = out.find(name);
+    return it == out.end() ? nullptr : &it->second;
+  };
+  Buffer& directDiffuse = out.at("direct_diffuse");
+  Buffer& indirectDiffuse = out.at("indirect_diffuse");
+  Buffer* directSpecular = find("direct_specular");
+  Buffer* indirectSpecular = find("indirect_specular");
+  Buffer* ambient = find("ambient_occlusion");
+
+  // Rows are cheap to balance: pixels vary a lot in cost (background, early-terminating cones).
+  tbb::parallel_for(tbb::blocked_range<int>(0, extent.y), [&](const auto& rows) {
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x < extent.x; ++x) {
+        const size_t e = size_t(y) * size_t(extent.x) + size_t(x);
+        const uint32_t id = objectId.get<uint32_t>(e, 0);
+        if (id == 0u) continue;  // background: every term stays 0
+        const shared::PixelLight light =
+            shared::tracePixel(volumes, pixelVec3(position, e), pixelVec3(normal, e),
+                               setup.objects.at(id), setup.params);
+        setVec3(directDiffuse, e, light.directDiffuse);
+        setVec3(indirectDiffuse, e, light.indirectDiffuse);
+        if (directSpecular != nullptr) setVec3(*directSpecular, e, light.directSpecular);
+        if (indirectSpecular != nullptr) setVec3(*indirectSpecular, e, light.indirectSpecular);
+        if (ambient != nullptr) ambient->set(e, 0, light.ambientOcclusion);
+      }
+  });
+  for (auto& [name, buffer] : out) buffers[name] = std::move(buffer);
+}
+
+}  // namespace voxgi::cpu

@@ -1,0 +1,223 @@
+// Voxel cone tracing per pixel (seed 001 §4, seed 000 §4.3.2 and §5.4.4), shared by
+// cpu/trace_cones.cpp and shaders/trace_cones.comp. A cone marches from the surface, sampling the
+// radiance pyramid at the level whose voxels match its diameter (quadrilinear: trilinear in two
+// levels, blended), and composites premultiplied samples front to back. Volumes are read with
+// FETCH(pyramidAt) (level 0: the radiance volume), FETCH(lightAt) and FETCH(coneAt).
+#ifndef VOXGI_CONE_KERNEL_H
+#define VOXGI_CONE_KERNEL_H
+#include "approx_math.h"
+#include "cone_types.h"
+#include "lighting.h"
+
+VOXGI_NAMESPACE_BEGIN
+
+const int kMarchRadiance = 0;
+const int kMarchFirstHit = 1;   // seed 000 §5.4.4: stop at the first sample with opacity > 1/100
+const int kMarchShadow = 2;     // opacity only
+const int kMarchShadowKahl = 3; // opacity times smoothstep(0, max distance, sqrt(t) strength)
+
+VOXGI_FN vec4 lerp4(vec4 a, vec4 b, float t) {
+  precise vec4 r = a + (b - a) * t;
+  return r;
+}
+
+// Voxel v of `level` (0: the radiance volume) and `face` (directional pyramid), 0 outside.
+VOLUME_FN vec4 pyramidVoxel(VOLUMES_IN int level, int face, ivec3 v, int size) {
+  if (v.x < 0 || v.y < 0 || v.z < 0 || v.x >= size || v.y >= size || v.z >= size) return vec4(0.0f);
+  return FETCH(pyramidAt)(level, face, v);
+}
+
+// Trilinear sample of `level` at p (level-0 voxel units), zero outside the grid.
+VOLUME_FN vec4 sampleTrilinear(VOLUMES_IN int level, int face, vec3 p, int size) {
+  precise vec3 q = p * ldexp(1.0f, -level) - vec3(0.5f);
+  precise vec3 base = floor(q);
+  precise vec3 f = q - base;
+  ivec3 i = ivec3(base);
+  vec4 c000 = pyramidVoxel(VOLUMES level, face, i, size);
+  vec4 c100 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 0, 0), size);
+  vec4 c010 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 0), size);
+  vec4 c110 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 1, 0), size);
+  vec4 c001 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 0, 1), size);
+  vec4 c101 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 0, 1), size);
+  vec4 c011 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 1), size);
+  vec4 c111 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 1, 1), size);
+  vec4 y0 = lerp4(lerp4(c000, c100, f.x), lerp4(c010, c110, f.x), f.y);
+  vec4 y1 = lerp4(lerp4(c001, c101, f.x), lerp4(c011, c111, f.x), f.y);
+  return lerp4(y0, y1, f.z);
+}
+
+// One level as seen by a cone travelling along `dir`: the isotropic level, or the three faces of
+// the directional pyramid that face the cone weighted by dir^2 (docs/stages/mip.md). Level 0 is
+// the isotropic radiance volume in both modes.
+VOLUME_FN vec4 sampleLevel(VOLUMES_IN int level, vec3 p, vec3 dir, ConeTraceParams params) {
+  int size = params.grid.x >> level;
+  if (level == 0 || params.grid.z == 0) return sampleTrilinear(VOLUMES level, 0, p, size);
+  precise vec3 w = dir * dir;
+  precise vec4 sum = vec4(0.0f);
+  if (w.x > 0.0f) sum = sum + sampleTrilinear(VOLUMES level, dir.x >= 0.0f ? 0 : 1, p, size) * w.x;
+  if (w.y > 0.0f) sum = sum + sampleTrilinear(VOLUMES level, dir.y >= 0.0f ? 2 : 3, p, size) * w.y;
+  if (w.z > 0.0f) sum = sum + sampleTrilinear(VOLUMES level, dir.z >= 0.0f ? 4 : 5, p, size) * w.z;
+  return sum;
+}
+
+// Quadrilinear sample for a cone of `diameter` voxels (>= 1): level log2(diameter), clamped to
+// the top of the pyramid.
+VOLUME_FN vec4 sampleCone(VOLUMES_IN vec3 p, float diameter, vec3 dir, ConeTraceParams params) {
+  precise float level = min(log2Approx(diameter), float(params.grid.y));
+  precise float l0 = floor(level);
+  precise float f = level - l0;
+  vec4 a = sampleLevel(VOLUMES int(l0), p, dir, params);
+  if (f == 0.0f) return a;
+  vec4 b = sampleLevel(VOLUMES int(l0) + 1, p, dir, params);
+  return lerp4(a, b, f);
+}
+
+VOXGI_FN float smoothstep01(float x) {
+  precise float c = clamp(x, 0.0f, 1.0f);
+  precise float r = c * c * (3.0f - 2.0f * c);
+  return r;
+}
+
+// Marches one cone from `origin` along unit `dir`. Samples lie at t = 1/2, then t += max(beta d,
+// min step) with d = max(2 t tan(aperture/2), 1) voxels; each sample's opacity a is corrected to
+// the step, 1 - (1 - a)^beta. Stops when t passes `maxDistance`, the opacity reaches 0.999, or
+// after params.limits.y steps (enough to leave the grid); a cone that leaves the grid adds the
+// background times its remaining transparency.
+VOLUME_FN ConeHit marchCone(VOLUMES_IN vec3 origin, vec3 dir, float tanHalf, float maxDistance,
+                            int kind, ConeTraceParams params) {
+  ConeHit hit;
+  hit.radiance = vec3(0.0f);
+  hit.occlusion = 0.0f;
+  hit.ambient = 0.0f;
+  float n = float(params.grid.x);
+  float beta = params.march.x;
+  bool ambient = params.limits.x == 1 && kind <= kMarchFirstHit;
+  bool exited = false;
+  precise float t = 0.5f;
+  for (int i = 0; i < params.limits.y; ++i) {
+    if (t > maxDistance) break;
+    precise vec3 q = origin + dir * t;
+    if (q.x < 0.0f || q.y < 0.0f || q.z < 0.0f || q.x > n || q.y > n || q.z > n) {
+      exited = true;
+      break;
+    }
+    precise float diameter = max(2.0f * t * tanHalf, 1.0f);
+    vec4 s = sampleCone(VOLUMES q, diameter, dir, params);
+    float a = min(s.a, 1.0f);
+    if (a > 0.0f) {
+      precise float corrected = beta == 1.0f || a >= 1.0f ? a : 1.0f - powApprox(1.0f - a, beta);
+      if (kind == kMarchFirstHit && corrected > 0.01f) {
+        precise vec3 surface = vec3(s) / s.a;
+        hit.radiance = surface;
+        hit.occlusion = 1.0f;
+        return hit;
+      }
+      if (kind == kMarchShadowKahl) {
+        precise float fade = smoothstep01(sqrt(t) * params.shadow.y / maxDistance);
+        corrected = a * fade;
+      }
+      precise float remaining = 1.0f - hit.occlusion;
+      if (kind <= kMarchFirstHit) {
+        precise vec3 add = vec3(s) * (remaining * corrected / a);
+        hit.radiance = hit.radiance + add;
+      }
+      if (ambient) {
+        precise float falloff = 1.0f / (1.0f + params.shadow.z * (0.5f * diameter));
+        precise float delta = hit.ambient + (1.0f - hit.ambient) * corrected * falloff;
+        hit.ambient = delta;
+      }
+      precise float next = hit.occlusion + remaining * corrected;
+      hit.occlusion = next;
+      if (hit.occlusion >= 0.999f) return hit;
+    }
+    t = t + max(beta * diameter, params.march.z);
+  }
+  if (exited && kind <= kMarchFirstHit) {
+    precise vec3 sky = vec3(params.background) * (1.0f - hit.occlusion);
+    hit.radiance = hit.radiance + sky;
+  }
+  return hit;
+}
+
+// A unit tangent frame around unit n (Duff et al. 2017), the sign taken with a comparison so both
+// backends agree at n.z = -0.
+VOXGI_FN void tangentFrame(vec3 n, OUT(vec3) t, OUT(vec3) b) {
+  float s = n.z >= 0.0f ? 1.0f : -1.0f;
+  precise float a = -1.0f / (s + n.z);
+  precise float c = n.x * n.y * a;
+  t = vec3(1.0f + s * n.x * n.x * a, s * c, -s * n.x);
+  b = vec3(c, s + n.y * n.y * a, -n.y);
+}
+
+// Everything trace_cones computes for the surface point p (voxel-local) with unit normal n facing
+// the camera: direct light with a shadow cone per shadow-casting light, the diffuse cone set, the
+// specular cone along the mirror direction, and ambient occlusion.
+VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
+                                ConeTraceParams params) {
+  PixelLight r;
+  r.directDiffuse = vec3(0.0f);
+  r.directSpecular = vec3(0.0f);
+  r.indirectDiffuse = vec3(0.0f);
+  r.indirectSpecular = vec3(0.0f);
+  r.ambientOcclusion = 0.0f;
+  float maxDistance = params.march.w;
+  precise vec3 origin = p + n * params.march.y;
+  precise vec3 view = normalize3(vec3(params.camera) - p);
+  precise vec3 mirror = n * (2.0f * dot3(n, view)) - view;
+  bool specular = object.specular.x > 0.0f;
+  float shininess = object.specular.y;
+  int shadowKind = params.modes.z == 1 ? kMarchShadowKahl : kMarchShadow;
+  float minVisibility = 1.0f;
+  precise float lightAngle = 0.0f;
+  for (int i = 0; i < params.modes.x; ++i) {
+    LightData l = FETCH(lightAt)(i);
+    vec3 toLight;
+    float distance;
+    vec3 e = lightIrradiance(l, p, params.shadow.w, toLight, distance);
+    if (e == vec3(0.0f)) continue;
+    float cosine = dot3(n, toLight);
+    if (cosine <= 0.0f) continue;
+    float visibility = 1.0f;
+    if (l.info.y == 1u)
+      visibility = 1.0f - marchCone(VOLUMES origin, toLight, params.shadow.x,
+                                    min(distance, maxDistance), shadowKind, params)
+                              .occlusion;
+    minVisibility = min(minVisibility, visibility);
+    precise vec3 arriving = e * (cosine * visibility);
+    r.directDiffuse = r.directDiffuse + arriving * kInvPi;
+    if (specular) {
+      precise float rl = dot3(mirror, toLight);
+      precise float lobe = (shininess + 2.0f) * (0.5f * kInvPi) * powApprox(rl, shininess);
+      r.directSpecular = r.directSpecular + arriving * lobe;
+      // Seed 000 eq. 5.6: (1 - max(0, angle - grace) / pi)^q with grace = 0.008 pi shininess.
+      precise float late = max(acosApprox(rl) - params.specular.y * shininess, 0.0f);
+      lightAngle = lightAngle + powApprox(1.0f - late * kInvPi, params.specular.x);
+    }
+  }
+  vec3 t;
+  vec3 b;
+  tangentFrame(n, t, b);
+  int diffuseKind = params.modes.y == 1 ? kMarchFirstHit : kMarchRadiance;
+  precise float ambient = 0.0f;
+  precise float weights = 0.0f;
+  for (int k = 0; k < params.grid.w; ++k) {
+    ConeData c = FETCH(coneAt)(k);
+    precise vec3 d = (t * c.direction.x + b * c.direction.y) + n * c.direction.z;
+    ConeHit h = marchCone(VOLUMES origin, d, c.direction.w, maxDistance, diffuseKind, params);
+    r.indirectDiffuse = r.indirectDiffuse + h.radiance * c.weight.x;
+    ambient = ambient + h.ambient * c.weight.x;
+    weights = weights + c.weight.x;
+  }
+  // Seed 000 eq. 5.9 darkens first-hit diffuse light by the smallest shadow-cone visibility.
+  if (params.modes.y == 1) r.indirectDiffuse = r.indirectDiffuse * minVisibility;
+  if (weights > 0.0f) r.ambientOcclusion = ambient / weights;
+  if (specular) {
+    ConeHit h = marchCone(VOLUMES origin, mirror, object.specular.x, maxDistance, kMarchRadiance,
+                          params);
+    r.indirectSpecular = params.modes.w == 1 ? h.radiance * lightAngle : h.radiance;
+  }
+  return r;
+}
+
+VOXGI_NAMESPACE_END
+#endif

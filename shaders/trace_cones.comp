@@ -1,0 +1,57 @@
+#version 450 core
+// trace_cones: the shared per-pixel cone tracer (shaders/shared/cone_kernel.h) on the gbuffer.
+// The radiance volume and the pyramid are textures read with texelFetch (trilinear and level
+// blending happen in the shared code, so both backends filter identically).
+layout(local_size_x = 8, local_size_y = 8) in;
+#include "shared/lighting.h"
+#include "shared/cone_types.h"
+
+layout(binding = 0) uniform sampler3D uRadiance;
+layout(binding = 1) uniform sampler3D uPyramid;  // texture level l - 1 holds pyramid level l
+layout(location = 0) uniform int uResolution;
+layout(location = 1) uniform int uWidth;
+layout(location = 2) uniform int uHeight;
+
+vec4 pyramidAt(int level, int face, ivec3 v) {
+  if (level == 0) return texelFetch(uRadiance, v, 0);
+  int s = uResolution >> level;
+  return texelFetch(uPyramid, ivec3(v.x + face * s, v.y, v.z), level - 1);
+}
+LightData lightAt(int i);  // defined below, after the buffers
+ConeData coneAt(int i);
+
+#include "shared/cone_kernel.h"
+
+layout(std430, binding = 0) readonly buffer Lights {
+  ConeTraceParams params;
+  LightData lights[];
+};
+layout(std430, binding = 1) readonly buffer Cones { ConeData cones[]; };
+layout(std430, binding = 2) readonly buffer Objects { ObjectData objects[]; };
+layout(std430, binding = 3) readonly buffer Positions { float positions[]; };
+layout(std430, binding = 4) readonly buffer Normals { float normals[]; };
+layout(std430, binding = 5) readonly buffer Ids { uint ids[]; };
+// 13 floats per pixel: direct diffuse, direct specular, indirect diffuse, indirect specular, AO.
+layout(std430, binding = 6) writeonly buffer Terms { float terms[]; };
+
+LightData lightAt(int i) { return lights[i]; }
+ConeData coneAt(int i) { return cones[i]; }
+
+void main() {
+  ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+  if (px.x >= uWidth || px.y >= uHeight) return;
+  int e = px.y * uWidth + px.x;
+  uint id = ids[e];
+  PixelLight l = PixelLight(vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), 0.0);
+  if (id != 0u) {
+    vec3 p = vec3(positions[3 * e], positions[3 * e + 1], positions[3 * e + 2]);
+    vec3 n = vec3(normals[3 * e], normals[3 * e + 1], normals[3 * e + 2]);
+    l = tracePixel(p, n, objects[id], params);
+  }
+  float values[13] = float[13](l.directDiffuse.x, l.directDiffuse.y, l.directDiffuse.z,
+                               l.directSpecular.x, l.directSpecular.y, l.directSpecular.z,
+                               l.indirectDiffuse.x, l.indirectDiffuse.y, l.indirectDiffuse.z,
+                               l.indirectSpecular.x, l.indirectSpecular.y, l.indirectSpecular.z,
+                               l.ambientOcclusion);
+  for (int i = 0; i < 13; ++i) terms[13 * e + i] = values[i];
+}
