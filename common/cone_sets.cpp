@@ -68,13 +68,6 @@ std::vector<Cone> diffuseCones(ConeSet set) {
   return {};
 }
 
-double cosineCoverage(const std::vector<Cone>& cones) {
-  double sum = 0.0;
-  for (const Cone& c : cones)
-    sum += double(c.direction.z) * 2.0 * kPi * (1.0 - std::cos(0.5 * double(c.aperture))) / kPi;
-  return sum;
-}
-
 std::vector<shared::ConeData> coneData(const std::vector<Cone>& cones) {
   std::vector<shared::ConeData> out;
   for (const Cone& c : cones)

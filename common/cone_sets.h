@@ -19,10 +19,6 @@ struct Cone {
 
 std::vector<Cone> diffuseCones(ConeSet set);
 
-// Fraction of the cosine-weighted hemisphere (projected solid angle pi) the cones' own solid
-// angles cover, sum of cos(theta_k) Omega_k / pi: below 1 means gaps, above 1 overlap.
-double cosineCoverage(const std::vector<Cone>& cones);
-
 // Packed for the shared kernel: tan(aperture / 2) computed here, once, for both backends.
 std::vector<shared::ConeData> coneData(const std::vector<Cone>& cones);
 

@@ -15,40 +15,44 @@
 namespace voxgi::cpu {
 
 struct ConeVolumes {
-  const uint32_t* radiance;
-  const uint32_t* pyramid;           // null for a 1^3 grid
-  std::vector<size_t> levelOffsets;  // element offset of each level in `pyramid`
-  int n;
+  // Level l's first word (level 0: the radiance volume); at most 2^15 voxels a side. Pyramid
+  // levels are copied with the faces of a voxel next to each other, so the three faces a cone
+  // reads share cache lines (the values are the stage buffer's, bit for bit).
+  const uint32_t* levels[16] = {};
+  std::vector<uint32_t> interleaved;
   int faces;
+  int n;
   const std::vector<shared::LightData>& lights;
   const std::vector<shared::ConeData>& cones;
 
   // `buffers` holds radiance and the pyramid `mip` asks for.
   ConeVolumes(const BufferSet& buffers, MipMode mip, int resolution,
               const std::vector<shared::LightData>& l, const std::vector<shared::ConeData>& c)
-      : radiance(buffers.at("radiance").words.data()),
-        pyramid(buffers.at(mip == MipMode::anisotropic ? "radiance_mips6" : "radiance_mips")
-                    .words.data()),
-        n(resolution),
-        faces(mip == MipMode::anisotropic ? 6 : 1),
-        lights(l),
-        cones(c) {
-    for (int level = 0; level <= mipLevelCount(n); ++level)
-      levelOffsets.push_back(level == 0 ? 0 : size_t(mipLevelOffset(n, level, faces)));
+      : faces(mip == MipMode::anisotropic ? 6 : 1), n(resolution), lights(l), cones(c) {
+    const Words& pyramid =
+        buffers.at(mip == MipMode::anisotropic ? "radiance_mips6" : "radiance_mips").words;
+    interleaved.resize(pyramid.size());
+    levels[0] = buffers.at("radiance").words.data();
+    for (int level = 1; level <= mipLevelCount(n); ++level) {
+      const size_t offset = 4 * mipLevelOffset(n, level, faces), s = size_t(n >> level);
+      for (size_t row = 0; row < s * s; ++row)
+        for (int face = 0; face < faces; ++face)
+          for (size_t x = 0; x < s; ++x)
+            for (size_t k = 0; k < 4; ++k)
+              interleaved[offset + 4 * ((row * s + x) * size_t(faces) + size_t(face)) + k] =
+                  pyramid[offset + 4 * (row * s * size_t(faces) + size_t(face) * s + x) + k];
+      levels[level] = interleaved.data() + offset;
+    }
   }
+  ConeVolumes(const ConeVolumes&) = delete;
 
-  static glm::vec4 load(const uint32_t* p) {
+  glm::vec4 pyramidAt(int level, int face, glm::ivec3 v) const {
+    const size_t s = size_t(n >> level);
+    const size_t voxel = size_t(v.x) + s * (size_t(v.y) + s * size_t(v.z));
+    const uint32_t* p =
+        levels[level] + 4 * (level == 0 ? voxel : voxel * size_t(faces) + size_t(face));
     return {std::bit_cast<float>(p[0]), std::bit_cast<float>(p[1]), std::bit_cast<float>(p[2]),
             std::bit_cast<float>(p[3])};
-  }
-  glm::vec4 pyramidAt(int level, int face, glm::ivec3 v) const {
-    if (level == 0)
-      return load(radiance +
-                  4 * (size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z))));
-    const int s = n >> level;
-    const size_t x = size_t(face * s + v.x), width = size_t(faces * s);
-    return load(pyramid + 4 * (levelOffsets[size_t(level)] + x +
-                               width * (size_t(v.y) + size_t(s) * size_t(v.z))));
   }
   shared::LightData lightAt(int i) const { return lights[size_t(i)]; }
   shared::ConeData coneAt(int i) const { return cones[size_t(i)]; }

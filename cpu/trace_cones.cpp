@@ -1,6 +1,6 @@
 // CPU trace_cones stage: the shared kernel (shaders/shared/cone_kernel.h) per pixel. Each pixel
 // is written by one task, so the image does not depend on the thread count.
-#include <tbb/blocked_range.h>
+#include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
 
 #include "common/kernel_params.h"
@@ -45,10 +45,12 @@ void trace_cones(const StageContext& ctx, BufferSet& buffers) {
   Buffer* indirectSpecular = find("indirect_specular");
   Buffer* ambient = find("ambient_occlusion");
 
-  // Rows are cheap to balance: pixels vary a lot in cost (background, early-terminating cones).
-  tbb::parallel_for(tbb::blocked_range<int>(0, extent.y), [&](const auto& rows) {
-    for (int y = rows.begin(); y != rows.end(); ++y)
-      for (int x = 0; x < extent.x; ++x) {
+  // 8x8 tiles: neighbouring pixels' cones read the same voxels (cache), and small tasks balance
+  // pixels of very different cost (background, early-terminating cones).
+  const tbb::blocked_range2d<int> tiles(0, extent.y, 8, 0, extent.x, 8);
+  tbb::parallel_for(tiles, [&](const tbb::blocked_range2d<int>& tile) {
+    for (int y = tile.rows().begin(); y != tile.rows().end(); ++y)
+      for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) {
         const size_t e = size_t(y) * size_t(extent.x) + size_t(x);
         const uint32_t id = objectId.get<uint32_t>(e, 0);
         if (id == 0u) continue;  // background: every term stays 0

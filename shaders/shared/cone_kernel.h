@@ -29,18 +29,30 @@ VOLUME_FN vec4 pyramidVoxel(VOLUMES_IN int level, int face, ivec3 v, int size) {
 
 // Trilinear sample of `level` at p (level-0 voxel units), zero outside the grid.
 VOLUME_FN vec4 sampleTrilinear(VOLUMES_IN int level, int face, vec3 p, int size) {
-  precise vec3 q = p * ldexp(1.0f, -level) - vec3(0.5f);
+  precise vec3 q = p * (1.0f / float(1 << level)) - vec3(0.5f);
   precise vec3 base = floor(q);
   precise vec3 f = q - base;
   ivec3 i = ivec3(base);
-  vec4 c000 = pyramidVoxel(VOLUMES level, face, i, size);
-  vec4 c100 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 0, 0), size);
-  vec4 c010 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 0), size);
-  vec4 c110 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 1, 0), size);
-  vec4 c001 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 0, 1), size);
-  vec4 c101 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 0, 1), size);
-  vec4 c011 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 1), size);
-  vec4 c111 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 1, 1), size);
+  vec4 c000, c100, c010, c110, c001, c101, c011, c111;
+  if (i.x >= 0 && i.y >= 0 && i.z >= 0 && i.x + 1 < size && i.y + 1 < size && i.z + 1 < size) {
+    c000 = FETCH(pyramidAt)(level, face, i);
+    c100 = FETCH(pyramidAt)(level, face, i + ivec3(1, 0, 0));
+    c010 = FETCH(pyramidAt)(level, face, i + ivec3(0, 1, 0));
+    c110 = FETCH(pyramidAt)(level, face, i + ivec3(1, 1, 0));
+    c001 = FETCH(pyramidAt)(level, face, i + ivec3(0, 0, 1));
+    c101 = FETCH(pyramidAt)(level, face, i + ivec3(1, 0, 1));
+    c011 = FETCH(pyramidAt)(level, face, i + ivec3(0, 1, 1));
+    c111 = FETCH(pyramidAt)(level, face, i + ivec3(1, 1, 1));
+  } else {  // at the border: voxels outside the grid are empty
+    c000 = pyramidVoxel(VOLUMES level, face, i, size);
+    c100 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 0, 0), size);
+    c010 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 0), size);
+    c110 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 1, 0), size);
+    c001 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 0, 1), size);
+    c101 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 0, 1), size);
+    c011 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 1), size);
+    c111 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 1, 1), size);
+  }
   vec4 y0 = lerp4(lerp4(c000, c100, f.x), lerp4(c010, c110, f.x), f.y);
   vec4 y1 = lerp4(lerp4(c001, c101, f.x), lerp4(c011, c111, f.x), f.y);
   return lerp4(y0, y1, f.z);
