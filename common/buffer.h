@@ -96,6 +96,13 @@ struct Buffer {
   void set(size_t element, int component, T value) {
     words[element * size_t(spec->components) + size_t(component)] = std::bit_cast<uint32_t>(value);
   }
+  // Components 0..2 of an element as floats (f32 buffers).
+  glm::vec3 vec3At(size_t element) const {
+    return {get<float>(element, 0), get<float>(element, 1), get<float>(element, 2)};
+  }
+  void setVec3(size_t element, glm::vec3 v) {
+    for (int c = 0; c < 3; ++c) set(element, c, v[c]);
+  }
   // The element as doubles, for reports and diffs.
   double value(size_t element, int component) const;
 };

@@ -10,16 +10,7 @@
 #include "common/mips.h"
 
 namespace voxgi {
-
-shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount,
-                                            bool emissive) {
-  const Settings& s = ctx.settings;
-  return {glm::ivec4(ctx.scene.grid.resolution, lightCount,
-                     s.attenuation == LightAttenuation::normal_weighted ? 1 : 0,
-                     static_cast<int>(s.voxelShadow)),
-          glm::vec4(static_cast<float>(ctx.scene.grid.voxelSize()), s.voxelShadowKappa,
-                    s.voxelShadowOffset, emissive ? 1.0f : 0.0f)};
-}
+namespace {
 
 shared::ConeTraceParams coneTraceParams(const StageContext& ctx, int lightCount, int coneCount,
                                         glm::vec3 cameraPosition) {
@@ -46,6 +37,7 @@ shared::ConeTraceParams coneTraceParams(const StageContext& ctx, int lightCount,
           glm::vec4(cameraPosition, 0.0f)};
 }
 
+// docs/stages/trace_cones.md: the specular cone holds half the Phong lobe's energy.
 std::vector<shared::ObjectData> objectData(const Scene& scene) {
   std::vector<shared::ObjectData> out(scene.meshes.size() + 1, {glm::vec4(0.0f)});
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -57,6 +49,18 @@ std::vector<shared::ObjectData> objectData(const Scene& scene) {
     out[m + 1].specular = glm::vec4(float(std::sqrt(1.0 - c * c) / c), mat.shininess, 0.0f, 0.0f);
   }
   return out;
+}
+
+}  // namespace
+
+shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount,
+                                            bool emissive) {
+  const Settings& s = ctx.settings;
+  return {glm::ivec4(ctx.scene.grid.resolution, lightCount,
+                     s.attenuation == LightAttenuation::normal_weighted ? 1 : 0,
+                     static_cast<int>(s.voxelShadow)),
+          glm::vec4(static_cast<float>(ctx.scene.grid.voxelSize()), s.voxelShadowKappa,
+                    s.voxelShadowOffset, emissive ? 1.0f : 0.0f)};
 }
 
 ConeTraceSetup prepareConeTrace(const StageContext& ctx) {

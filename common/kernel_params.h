@@ -10,21 +10,15 @@ namespace voxgi {
 
 shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount, bool emissive);
 
-// `cameraPosition`: voxel-local (CameraRays::origin).
-shared::ConeTraceParams coneTraceParams(const StageContext& ctx, int lightCount, int coneCount,
-                                        glm::vec3 cameraPosition);
-
 // What trace_cones reads besides the gbuffer and the volumes, prepared once for both backends.
 struct ConeTraceSetup {
   std::vector<shared::LightData> lights;
   std::vector<shared::ConeData> cones;
-  std::vector<shared::ObjectData> objects;  // objectData()
+  // One record per object id (index 0: the background): the specular cone's tan(aperture / 2),
+  // from the shininess so the cone holds half the Phong lobe's energy.
+  std::vector<shared::ObjectData> objects;
   shared::ConeTraceParams params;
 };
 ConeTraceSetup prepareConeTrace(const StageContext& ctx);
-
-// One record per object id (index 0: the background): the specular cone's tan(aperture / 2),
-// from the shininess so the cone holds half the Phong lobe's energy (docs/stages/trace_cones.md).
-std::vector<shared::ObjectData> objectData(const Scene& scene);
 
 }  // namespace voxgi

@@ -23,12 +23,6 @@ bool Scene::hasGlossy() const {
   return false;
 }
 
-bool Scene::hasShadowCaster() const {
-  for (const Light& l : lights)
-    if (l.castsShadows) return true;
-  return false;
-}
-
 std::pair<glm::dvec3, glm::dvec3> Scene::bounds() const {
   glm::dvec3 lo(std::numeric_limits<double>::max());
   glm::dvec3 hi(std::numeric_limits<double>::lowest());

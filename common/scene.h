@@ -69,8 +69,7 @@ struct Scene {
 
   size_t triangleCount() const;
   bool hasEmission() const;
-  bool hasGlossy() const;        // a mesh with triangles has a glossy material
-  bool hasShadowCaster() const;  // a light casts shadows
+  bool hasGlossy() const;  // a mesh with triangles has a glossy material
   // Bounds of all mesh vertices; min > max when there is no geometry.
   std::pair<glm::dvec3, glm::dvec3> bounds() const;
 };

@@ -15,8 +15,7 @@ const Buffer* optional(const BufferSet& buffers, const char* name) {
 
 // A pixel's rgb, or 0 where the scene does not produce the buffer (no glossy or emissive material).
 glm::vec3 rgbOr0(const Buffer* b, size_t e) {
-  if (b == nullptr) return glm::vec3(0.0f);
-  return {b->get<float>(e, 0), b->get<float>(e, 1), b->get<float>(e, 2)};
+  return b == nullptr ? glm::vec3(0.0f) : b->vec3At(e);
 }
 
 }  // namespace
@@ -43,7 +42,7 @@ void compose(const StageContext& ctx, BufferSet& buffers) {
             rgbOr0(emission, e), rgbOr0(directDiffuse, e), rgbOr0(directSpecular, e),
             rgbOr0(indirectDiffuse, e), rgbOr0(indirectSpecular, e),
             ambient == nullptr ? 0.0f : ambient->get<float>(e, 0), ctx.scene.background);
-        for (int ch = 0; ch < 3; ++ch) color.set(e, ch, c[ch]);
+        color.setVec3(e, c);
       }
   });
   buffers["color"] = std::move(color);

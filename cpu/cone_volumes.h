@@ -15,8 +15,8 @@
 namespace voxgi::cpu {
 
 struct ConeVolumes {
-  // Level l's first word (level 0: the radiance volume); at most 2^15 voxels a side. Pyramid
-  // levels are copied with the faces of a voxel next to each other, so the three faces a cone
+  // Level l's first word (level 0: the radiance volume); at most 2^15 voxels a side. Directional
+  // levels are copied with the six faces of a voxel next to each other, so the three faces a cone
   // reads share cache lines (the values are the stage buffer's, bit for bit).
   const uint32_t* levels[16] = {};
   std::vector<uint32_t> interleaved;
@@ -31,10 +31,14 @@ struct ConeVolumes {
       : faces(mip == MipMode::anisotropic ? 6 : 1), n(resolution), lights(l), cones(c) {
     const Words& pyramid =
         buffers.at(mip == MipMode::anisotropic ? "radiance_mips6" : "radiance_mips").words;
-    interleaved.resize(pyramid.size());
+    if (faces > 1) interleaved.resize(pyramid.size());
     levels[0] = buffers.at("radiance").words.data();
     for (int level = 1; level <= mipLevelCount(n); ++level) {
       const size_t offset = 4 * mipLevelOffset(n, level, faces), s = size_t(n >> level);
+      if (faces == 1) {
+        levels[level] = pyramid.data() + offset;
+        continue;
+      }
       for (size_t row = 0; row < s * s; ++row)
         for (int face = 0; face < faces; ++face)
           for (size_t x = 0; x < s; ++x)

@@ -23,13 +23,9 @@ struct LightVoxelsVolumes {
     return size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z));
   }
   float opacityAt(glm::ivec3 v) const { return opacity.get<float>(index(v), 0); }
-  glm::vec3 vec3At(const Buffer& b, glm::ivec3 v) const {
-    const size_t e = index(v);
-    return {b.get<float>(e, 0), b.get<float>(e, 1), b.get<float>(e, 2)};
-  }
-  glm::vec3 albedoAt(glm::ivec3 v) const { return vec3At(albedo, v); }
-  glm::vec3 normalAt(glm::ivec3 v) const { return vec3At(normal, v); }
-  glm::vec3 emissionAt(glm::ivec3 v) const { return vec3At(*emission, v); }
+  glm::vec3 albedoAt(glm::ivec3 v) const { return albedo.vec3At(index(v)); }
+  glm::vec3 normalAt(glm::ivec3 v) const { return normal.vec3At(index(v)); }
+  glm::vec3 emissionAt(glm::ivec3 v) const { return emission->vec3At(index(v)); }
   shared::LightData lightAt(int i) const { return lights[size_t(i)]; }
 };
 

@@ -8,18 +8,6 @@
 #include "cpu/stages.h"
 
 namespace voxgi::cpu {
-namespace {
-
-glm::vec3 pixelVec3(const Buffer& b, size_t e) {
-  return {b.get<float>(e, 0), b.get<float>(e, 1), b.get<float>(e, 2)};
-}
-
-void setVec3(Buffer& b, size_t e, glm::vec3 v) {
-  for (int c = 0; c < 3; ++c) b.set(e, c, v[c]);
-}
-
-}  // namespace
-
 void trace_cones(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, "trace_cones");
   const Scene& scene = ctx.scene;
@@ -54,13 +42,12 @@ void trace_cones(const StageContext& ctx, BufferSet& buffers) {
         const size_t e = size_t(y) * size_t(extent.x) + size_t(x);
         const uint32_t id = objectId.get<uint32_t>(e, 0);
         if (id == 0u) continue;  // background: every term stays 0
-        const shared::PixelLight light =
-            shared::tracePixel(volumes, pixelVec3(position, e), pixelVec3(normal, e),
-                               setup.objects.at(id), setup.params);
-        setVec3(directDiffuse, e, light.directDiffuse);
-        setVec3(indirectDiffuse, e, light.indirectDiffuse);
-        if (directSpecular != nullptr) setVec3(*directSpecular, e, light.directSpecular);
-        if (indirectSpecular != nullptr) setVec3(*indirectSpecular, e, light.indirectSpecular);
+        const shared::PixelLight light = shared::tracePixel(
+            volumes, position.vec3At(e), normal.vec3At(e), setup.objects.at(id), setup.params);
+        directDiffuse.setVec3(e, light.directDiffuse);
+        indirectDiffuse.setVec3(e, light.indirectDiffuse);
+        if (directSpecular != nullptr) directSpecular->setVec3(e, light.directSpecular);
+        if (indirectSpecular != nullptr) indirectSpecular->setVec3(e, light.indirectSpecular);
         if (ambient != nullptr) ambient->set(e, 0, light.ambientOcclusion);
       }
   });

@@ -4,8 +4,10 @@
 
 #include <GL/glcorearb.h>
 
+#include <cstring>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace voxgi::gpu {
 
@@ -45,6 +47,16 @@ class GlName {
 // An immutable buffer object holding `bytes` bytes copied from `data` (at least 1 byte, so that an
 // empty input still gives a valid binding).
 GLuint createBuffer(const Gl& gl, size_t bytes, const void* data);
+// A buffer for a std430 block of a fixed part followed by an unsized array: `header`, then
+// `records` (std430 layouts whose C++ structs have no padding beyond the GLSL one).
+template <class Header, class Record>
+GLuint createBlock(const Gl& gl, const Header& header, const std::vector<Record>& records) {
+  std::vector<std::byte> bytes(sizeof header + records.size() * sizeof(Record));
+  std::memcpy(bytes.data(), &header, sizeof header);
+  if (!records.empty())
+    std::memcpy(bytes.data() + sizeof header, records.data(), records.size() * sizeof(Record));
+  return createBuffer(gl, bytes.size(), bytes.data());
+}
 void deleteBuffer(const Gl& gl, GLuint id);
 void deleteTexture(const Gl& gl, GLuint id);
 using GlBuffer = GlName<deleteBuffer>;

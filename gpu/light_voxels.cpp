@@ -1,8 +1,5 @@
 // GPU light_voxels stage: shaders/light_voxels.comp runs the shared kernel per voxel on the
 // voxelize buffers uploaded as textures; the radiance volume is read back.
-#include <cstring>
-#include <vector>
-
 #include "common/kernel_params.h"
 #include "common/lights.h"
 #include "gpu/program.h"
@@ -20,11 +17,7 @@ void light_voxels(GlContext& context, const StageContext& ctx, BufferSet& buffer
   const shared::LightVoxelsParams params =
       lightVoxelsParams(ctx, static_cast<int>(lights.size()), emissive);
 
-  std::vector<std::byte> block(sizeof params + lights.size() * sizeof(shared::LightData));
-  std::memcpy(block.data(), &params, sizeof params);
-  if (!lights.empty())
-    std::memcpy(block.data() + sizeof params, lights.data(), lights.size() * sizeof lights[0]);
-  GlBuffer lightBlock(gl, createBuffer(gl, block.size(), block.data()));
+  GlBuffer lightBlock(gl, createBlock(gl, params, lights));
   GlTexture opacity(gl, uploadVolume(gl, buffers.at("opacity")));
   GlTexture albedo(gl, uploadVolume(gl, buffers.at("albedo")));
   GlTexture normal(gl, uploadVolume(gl, buffers.at("normal")));

@@ -1,6 +1,5 @@
 // GPU trace_cones stage: shaders/trace_cones.comp runs the shared cone tracer per pixel on the
 // uploaded gbuffer, radiance volume and pyramid; the light terms are read back.
-#include <cstring>
 #include <vector>
 
 #include "common/kernel_params.h"
@@ -28,14 +27,10 @@ void trace_cones(GlContext& context, const StageContext& ctx, BufferSet& buffers
   const ConeTraceSetup setup = prepareConeTrace(ctx);
   const auto& [lights, cones, objects, params] = setup;
 
-  std::vector<std::byte> block(sizeof params + lights.size() * sizeof(shared::LightData));
-  std::memcpy(block.data(), &params, sizeof params);
-  if (!lights.empty())
-    std::memcpy(block.data() + sizeof params, lights.data(), lights.size() * sizeof lights[0]);
   const Buffer& position = buffers.at("pixel_position");
   const glm::ivec3 extent = position.extent;
   const size_t pixels = size_t(extent.x) * size_t(extent.y);
-  GlBuffer lightBlock(gl, createBuffer(gl, block.size(), block.data()));
+  GlBuffer lightBlock(gl, createBlock(gl, params, lights));
   GlBuffer coneBlock(gl, createBuffer(gl, cones.size() * sizeof cones[0], cones.data()));
   GlBuffer objectBlock(gl, createBuffer(gl, objects.size() * sizeof objects[0], objects.data()));
   GlBuffer positions(gl, wordsBuffer(gl, position));

@@ -92,38 +92,49 @@ std::vector<const Buffer*> buffersOf(const BufferSet& set, std::string_view stag
   return out;
 }
 
-void runStages(const Scene& scene, const Settings& settings, tools::BackendChoice& backend,
-               std::string_view until, BufferSet& buffers) {
-  const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
-  const StageContext ctx{scene, settings, triangles};
-  for (const validation::StageFunctions& stage : validation::stageFunctions()) {
-    if (backend.gpu)
-      stage.gpu(*backend.context, ctx, buffers);
-    else
-      stage.cpu(ctx, buffers);
-    if (until == stage.name) return;
+// The stages up to `until` on the backend the options pick (saying why when auto falls back).
+struct StageRun {
+  Scene scene;
+  tools::BackendChoice backend;
+  BufferSet buffers;
+  double seconds = 0.0;  // running the stages
+  std::string backendName() const {
+    return backend.gpu ? "gpu: " + backend.context->renderer() : "cpu";
   }
+};
+
+StageRun runStages(const Common& c, std::string_view until) {
+  // Input first: a bad scene or --set fails before any backend starts.
+  Scene scene = loadWithOverrides(c);
+  const Settings settings = makeSettings(c);
+  StageRun run{
+      std::move(scene), tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl)), {}, 0.0};
+  if (!run.backend.note.empty()) std::cerr << "voxgi: " << run.backend.note << "\n";
+  const auto start = std::chrono::steady_clock::now();
+  const VoxelTriangles triangles = prepareVoxelTriangles(run.scene, run.scene.grid);
+  const StageContext ctx{run.scene, settings, triangles};
+  for (const validation::StageFunctions& stage : validation::stageFunctions()) {
+    if (run.backend.gpu)
+      stage.gpu(*run.backend.context, ctx, run.buffers);
+    else
+      stage.cpu(ctx, run.buffers);
+    if (until == stage.name) break;
+  }
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
 }
 
 int cmdVoxelize(const Common& c, const std::string& out, bool sums) {
-  Scene scene = loadWithOverrides(c);
-  const Settings settings = makeSettings(c);
-  auto backend = tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl));
-  if (!backend.note.empty()) std::cerr << "voxgi: " << backend.note << "\n";
-  const auto start = std::chrono::steady_clock::now();
-  BufferSet buffers;
-  runStages(scene, settings, backend, "voxelize", buffers);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const StageRun run = runStages(c, "voxelize");
   size_t occupied = 0;
-  for (uint32_t w : buffers.at("weight_sum").words) occupied += w != 0u;
-  writeVdb(out, buffersOf(buffers, "voxelize", sums), scene.grid,
+  for (uint32_t w : run.buffers.at("weight_sum").words) occupied += w != 0u;
+  writeVdb(out, buffersOf(run.buffers, "voxelize", sums), run.scene.grid,
            {{"voxgi_mode", c.mode},
-            {"voxgi_backend", backend.gpu ? backend.context->renderer() : "cpu"}});
-  std::cout << "voxelized " << scene.triangleCount() << " triangles into " << scene.grid.resolution
-            << "^3 (" << c.mode << ", "
-            << (backend.gpu ? "gpu: " + backend.context->renderer() : "cpu") << "): " << occupied
-            << " occupied voxels in " << seconds << " s -> " << out << "\n";
+            {"voxgi_backend", run.backend.gpu ? run.backend.context->renderer() : "cpu"}});
+  std::cout << "voxelized " << run.scene.triangleCount() << " triangles into "
+            << run.scene.grid.resolution << "^3 (" << c.mode << ", " << run.backendName()
+            << "): " << occupied << " occupied voxels in " << run.seconds << " s -> " << out
+            << "\n";
   return kExitOk;
 }
 
@@ -147,14 +158,10 @@ int cmdDiff(const Common& c, const std::string& stage, const std::string& json,
 
 int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
   if (findStage(stage) == nullptr) throw InputError("--stage", "", "unknown stage '" + stage + "'");
-  Scene scene = loadWithOverrides(c);
-  const Settings settings = makeSettings(c);
-  auto backend = tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl));
-  BufferSet buffers;
-  runStages(scene, settings, backend, stage, buffers);
+  const StageRun run = runStages(c, stage);
   std::filesystem::create_directories(dir);
   for (const std::string& path :
-       writeBuffers(dir + "/" + stage, buffersOf(buffers, stage, true), scene.grid))
+       writeBuffers(dir + "/" + stage, buffersOf(run.buffers, stage, true), run.scene.grid))
     std::cout << "wrote " << path << "\n";
   return kExitOk;
 }
@@ -169,28 +176,18 @@ std::string variancePath(const std::string& out) {
 
 Image imageOf(const Buffer& color) {
   Image image(color.extent.x, color.extent.y);
-  for (size_t e = 0; e < image.pixels.size(); ++e)
-    image.pixels[e] = {color.get<float>(e, 0), color.get<float>(e, 1), color.get<float>(e, 2)};
+  for (size_t e = 0; e < image.pixels.size(); ++e) image.pixels[e] = color.vec3At(e);
   return image;
 }
 
 // Voxel cone tracing: every stage up to compose on the chosen backend.
 int cmdRenderVct(const Common& c, const std::string& out, const std::string& png) {
-  const Scene scene = loadWithOverrides(c);
-  const Settings settings = makeSettings(c);
-  auto backend = tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl));
-  if (!backend.note.empty()) std::cerr << "voxgi: " << backend.note << "\n";
-  const auto start = std::chrono::steady_clock::now();
-  BufferSet buffers;
-  runStages(scene, settings, backend, "compose", buffers);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const Image image = imageOf(buffers.at("color"));
+  const StageRun run = runStages(c, "compose");
+  const Image image = imageOf(run.buffers.at("color"));
   writeExr(out, image);
   if (!png.empty()) writePng(png, image);
-  std::cout << "cone traced " << scene.camera.width << "x" << scene.camera.height << " at "
-            << scene.grid.resolution << "^3 ("
-            << (backend.gpu ? "gpu: " + backend.context->renderer() : "cpu") << ") in " << seconds
+  std::cout << "cone traced " << run.scene.camera.width << "x" << run.scene.camera.height << " at "
+            << run.scene.grid.resolution << "^3 (" << run.backendName() << ") in " << run.seconds
             << " s -> " << out << "\n";
   return kExitOk;
 }

@@ -33,7 +33,11 @@ VOXGI_FN float exp2Approx(float x) {
   precise float i = floor(c);
   precise float g = (c - i - 0.5f) * 0.69314718f;
   precise float p =
-      1.0f + g * (1.0f + g * (0.5f + g * (0.16666667f + g * (0.041666667f + g * (0.0083333333f + g * (0.0013888889f + g * 0.00019841270f))))));
+      1.0f +
+      g * (1.0f +
+           g * (0.5f + g * (0.16666667f +
+                            g * (0.041666667f +
+                                 g * (0.0083333333f + g * (0.0013888889f + g * 0.00019841270f))))));
   precise float r = ldexp(p * 1.4142136f, int(i));
   return r;
 }
@@ -49,7 +53,12 @@ VOXGI_FN float powApprox(float x, float y) {
 VOXGI_FN float acosApprox(float x) {
   precise float a = min(abs(x), 1.0f);
   precise float poly =
-      1.5707963050f + a * (-0.2145988016f + a * (0.0889789874f + a * (-0.0501743046f + a * (0.0308918810f + a * (-0.0170881256f + a * (0.0066700901f + a * -0.0012624911f))))));
+      1.5707963050f +
+      a * (-0.2145988016f +
+           a * (0.0889789874f +
+                a * (-0.0501743046f +
+                     a * (0.0308918810f +
+                          a * (-0.0170881256f + a * (0.0066700901f + a * -0.0012624911f))))));
   precise float r = sqrt(1.0f - a) * poly;
   if (x < 0.0f) r = 3.14159265f - r;
   return r;

@@ -11,19 +11,28 @@
 
 VOXGI_NAMESPACE_BEGIN
 
+// One march's result.
+struct ConeHit {
+  vec3 radiance;    // composited radiance, background included
+  float occlusion;  // composited opacity
+  float ambient;    // AO delta along this cone
+};
+
 const int kMarchRadiance = 0;
-const int kMarchFirstHit = 1;   // seed 000 §5.4.4: stop at the first sample with opacity > 1/100
-const int kMarchShadow = 2;     // opacity only
-const int kMarchShadowKahl = 3; // opacity times smoothstep(0, max distance, sqrt(t) strength)
+const int kMarchFirstHit = 1;    // seed 000 §5.4.4: stop at the first sample with opacity > 1/100
+const int kMarchShadow = 2;      // opacity only
+const int kMarchShadowKahl = 3;  // opacity times smoothstep(0, max distance, sqrt(t) strength)
 
 VOXGI_FN vec4 lerp4(vec4 a, vec4 b, float t) {
   precise vec4 r = a + (b - a) * t;
   return r;
 }
 
-// Voxel v of `level` (0: the radiance volume) and `face` (directional pyramid), 0 outside.
-VOLUME_FN vec4 pyramidVoxel(VOLUMES_IN int level, int face, ivec3 v, int size) {
-  if (v.x < 0 || v.y < 0 || v.z < 0 || v.x >= size || v.y >= size || v.z >= size) return vec4(0.0f);
+// Voxel v of `level` (0: the radiance volume) and `face` (directional pyramid); 0 outside the
+// grid unless the caller already knows v is inside.
+VOLUME_FN vec4 pyramidVoxel(VOLUMES_IN int level, int face, ivec3 v, int size, bool inside) {
+  if (!inside && (v.x < 0 || v.y < 0 || v.z < 0 || v.x >= size || v.y >= size || v.z >= size))
+    return vec4(0.0f);
   return FETCH(pyramidAt)(level, face, v);
 }
 
@@ -33,26 +42,17 @@ VOLUME_FN vec4 sampleTrilinear(VOLUMES_IN int level, int face, vec3 p, int size)
   precise vec3 base = floor(q);
   precise vec3 f = q - base;
   ivec3 i = ivec3(base);
-  vec4 c000, c100, c010, c110, c001, c101, c011, c111;
-  if (i.x >= 0 && i.y >= 0 && i.z >= 0 && i.x + 1 < size && i.y + 1 < size && i.z + 1 < size) {
-    c000 = FETCH(pyramidAt)(level, face, i);
-    c100 = FETCH(pyramidAt)(level, face, i + ivec3(1, 0, 0));
-    c010 = FETCH(pyramidAt)(level, face, i + ivec3(0, 1, 0));
-    c110 = FETCH(pyramidAt)(level, face, i + ivec3(1, 1, 0));
-    c001 = FETCH(pyramidAt)(level, face, i + ivec3(0, 0, 1));
-    c101 = FETCH(pyramidAt)(level, face, i + ivec3(1, 0, 1));
-    c011 = FETCH(pyramidAt)(level, face, i + ivec3(0, 1, 1));
-    c111 = FETCH(pyramidAt)(level, face, i + ivec3(1, 1, 1));
-  } else {  // at the border: voxels outside the grid are empty
-    c000 = pyramidVoxel(VOLUMES level, face, i, size);
-    c100 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 0, 0), size);
-    c010 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 0), size);
-    c110 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 1, 0), size);
-    c001 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 0, 1), size);
-    c101 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 0, 1), size);
-    c011 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 1), size);
-    c111 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 1, 1), size);
-  }
+  // Away from the border (nearly every tap) the 8 voxels skip their bounds tests.
+  bool inside =
+      i.x >= 0 && i.y >= 0 && i.z >= 0 && i.x + 1 < size && i.y + 1 < size && i.z + 1 < size;
+  vec4 c000 = pyramidVoxel(VOLUMES level, face, i, size, inside);
+  vec4 c100 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 0, 0), size, inside);
+  vec4 c010 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 0), size, inside);
+  vec4 c110 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 1, 0), size, inside);
+  vec4 c001 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 0, 1), size, inside);
+  vec4 c101 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 0, 1), size, inside);
+  vec4 c011 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 1), size, inside);
+  vec4 c111 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 1, 1), size, inside);
   vec4 y0 = lerp4(lerp4(c000, c100, f.x), lerp4(c010, c110, f.x), f.y);
   vec4 y1 = lerp4(lerp4(c001, c101, f.x), lerp4(c011, c111, f.x), f.y);
   return lerp4(y0, y1, f.z);
@@ -117,16 +117,16 @@ VOLUME_FN ConeHit marchCone(VOLUMES_IN vec3 origin, vec3 dir, float tanHalf, flo
     vec4 s = sampleCone(VOLUMES q, diameter, dir, params);
     float a = min(s.a, 1.0f);
     if (a > 0.0f) {
-      precise float corrected = beta == 1.0f || a >= 1.0f ? a : 1.0f - powApprox(1.0f - a, beta);
+      // Kahl's shadow falloff replaces the step correction (seed 000 §5.4.4).
+      precise float corrected = kind == kMarchShadowKahl
+                                    ? a * smoothstep01(sqrt(t) * params.shadow.y / maxDistance)
+                                : beta == 1.0f || a >= 1.0f ? a
+                                                            : 1.0f - powApprox(1.0f - a, beta);
       if (kind == kMarchFirstHit && corrected > 0.01f) {
         precise vec3 surface = vec3(s) / s.a;
         hit.radiance = surface;
         hit.occlusion = 1.0f;
         return hit;
-      }
-      if (kind == kMarchShadowKahl) {
-        precise float fade = smoothstep01(sqrt(t) * params.shadow.y / maxDistance);
-        corrected = a * fade;
       }
       precise float remaining = 1.0f - hit.occlusion;
       if (kind <= kMarchFirstHit) {
@@ -201,9 +201,11 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
       precise float rl = dot3(mirror, toLight);
       precise float lobe = (shininess + 2.0f) * (0.5f * kInvPi) * powApprox(rl, shininess);
       r.directSpecular = r.directSpecular + arriving * lobe;
-      // Seed 000 eq. 5.6: (1 - max(0, angle - grace) / pi)^q with grace = 0.008 pi shininess.
-      precise float late = max(acosApprox(rl) - params.specular.y * shininess, 0.0f);
-      lightAngle = lightAngle + powApprox(1.0f - late * kInvPi, params.specular.x);
+      if (params.modes.w == 1) {
+        // Seed 000 eq. 5.6: (1 - max(0, angle - grace) / pi)^q with grace = 0.008 pi shininess.
+        precise float late = max(acosApprox(rl) - params.specular.y * shininess, 0.0f);
+        lightAngle = lightAngle + powApprox(1.0f - late * kInvPi, params.specular.x);
+      }
     }
   }
   vec3 t;
@@ -224,8 +226,8 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
   if (params.modes.y == 1) r.indirectDiffuse = r.indirectDiffuse * minVisibility;
   if (weights > 0.0f) r.ambientOcclusion = ambient / weights;
   if (specular) {
-    ConeHit h = marchCone(VOLUMES origin, mirror, object.specular.x, maxDistance, kMarchRadiance,
-                          params);
+    ConeHit h =
+        marchCone(VOLUMES origin, mirror, object.specular.x, maxDistance, kMarchRadiance, params);
     r.indirectSpecular = params.modes.w == 1 ? h.radiance * lightAngle : h.radiance;
   }
   return r;

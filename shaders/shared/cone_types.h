@@ -1,4 +1,4 @@
-// The records the cone tracer exchanges with the host and with compose (std430 where uploaded),
+// The records the cone tracer exchanges with the host (std430 where uploaded),
 // separate from shaders/shared/cone_kernel.h so a shader can declare its FETCH functions
 // (pyramidAt, lightAt, coneAt) between the two.
 #ifndef VOXGI_CONE_TYPES_H
@@ -9,14 +9,17 @@ VOXGI_NAMESPACE_BEGIN
 
 // std430; common/kernel_params.cpp fills it from the settings.
 struct ConeTraceParams {
-  ivec4 grid;        // x: N, y: pyramid levels (log2 N), z: 1 directional pyramid, w: diffuse cones
-  ivec4 modes;       // x: lights, y: 1 first-hit diffuse, z: 1 Kahl shadow falloff, w: 1 light-angle specular
-  ivec4 limits;      // x: 1 ambient occlusion, y: steps per cone at most, zw: 0
-  vec4 march;        // x: step factor beta, y: start offset along the normal (voxels), z: min step, w: max distance
-  vec4 shadow;       // x: tan(half shadow aperture), y: Kahl strength, z: AO lambda, w: voxel size (world)
-  vec4 specular;     // x: Kahl falloff exponent q, y: Kahl angular grace per unit shininess
-  vec4 background;   // rgb: radiance where a cone leaves the grid
-  vec4 camera;       // xyz: camera position, voxel-local
+  ivec4 grid;     // x: N, y: pyramid levels (log2 N), z: 1 directional pyramid, w: diffuse cones
+  ivec4 modes;    // x: lights, y: 1 first-hit diffuse, z: 1 Kahl shadow falloff, w: 1 light-angle
+                  // specular
+  ivec4 limits;   // x: 1 ambient occlusion, y: steps per cone at most, zw: 0
+  vec4 march;     // x: step factor beta, y: start offset along the normal (voxels), z: min step, w:
+                  // max distance
+  vec4 shadow;    // x: tan(half shadow aperture), y: Kahl strength, z: AO lambda, w: voxel size
+                  // (world)
+  vec4 specular;  // x: Kahl falloff exponent q, y: Kahl angular grace per unit shininess
+  vec4 background;  // rgb: radiance where a cone leaves the grid
+  vec4 camera;      // xyz: camera position, voxel-local
 };
 
 // One diffuse cone (std430): direction in the tangent frame (z along the normal).
@@ -32,17 +35,11 @@ struct ObjectData {
 
 // What trace_cones leaves for compose: irradiance terms still to be multiplied by the material.
 struct PixelLight {
-  vec3 directDiffuse;     // sum over lights of E cos V / pi
-  vec3 directSpecular;    // sum over lights of E cos V (n+2)/(2 pi) max(r.l, 0)^n
-  vec3 indirectDiffuse;   // cone-traced E / pi
-  vec3 indirectSpecular;  // cone-traced radiance around the mirror direction
-  float ambientOcclusion; // delta of seed 001 §4.2, weighted over the diffuse cones
-};
-
-struct ConeHit {
-  vec3 radiance;   // composited radiance, background included
-  float occlusion; // composited opacity
-  float ambient;   // AO delta along this cone
+  vec3 directDiffuse;      // sum over lights of E cos V / pi
+  vec3 directSpecular;     // sum over lights of E cos V (n+2)/(2 pi) max(r.l, 0)^n
+  vec3 indirectDiffuse;    // cone-traced E / pi
+  vec3 indirectSpecular;   // cone-traced radiance around the mirror direction
+  float ambientOcclusion;  // delta of seed 001 §4.2, weighted over the diffuse cones
 };
 
 VOXGI_NAMESPACE_END
