@@ -45,8 +45,9 @@ using Words = std::vector<uint32_t, ZeroedAllocator<uint32_t>>;
 enum class ScalarType { u32, i32, f32 };
 const char* scalarTypeName(ScalarType t);
 
-// Which scene feature (or setting) a buffer depends on: without it the buffer is not produced.
-enum class BufferNeed { always, emission, isotropic, anisotropic, glossy, ambient_occlusion };
+// Which effect of the plan (common/effect_plan.h) a buffer depends on: without it the buffer is not
+// produced.
+enum class BufferNeed { always, emission, isotropic, anisotropic, specular, ambient_occlusion };
 
 // How a buffer's elements are laid out (common/pyramid.h has the level offsets):
 // volume: N^3 voxels; mips: levels 1..log2(N) of an N^3 volume, level l is (N>>l)^3, one after

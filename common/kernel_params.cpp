@@ -28,7 +28,7 @@ shared::ConeTraceParams coneTraceParams(const StageContext& ctx, int lightCount,
           glm::ivec4(lightCount, s.diffuseCones == DiffuseCones::first_hit ? 1 : 0,
                      s.shadowFalloff == ShadowFalloff::kahl2019 ? 1 : 0,
                      s.specularBrdf == SpecularBrdf::light_angle ? 1 : 0),
-          glm::ivec4(s.ambientOcclusion == AmbientOcclusion::on ? 1 : 0, steps, 0, 0),
+          glm::ivec4(ctx.plan.ambientOcclusion ? 1 : 0, steps, 0, 0),
           glm::vec4(s.coneStep, s.coneOffset, minStep, maxDistance),
           glm::vec4(float(std::tan(halfShadow)), s.shadowStrength, s.ambientLambda,
                     float(ctx.scene.grid.voxelSize())),
@@ -38,11 +38,11 @@ shared::ConeTraceParams coneTraceParams(const StageContext& ctx, int lightCount,
 }
 
 // docs/stages/trace_cones.md: the specular cone holds half the Phong lobe's energy.
-std::vector<shared::ObjectData> objectData(const Scene& scene) {
+std::vector<shared::ObjectData> objectData(const Scene& scene, bool everyObject) {
   std::vector<shared::ObjectData> out(scene.meshes.size() + 1, {glm::vec4(0.0f)});
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
     const Material& mat = scene.materials.at(scene.meshes[m].material);
-    if (!mat.glossy()) continue;
+    if (!mat.glossy() && !everyObject) continue;
     // P(cos alpha > c) = 1 - c^(n+1) for a Phong lobe cos^n: half the energy within c =
     // 2^(-1/(n+1)).
     const double c = std::pow(2.0, -1.0 / (double(mat.shininess) + 1.0));
@@ -66,10 +66,17 @@ shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCo
 ConeTraceSetup prepareConeTrace(const StageContext& ctx) {
   ConeTraceSetup s{voxelLights(ctx.scene),
                    coneData(diffuseCones(ctx.settings.cones)),
-                   objectData(ctx.scene),
+                   objectData(ctx.scene, ctx.plan.full),
                    {}};
   s.params =
       coneTraceParams(ctx, int(s.lights.size()), int(s.cones.size()), cameraRays(ctx.scene).origin);
+  return s;
+}
+
+ConeTraceSetup prepareBounce(const StageContext& ctx) {
+  ConeTraceSetup s{{}, coneData(diffuseCones(ctx.settings.cones)), {}, {}};
+  s.params = coneTraceParams(ctx, 0, int(s.cones.size()), glm::vec3(0.0f));
+  s.params.limits.x = 0;  // no ambient occlusion
   return s;
 }
 

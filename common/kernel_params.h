@@ -15,10 +15,14 @@ struct ConeTraceSetup {
   std::vector<shared::LightData> lights;
   std::vector<shared::ConeData> cones;
   // One record per object id (index 0: the background): the specular cone's tan(aperture / 2),
-  // from the shininess so the cone holds half the Phong lobe's energy.
+  // from the shininess so the cone holds half the Phong lobe's energy; for glossy materials only,
+  // or for every object under plan.mode=full.
   std::vector<shared::ObjectData> objects;
   shared::ConeTraceParams params;
 };
 ConeTraceSetup prepareConeTrace(const StageContext& ctx);
+// The same for the bounce stage: the diffuse cone set only (no lights, objects or ambient
+// occlusion).
+ConeTraceSetup prepareBounce(const StageContext& ctx);
 
 }  // namespace voxgi

@@ -11,18 +11,6 @@ size_t Scene::triangleCount() const {
   return n;
 }
 
-bool Scene::hasEmission() const {
-  for (const Mesh& m : meshes)
-    if (!m.triangles.empty() && materials.at(m.material).emissive()) return true;
-  return false;
-}
-
-bool Scene::hasGlossy() const {
-  for (const Mesh& m : meshes)
-    if (!m.triangles.empty() && materials.at(m.material).glossy()) return true;
-  return false;
-}
-
 std::pair<glm::dvec3, glm::dvec3> Scene::bounds() const {
   glm::dvec3 lo(std::numeric_limits<double>::max());
   glm::dvec3 hi(std::numeric_limits<double>::lowest());

@@ -66,10 +66,11 @@ struct Scene {
   Camera camera;
   glm::vec3 background{0.0f};
   GridSpec grid;  // always set: from the file or fitted around the geometry
+  // The file's "settings" as "key=value" (common/settings.h keys, already validated); applied
+  // before a --preset and --set.
+  std::vector<std::string> settings;
 
   size_t triangleCount() const;
-  bool hasEmission() const;
-  bool hasGlossy() const;  // a mesh with triangles has a glossy material
   // Bounds of all mesh vertices; min > max when there is no geometry.
   std::pair<glm::dvec3, glm::dvec3> bounds() const;
 };

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
+#include "common/settings.h"
 
 namespace voxgi {
 namespace {
@@ -168,6 +169,20 @@ Camera readCamera(const Field& f) {
   return c;
 }
 
+// "settings": {"bounce.count": 1, "mip.mode": "isotropic"}: each value (a number or a string)
+// checked now, so a bad one fails at load time naming settings.KEY.
+std::vector<std::string> readSettings(const Field& f) {
+  if (!f.value.is_object()) f.fail("must be an object of parameter -> value");
+  std::vector<std::string> out;
+  Settings check;
+  for (const auto& [key, v] : f.value.items()) {
+    if (!v.is_string() && !v.is_number()) f.at(key).fail("must be a number or a string");
+    out.push_back(key + "=" + (v.is_string() ? v.get<std::string>() : v.dump()));
+    applySetting(check, out.back(), f.file, "settings.");
+  }
+  return out;
+}
+
 }  // namespace
 
 int readResolution(const std::string& file, const std::string& field, int64_t n) {
@@ -230,7 +245,8 @@ Scene loadScene(const std::string& path) {
     throw InputError(path, "", std::string("malformed JSON: ") + e.what());
   }
   const Field root{path, doc, ""};
-  root.allowKeys({"meshes", "materials", "lights", "camera", "background", "grid", "description"});
+  root.allowKeys(
+      {"meshes", "materials", "lights", "camera", "background", "grid", "settings", "description"});
   if (root.has("materials")) {
     const Field mats = root.at("materials");
     if (!mats.value.is_object()) mats.fail("must be an object of name -> material");
@@ -275,6 +291,7 @@ Scene loadScene(const std::string& path) {
   }
   if (root.has("camera")) scene.camera = readCamera(root.at("camera"));
   if (root.has("background")) scene.background = root.at("background").color(0.0, 1e9);
+  if (root.has("settings")) scene.settings = readSettings(root.at("settings"));
   validateGeometry(scene);
   int resolution = 64;
   if (root.has("grid")) {

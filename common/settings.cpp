@@ -106,6 +106,10 @@ const std::vector<Param>& params() {
              "ambient occlusion from the diffuse cones, multiplied into indirect diffuse"),
       number("ao.lambda", &Settings::ambientLambda, 0.0f, 100.0f,
              "ambient occlusion falloff 1 / (1 + lambda r), r the cone radius in voxels"),
+      number("bounce.count", &Settings::bounceCount, 0, 8,
+             "extra diffuse bounces, each cone-traced from every voxel (docs/stages/bounce.md)"),
+      choice("plan.mode", &Settings::planMode, {"planned", "full"},
+             "skip effects the scene does not use, or compute all (docs/effect-plan.md)"),
   };
   return table;
 }
@@ -130,17 +134,12 @@ const std::vector<std::pair<std::string, std::vector<std::string>>>& presets() {
 
 }  // namespace
 
-VoxelizeMode parseVoxelizeMode(const std::string& text) {
-  if (text == "conservative") return VoxelizeMode::conservative;
-  if (text == "antialiased") return VoxelizeMode::antialiased;
-  throw InputError("--mode", "", "must be conservative or antialiased, got '" + text + "'");
-}
-
 const char* voxelizeModeName(VoxelizeMode mode) {
   return mode == VoxelizeMode::conservative ? "conservative" : "antialiased";
 }
 
-void applySetting(Settings& settings, const std::string& assignment, const std::string& source) {
+void applySetting(Settings& settings, const std::string& assignment, const std::string& source,
+                  const std::string& fieldPrefix) {
   const size_t eq = assignment.find('=');
   if (eq == std::string::npos)
     throw InputError(source, "", "expected key=value, got '" + assignment + "'");
@@ -148,10 +147,11 @@ void applySetting(Settings& settings, const std::string& assignment, const std::
   for (const Param& p : params())
     if (p.key == key) {
       if (!p.set(settings, value))
-        throw InputError(source, key, "must be in " + p.range + ", got '" + value + "'");
+        throw InputError(source, fieldPrefix + key,
+                         "must be in " + p.range + ", got '" + value + "'");
       return;
     }
-  throw InputError(source, key, "unknown parameter (voxgi render --help lists them)");
+  throw InputError(source, fieldPrefix + key, "unknown parameter (voxgi render --help lists them)");
 }
 
 void applyPreset(Settings& settings, const std::string& preset) {
@@ -162,6 +162,15 @@ void applyPreset(Settings& settings, const std::string& preset) {
     }
   throw InputError("--preset", "",
                    "must be default, kahl2019 or villegas2017, got '" + preset + "'");
+}
+
+Settings resolveSettings(const std::vector<std::string>& fileSettings, const std::string& file,
+                         const std::string& preset, const std::vector<std::string>& sets) {
+  Settings settings;
+  for (const std::string& a : fileSettings) applySetting(settings, a, file, "settings.");
+  applyPreset(settings, preset);
+  for (const std::string& a : sets) applySetting(settings, a, "--set");
+  return settings;
 }
 
 std::vector<std::string> settingValues(const Settings& settings) {

@@ -16,6 +16,7 @@ enum class DiffuseCones { weighted, first_hit };          // first_hit: seed 000
 enum class ShadowFalloff { plain, kahl2019 };    // kahl2019: seed 000 §5.4.4 smoothstep/sqrt
 enum class SpecularBrdf { phong, light_angle };  // light_angle: seed 000 eq. 5.6
 enum class AmbientOcclusion { off, on };         // seed 001 §4.2
+enum class PlanMode { planned, full };           // common/effect_plan.h
 
 struct Settings {
   VoxelizeMode voxelizeMode = VoxelizeMode::conservative;
@@ -38,16 +39,24 @@ struct Settings {
   float specularFalloff = 10.0f;  // Kahl's shininess_falloff q
   AmbientOcclusion ambientOcclusion = AmbientOcclusion::off;
   float ambientLambda = 0.1f;  // AO falloff 1 / (1 + lambda r), r in voxels
+  // bounce
+  int bounceCount = 0;  // extra diffuse bounces cone-traced per voxel
+  // full: every optional effect is computed even where the plan shows it contributes nothing
+  PlanMode planMode = PlanMode::planned;
 };
 
-VoxelizeMode parseVoxelizeMode(const std::string& text);  // throws InputError
 const char* voxelizeModeName(VoxelizeMode mode);
 
-// Applies "key=value"; throws InputError naming `source` (e.g. "--set") for an unknown key, a
-// malformed value or one outside the key's range.
-void applySetting(Settings& settings, const std::string& assignment, const std::string& source);
+// Applies "key=value"; throws InputError naming `source` (e.g. "--set" or the scene file) and the
+// key after `fieldPrefix` for an unknown key, a malformed value or one outside the key's range.
+void applySetting(Settings& settings, const std::string& assignment, const std::string& source,
+                  const std::string& fieldPrefix = "");
 // Applies a named preset: "default", "kahl2019" or "villegas2017".
 void applyPreset(Settings& settings, const std::string& preset);
+// Defaults, then a scene file's "settings" (`file` names it in errors), the preset and the --set
+// assignments: the later choice wins.
+Settings resolveSettings(const std::vector<std::string>& fileSettings, const std::string& file,
+                         const std::string& preset, const std::vector<std::string>& sets);
 // The current value of every key, "key=value", in table order.
 std::vector<std::string> settingValues(const Settings& settings);
 // One line per key: key, default, range and meaning (for --help), and the presets.

@@ -23,7 +23,10 @@ glm::vec3 rgbOr0(const Buffer* b, size_t e) {
 void compose(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, "compose");
   const Buffer& objectId = buffers.at("object_id");
-  const Buffer* ambient = optional(buffers, "ambient_occlusion");
+  // AO is applied only when asked (plan.mode=full computes it anyway).
+  const Buffer* ambient = ctx.settings.ambientOcclusion == AmbientOcclusion::on
+                              ? optional(buffers, "ambient_occlusion")
+                              : nullptr;
   const Buffer *albedo = optional(buffers, "pixel_albedo"),
                *specular = optional(buffers, "pixel_specular"),
                *emission = optional(buffers, "pixel_emission"),

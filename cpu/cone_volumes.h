@@ -1,7 +1,7 @@
 // What the shared cone tracer (shaders/shared/cone_kernel.h) reads on the CPU, through FETCH:
 // pyramid level 0 is the radiance volume, level l >= 1 the pyramid's level l (common/mips.h
-// layout, faces side by side along x). Used by the trace_cones stage and by tests that call the
-// kernel directly.
+// layout, faces side by side along x). Used by the trace_cones and bounce stages and by tests that
+// call the kernels directly.
 #pragma once
 
 #include <bit>
@@ -25,14 +25,13 @@ struct ConeVolumes {
   const std::vector<shared::LightData>& lights;
   const std::vector<shared::ConeData>& cones;
 
-  // `buffers` holds radiance and the pyramid `mip` asks for.
-  ConeVolumes(const BufferSet& buffers, MipMode mip, int resolution,
+  // `pyramid`: radiance_mips or radiance_mips6 of `radiance`, as `mip` asks.
+  ConeVolumes(const Buffer& radiance, const Buffer& pyramidBuffer, MipMode mip, int resolution,
               const std::vector<shared::LightData>& l, const std::vector<shared::ConeData>& c)
       : faces(mip == MipMode::anisotropic ? 6 : 1), n(resolution), lights(l), cones(c) {
-    const Words& pyramid =
-        buffers.at(mip == MipMode::anisotropic ? "radiance_mips6" : "radiance_mips").words;
+    const Words& pyramid = pyramidBuffer.words;
     if (faces > 1) interleaved.resize(pyramid.size());
-    levels[0] = buffers.at("radiance").words.data();
+    levels[0] = radiance.words.data();
     for (int level = 1; level <= mipLevelCount(n); ++level) {
       const size_t offset = 4 * mipLevelOffset(n, level, faces), s = size_t(n >> level);
       if (faces == 1) {

@@ -72,7 +72,7 @@ void gbuffer(const StageContext& ctx, BufferSet& buffers) {
   const CameraRays& cam = g.camera;
   const RayScene rays(g);
   const glm::ivec3 extent(cam.width, cam.height, 1);
-  const bool emissive = ctx.scene.hasEmission();
+  const bool emissive = ctx.plan.emission;
   Buffer position(bufferSpec("gbuffer", "pixel_position"), extent);
   Buffer normal(bufferSpec("gbuffer", "pixel_normal"), extent);
   Buffer albedo(bufferSpec("gbuffer", "pixel_albedo"), extent);

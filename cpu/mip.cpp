@@ -5,6 +5,7 @@
 #include <tbb/parallel_for.h>
 
 #include "common/mips.h"
+#include "cpu/pyramid.h"
 #include "cpu/stages.h"
 #include "shaders/shared/mip_kernel.h"
 
@@ -27,7 +28,8 @@ struct Children {
   }
 };
 
-// Builds every level of a pyramid with `faces` faces (1: isotropic).
+}  // namespace
+
 Buffer buildPyramid(const BufferSpec& spec, const Buffer& radiance, int n, int faces) {
   Buffer out(spec, shapeExtent(spec.shape, n, {}));
   for (int level = 1; level <= mipLevelCount(n); ++level) {
@@ -53,17 +55,11 @@ Buffer buildPyramid(const BufferSpec& spec, const Buffer& radiance, int n, int f
   return out;
 }
 
-}  // namespace
-
 void mip(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, "mip");
-  const int n = ctx.scene.grid.resolution;
-  const Buffer& radiance = buffers.at("radiance");
-  if (ctx.settings.mip == MipMode::isotropic)
-    buffers["radiance_mips"] = buildPyramid(bufferSpec("mip", "radiance_mips"), radiance, n, 1);
-  else
-    buffers["radiance_mips6"] =
-        buildPyramid(bufferSpec("mip", "radiance_mips6"), radiance, n, shared::kFaces);
+  const char* name = pyramidName(ctx.plan.mip);
+  buffers[name] = buildPyramid(bufferSpec("mip", name), buffers.at("radiance"),
+                               ctx.scene.grid.resolution, pyramidFaces(ctx.plan.mip));
 }
 
 }  // namespace voxgi::cpu

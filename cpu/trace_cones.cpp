@@ -1,11 +1,13 @@
-// CPU trace_cones stage: the shared kernel (shaders/shared/cone_kernel.h) per pixel. Each pixel
-// is written by one task, so the image does not depend on the thread count.
+// CPU trace_cones stage: the shared kernel (shaders/shared/trace_cones_kernel.h) per pixel. Each
+// pixel is written by one task, so the image does not depend on the thread count.
 #include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
 
 #include "common/kernel_params.h"
+#include "common/mips.h"
 #include "cpu/cone_volumes.h"
 #include "cpu/stages.h"
+#include "shaders/shared/trace_cones_kernel.h"
 
 namespace voxgi::cpu {
 void trace_cones(const StageContext& ctx, BufferSet& buffers) {
@@ -13,7 +15,8 @@ void trace_cones(const StageContext& ctx, BufferSet& buffers) {
   const Scene& scene = ctx.scene;
   const int n = scene.grid.resolution;
   const ConeTraceSetup setup = prepareConeTrace(ctx);
-  const ConeVolumes volumes(buffers, ctx.settings.mip, n, setup.lights, setup.cones);
+  const ConeVolumes volumes(buffers.at("radiance"), buffers.at(pyramidName(ctx.plan.mip)),
+                            ctx.plan.mip, n, setup.lights, setup.cones);
 
   const Buffer& position = buffers.at("pixel_position");
   const Buffer& normal = buffers.at("pixel_normal");
@@ -21,8 +24,7 @@ void trace_cones(const StageContext& ctx, BufferSet& buffers) {
   const glm::ivec3 extent = position.extent;
   std::map<std::string, Buffer, std::less<>> out;
   for (const BufferSpec* spec : stageBuffers("trace_cones"))
-    if (bufferNeeded(*spec, scene, ctx.settings))
-      out[std::string(spec->name)] = Buffer(*spec, extent);
+    if (bufferNeeded(*spec, ctx.plan)) out[std::string(spec->name)] = Buffer(*spec, extent);
   const auto find = [&](const char* name) {
     const auto it = out.find(name);
     return it == out.end() ? nullptr : &it->second;

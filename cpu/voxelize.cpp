@@ -91,7 +91,7 @@ void voxelize(const StageContext& ctx, BufferSet& buffers) {
   const int n = grid.resolution;
   checkStageMemory(ctx, "voxelize");
   const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
-  const bool emissive = ctx.triangles.emissionScale > 0.0f;
+  const bool emissive = ctx.plan.emission;  // emissionScale may be 0 under plan.mode=full
   const glm::ivec3 extent(n);
   Buffer weight(bufferSpec("voxelize", "weight_sum"), extent);
   Buffer albedoSum(bufferSpec("voxelize", "albedo_sum"), extent);

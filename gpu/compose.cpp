@@ -13,7 +13,7 @@ void compose(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   const Buffer& objectId = buffers.at("object_id");
   const size_t pixels = objectId.elementCount();
   // The shader's Inputs layout: 7 rgb terms then AO; absent buffers (no glossy, emissive
-  // material or AO) stay 0.
+  // material or AO) stay 0, and so does AO unless ao.mode=on (plan.mode=full computes it anyway).
   constexpr size_t kInputs = 22;
   const char* rgbTerms[] = {"pixel_albedo",     "pixel_specular",  "pixel_emission",
                             "direct_diffuse",   "direct_specular", "indirect_diffuse",
@@ -26,7 +26,8 @@ void compose(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
       for (int c = 0; c < 3; ++c)
         inputs[e * kInputs + 3 * t + size_t(c)] = it->second.get<float>(e, c);
   }
-  if (const auto ao = buffers.find("ambient_occlusion"); ao != buffers.end())
+  if (const auto ao = buffers.find("ambient_occlusion");
+      ao != buffers.end() && ctx.settings.ambientOcclusion == AmbientOcclusion::on)
     for (size_t e = 0; e < pixels; ++e) inputs[e * kInputs + 21] = ao->second.get<float>(e, 0);
 
   GlBuffer ids(gl, createBuffer(gl, objectId.words.size() * 4, objectId.words.data()));

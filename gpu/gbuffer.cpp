@@ -95,7 +95,7 @@ void gbuffer(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   std::vector<float> rgba(size_t(w) * size_t(h) * 4);
   for (int i = 0; i < kTargetCount; ++i) {
     const BufferSpec& spec = bufferSpec("gbuffer", kTargets[i].buffer);
-    if (!bufferNeeded(spec, ctx.scene, ctx.settings)) continue;
+    if (!bufferNeeded(spec, ctx.plan)) continue;
     Buffer out(spec, extent);
     gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
     if (kTargets[i].format == GL_R32UI) {

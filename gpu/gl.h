@@ -7,6 +7,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace voxgi::gpu {
@@ -29,13 +30,20 @@ class GlUnavailable : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// An object that deletes a GL name when it goes out of scope.
+// An object that deletes a GL name when it goes out of scope (deleting name 0 is a no-op in GL).
 template <void (*Delete)(const Gl&, GLuint)>
 class GlName {
  public:
   GlName(const Gl& gl, GLuint id) : gl_(&gl), id_(id) {}
-  GlName(const GlName&) = delete;
-  GlName& operator=(const GlName&) = delete;
+  GlName(GlName&& other) noexcept : gl_(other.gl_), id_(std::exchange(other.id_, 0u)) {}
+  GlName& operator=(GlName&& other) noexcept {
+    if (this != &other) {
+      Delete(*gl_, id_);
+      gl_ = other.gl_;
+      id_ = std::exchange(other.id_, 0u);
+    }
+    return *this;
+  }
   ~GlName() { Delete(*gl_, id_); }
   GLuint get() const { return id_; }
 

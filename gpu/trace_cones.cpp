@@ -23,7 +23,7 @@ void trace_cones(GlContext& context, const StageContext& ctx, BufferSet& buffers
   const Gl& gl = beginStage(context, ctx, "trace_cones");
   const Scene& scene = ctx.scene;
   const int n = scene.grid.resolution;
-  const bool directional = ctx.settings.mip == MipMode::anisotropic;
+  const int faces = pyramidFaces(ctx.plan.mip);
   const ConeTraceSetup setup = prepareConeTrace(ctx);
   const auto& [lights, cones, objects, params] = setup;
 
@@ -38,12 +38,9 @@ void trace_cones(GlContext& context, const StageContext& ctx, BufferSet& buffers
   GlBuffer ids(gl, wordsBuffer(gl, buffers.at("object_id")));
   GlBuffer terms(gl, createBuffer(gl, pixels * kTerms * 4, nullptr));
   GlTexture radiance(gl, uploadVolume(gl, buffers.at("radiance")));
-  const int faces = directional ? 6 : 1;
-  GlTexture pyramid(
-      gl, mipLevelCount(n) == 0
-              ? createVolume(gl, 4, glm::ivec3(1))
-              : uploadPyramid(gl, buffers.at(directional ? "radiance_mips6" : "radiance_mips"), n,
-                              faces));
+  GlTexture pyramid(gl, mipLevelCount(n) == 0
+                            ? createVolume(gl, 4, glm::ivec3(1))
+                            : uploadPyramid(gl, buffers.at(pyramidName(ctx.plan.mip)), n, faces));
 
   Program program(gl, {"trace_cones.comp"});
   program.set("uResolution", n);
@@ -70,7 +67,7 @@ void trace_cones(GlContext& context, const StageContext& ctx, BufferSet& buffers
                                                 {"ambient_occlusion", 12}};
   for (const auto& [name, offset] : layout) {
     const BufferSpec& spec = bufferSpec("trace_cones", name);
-    if (!bufferNeeded(spec, scene, ctx.settings)) continue;
+    if (!bufferNeeded(spec, ctx.plan)) continue;
     Buffer out(spec, extent);
     for (size_t e = 0; e < pixels; ++e)
       for (int c = 0; c < spec.components; ++c)

@@ -38,7 +38,7 @@ void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
                          std::to_string(context.max3dTextureSize()));
   checkStageMemory(ctx, "voxelize", 2.0);  // GPU copies plus the read-back buffers
   const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
-  const bool emissive = ctx.triangles.emissionScale > 0.0f;
+  const bool emissive = ctx.plan.emission;  // emissionScale may be 0 under plan.mode=full
   const auto& tris = ctx.triangles.triangles;
 
   GlBuffer triangles(gl,

@@ -1,26 +1,18 @@
 #version 450 core
-// trace_cones: the shared per-pixel cone tracer (shaders/shared/cone_kernel.h) on the gbuffer.
-// The radiance volume and the pyramid are textures read with texelFetch (trilinear and level
-// blending happen in the shared code, so both backends filter identically).
+// trace_cones: the shared per-pixel cone tracer (shaders/shared/trace_cones_kernel.h) on the
+// gbuffer.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/lighting.h"
 #include "shared/cone_types.h"
+#include "cone_volumes.glsl"
 
-layout(binding = 0) uniform sampler3D uRadiance;
-layout(binding = 1) uniform sampler3D uPyramid;  // texture level l - 1 holds pyramid level l
-layout(location = 0) uniform int uResolution;
 layout(location = 1) uniform int uWidth;
 layout(location = 2) uniform int uHeight;
 
-vec4 pyramidAt(int level, int face, ivec3 v) {
-  if (level == 0) return texelFetch(uRadiance, v, 0);
-  int s = uResolution >> level;
-  return texelFetch(uPyramid, ivec3(v.x + face * s, v.y, v.z), level - 1);
-}
 LightData lightAt(int i);  // defined below, after the buffers
 ConeData coneAt(int i);
 
-#include "shared/cone_kernel.h"
+#include "shared/trace_cones_kernel.h"
 
 layout(std430, binding = 0) readonly buffer Lights {
   ConeTraceParams params;

@@ -36,12 +36,18 @@ TEST(Buffer, ShapesAndStageBytes) {
   EXPECT_EQ(mipLevelOffset(8, 3, 6), 6u * (64u + 8u));
   Scene scene;
   scene.grid.resolution = 4;
-  const Settings settings;
-  EXPECT_EQ(stageBufferBytes("voxelize", scene, settings), 64u * 4u * (1 + 3 + 3 + 1 + 3 + 3));
+  Settings settings;
+  EXPECT_EQ(stageBufferBytes("voxelize", scene, planEffects(scene, settings)),
+            64u * 4u * (1 + 3 + 3 + 1 + 3 + 3));
+  // bounce produces nothing unless asked, then the radiance and the pyramid mip.mode picks.
+  EXPECT_EQ(stageBufferBytes("bounce", scene, planEffects(scene, settings)), 0u);
+  settings.bounceCount = 2;
+  EXPECT_EQ(stageBufferBytes("bounce", scene, planEffects(scene, settings)),
+            4u * 4u * (64u + 6u * (8u + 1u)));
   scene.materials.push_back({});
   scene.materials[0].emission = glm::vec3(1.0f);
   scene.meshes.push_back({"m", {glm::dvec3(0.0)}, {glm::uvec3(0u)}, 0});
-  EXPECT_EQ(stageBufferBytes("voxelize", scene, settings),
+  EXPECT_EQ(stageBufferBytes("voxelize", scene, planEffects(scene, settings)),
             64u * 4u * (1 + 3 + 3 + 3 + 1 + 3 + 3 + 3));
 }
 

@@ -105,6 +105,20 @@ TEST(Cli, DumpWritesEveryBufferOfTheStage) {
 }
 
 }  // namespace
+TEST(Cli, PlanSaysWhatRunsAndWhy) {
+  const CommandResult r = voxgi("plan " + sourcePath("scenes/cornell_box.json"));
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* line : {"in   bounce", "bounce.count=1", "in     emission volume",
+                           "out    specular cone       no glossy material",
+                           "out    shadow cones        no analytic lights"})
+    EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
+  const CommandResult off = voxgi("plan " + sourcePath("scenes/cornell_box.json") +
+                                  " --set bounce.count=0 --set ao.mode=on");
+  EXPECT_NE(off.output.find("out  bounce"), std::string::npos) << off.output;
+  EXPECT_NE(off.output.find("in     ambient occlusion   ao.mode=on"), std::string::npos)
+      << off.output;
+}
+
 TEST(Cli, RenderHelpListsEveryParameterWithItsDefault) {
   const CommandResult r = voxgi("render --help");
   EXPECT_EQ(r.code, 0);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/effect_plan.h"
 #include "common/error.h"
 #include "common/scene_load.h"
 #include "tests/test_scenes.h"
@@ -29,7 +30,10 @@ std::string errorOf(const std::string& json) {
 TEST(SceneLoad, CornellBox) {
   const Scene s = loadScene(sourcePath("scenes/cornell_box.json"));
   EXPECT_EQ(s.triangleCount(), 32u);
-  EXPECT_TRUE(s.hasEmission());
+  EXPECT_TRUE(planEffects(s, Settings{}).emission);
+  EXPECT_EQ(s.settings, std::vector<std::string>{"bounce.count=1"});
+  EXPECT_EQ(resolveSettings(s.settings, s.file, "default", {}).bounceCount, 1);
+  EXPECT_EQ(resolveSettings(s.settings, s.file, "default", {"bounce.count=0"}).bounceCount, 0);
   EXPECT_EQ(s.grid.resolution, 64);
   bool red = false;
   for (const Material& m : s.materials)
@@ -94,6 +98,14 @@ TEST(SceneLoad, ErrorsNameTheFileAndTheField) {
   EXPECT_NE(errorOf(R"({"meshes": [], "grid": {"min": [0,0,0]}})").find("grid"), std::string::npos);
   EXPECT_NE(errorOf(R"({"meshes": [], "camera": {"position": [0,0,0], "look_at": [0,0,0]}})")
                 .find("camera.look_at"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [], "settings": {"bounce.count": 99}})")
+                .find("settings.bounce.count: must be in [0, 8]"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [], "settings": {"cones.sett": "equal7"}})")
+                .find("settings.cones.sett: unknown parameter"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"meshes": [], "settings": {"ao.mode": true}})").find("settings.ao.mode"),
             std::string::npos);
   EXPECT_EQ(errorOf(R"({"meshes": [{"file": "tri.obj"}]})"), "");
   EXPECT_THROW(loadScene("/nonexistent/scene.json"), InputError);

@@ -1,13 +1,15 @@
-// Numerical tests of the cone tracer (shaders/shared/cone_kernel.h) against analytic answers:
-// the white furnace, the form factor of an emitting square, thin-wall leaking, and extremes of
-// the parameters. Tolerances and measured figures are in docs/stages/trace_cones.md.
+// Numerical tests of the cone tracer (shaders/shared/trace_cones_kernel.h) against analytic
+// answers: the white furnace, the form factor of an emitting square, thin-wall leaking, and
+// extremes of the parameters. Tolerances and measured figures are in docs/stages/trace_cones.md.
 #include <cmath>
 #include <numbers>
 
 #include <gtest/gtest.h>
 
 #include "common/kernel_params.h"
+#include "common/mips.h"
 #include "cpu/cone_volumes.h"
+#include "shaders/shared/trace_cones_kernel.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {
@@ -30,8 +32,8 @@ struct Volumes {
   }
   // trace_cones' terms at voxel-local p with normal n, for a non-glossy object.
   shared::PixelLight trace(glm::vec3 p, glm::vec3 n) const {
-    const cpu::ConeVolumes volumes(buffers, settings.mip, scene.grid.resolution, setup.lights,
-                                   setup.cones);
+    const cpu::ConeVolumes volumes(buffers.at("radiance"), buffers.at(pyramidName(settings.mip)),
+                                   settings.mip, scene.grid.resolution, setup.lights, setup.cones);
     return shared::tracePixel(volumes, p, n, shared::ObjectData{glm::vec4(0.0f)}, setup.params);
   }
 };

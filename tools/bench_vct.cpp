@@ -103,9 +103,6 @@ void addBenchVctOptions(CLI::App& cmd, BenchVctOptions& o) {
 }
 
 int runBenchVct(const BenchVctOptions& o) {
-  Settings settings;
-  applyPreset(settings, o.preset);
-  for (const std::string& s : o.sets) applySetting(settings, s, "--set");
   std::unique_ptr<gpu::GlContext> context;
   if (o.gpu) context = gpu::GlContext::create(gpu::GlPlatform::osmesa);
   nlohmann::json rows = nlohmann::json::array();
@@ -118,6 +115,7 @@ int runBenchVct(const BenchVctOptions& o) {
         Scene scene = loadScene(file);
         scene.grid.resolution = n;
         scene.camera.width = scene.camera.height = image;
+        const Settings settings = resolveSettings(scene.settings, scene.file, o.preset, o.sets);
         const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
         const StageContext ctx{scene, settings, tris};
         std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>> runs;

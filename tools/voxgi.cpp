@@ -7,6 +7,7 @@
 #include <unistd.h>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 
@@ -60,19 +61,18 @@ using namespace voxgi;
 struct Common {
   std::string scene;
   int resolution = 0;  // 0: the scene's
-  std::string mode = "conservative";
+  std::string mode;    // empty: the settings' voxelize.mode
   std::string backend = "auto";
   std::string gl = "egl";
   std::string preset = "default";
-  std::vector<std::string> sets;  // --set key=value, applied after the preset and --mode
+  std::vector<std::string> sets;  // --set key=value, applied last
 };
 
-Settings makeSettings(const Common& c) {
-  Settings settings;
-  applyPreset(settings, c.preset);
-  settings.voxelizeMode = parseVoxelizeMode(c.mode);
-  for (const std::string& s : c.sets) applySetting(settings, s, "--set");
-  return settings;
+// The scene file's "settings", the preset, --mode and --set, the later choice winning.
+Settings makeSettings(const Common& c, const Scene& scene) {
+  std::vector<std::string> sets = c.sets;
+  if (!c.mode.empty()) sets.insert(sets.begin(), "voxelize.mode=" + c.mode);
+  return resolveSettings(scene.settings, scene.file, c.preset, sets);
 }
 
 Scene loadWithOverrides(const Common& c) {
@@ -95,6 +95,7 @@ std::vector<const Buffer*> buffersOf(const BufferSet& set, std::string_view stag
 // The stages up to `until` on the backend the options pick (saying why when auto falls back).
 struct StageRun {
   Scene scene;
+  Settings settings;
   tools::BackendChoice backend;
   BufferSet buffers;
   double seconds = 0.0;  // running the stages
@@ -106,13 +107,16 @@ struct StageRun {
 StageRun runStages(const Common& c, std::string_view until) {
   // Input first: a bad scene or --set fails before any backend starts.
   Scene scene = loadWithOverrides(c);
-  const Settings settings = makeSettings(c);
-  StageRun run{
-      std::move(scene), tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl)), {}, 0.0};
+  const Settings settings = makeSettings(c, scene);
+  StageRun run{std::move(scene),
+               settings,
+               tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl)),
+               {},
+               0.0};
   if (!run.backend.note.empty()) std::cerr << "voxgi: " << run.backend.note << "\n";
   const auto start = std::chrono::steady_clock::now();
   const VoxelTriangles triangles = prepareVoxelTriangles(run.scene, run.scene.grid);
-  const StageContext ctx{run.scene, settings, triangles};
+  const StageContext ctx{run.scene, run.settings, triangles};
   for (const validation::StageFunctions& stage : validation::stageFunctions()) {
     if (run.backend.gpu)
       stage.gpu(*run.backend.context, ctx, run.buffers);
@@ -129,19 +133,19 @@ int cmdVoxelize(const Common& c, const std::string& out, bool sums) {
   size_t occupied = 0;
   for (uint32_t w : run.buffers.at("weight_sum").words) occupied += w != 0u;
   writeVdb(out, buffersOf(run.buffers, "voxelize", sums), run.scene.grid,
-           {{"voxgi_mode", c.mode},
+           {{"voxgi_mode", voxelizeModeName(run.settings.voxelizeMode)},
             {"voxgi_backend", run.backend.gpu ? run.backend.context->renderer() : "cpu"}});
   std::cout << "voxelized " << run.scene.triangleCount() << " triangles into "
-            << run.scene.grid.resolution << "^3 (" << c.mode << ", " << run.backendName()
-            << "): " << occupied << " occupied voxels in " << run.seconds << " s -> " << out
-            << "\n";
+            << run.scene.grid.resolution << "^3 (" << voxelizeModeName(run.settings.voxelizeMode)
+            << ", " << run.backendName() << "): " << occupied << " occupied voxels in "
+            << run.seconds << " s -> " << out << "\n";
   return kExitOk;
 }
 
 int cmdDiff(const Common& c, const std::string& stage, const std::string& json,
             const std::string& dumpDir) {
   Scene scene = loadWithOverrides(c);
-  const Settings settings = makeSettings(c);
+  const Settings settings = makeSettings(c, scene);
   std::vector<std::string> stages;
   for (const StageSpec& s : stageSpecs())
     if (stage == "all" || stage == s.name) stages.emplace_back(s.name);
@@ -154,6 +158,17 @@ int cmdDiff(const Common& c, const std::string& stage, const std::string& json,
   bool pass = true;
   for (const auto& r : reports) pass &= r.pass;
   return pass ? kExitOk : kExitInternal;
+}
+
+int cmdPlan(const Common& c) {
+  const Scene scene = loadWithOverrides(c);
+  const EffectPlan plan = planEffects(scene, makeSettings(c, scene));
+  std::cout << "plan for " << scene.file << " (" << scene.grid.resolution << "^3 grid, "
+            << scene.camera.width << "x" << scene.camera.height << " image):\n";
+  for (const PlanItem& item : plan.items)
+    std::cout << "  " << (item.in ? "in " : "out") << "  " << std::left << std::setw(20)
+              << item.name << "  " << item.why << "\n";
+  return kExitOk;
 }
 
 int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
@@ -242,7 +257,8 @@ int main(int argc, char** argv) {
   auto addCommon = [&](CLI::App* cmd, bool backend) {
     cmd->add_option("scene", c.scene, "scene .json or mesh file (OBJ, glTF, PLY)")->required();
     cmd->add_option("--resolution", c.resolution, "voxel grid resolution (power of two)");
-    cmd->add_option("--mode", c.mode, "voxelization: conservative or antialiased")
+    cmd->add_option("--mode", c.mode,
+                    "voxelization: conservative or antialiased (default: voxelize.mode)")
         ->check(CLI::IsMember({"conservative", "antialiased"}));
     cmd->add_option("--gl", c.gl, "GL platform for the GPU backend")
         ->check(CLI::IsMember({"egl", "osmesa"}));
@@ -271,6 +287,9 @@ int main(int argc, char** argv) {
   addCommon(dump, true);
   dump->add_option("--stage", stage, "stage name")->required();
   dump->add_option("--out", out, "output folder")->required();
+  auto* plan = app.add_subcommand(
+      "plan", "print the stages and cones a scene needs, and why each is in or out");
+  addCommon(plan, false);
   auto* render = app.add_subcommand(
       "render", "render an image: voxel cone tracing or the reference path tracer");
   addCommon(render, true);
@@ -319,6 +338,7 @@ int main(int argc, char** argv) {
       return technique == "vct" ? cmdRenderVct(c, out, png) : cmdRender(c, pathOptions, out, png);
     if (*diff) return cmdDiff(c, stage, json, dumpDir);
     if (*dump) return cmdDump(c, stage, out);
+    if (*plan) return cmdPlan(c);
     if (*benchVoxelize) return tools::runBenchVoxelize(bench);
     if (*benchVctCmd) return tools::runBenchVct(benchVct);
   } catch (const InputError& e) {

@@ -1,13 +1,12 @@
-// Voxel cone tracing per pixel (seed 001 §4, seed 000 §4.3.2 and §5.4.4), shared by
-// cpu/trace_cones.cpp and shaders/trace_cones.comp. A cone marches from the surface, sampling the
+// Voxel cone tracing (seed 001 §4, seed 000 §4.3.2 and §5.4.4), shared by the trace_cones and
+// bounce stages on both backends. A cone marches from the surface, sampling the
 // radiance pyramid at the level whose voxels match its diameter (quadrilinear: trilinear in two
 // levels, blended), and composites premultiplied samples front to back. Volumes are read with
-// FETCH(pyramidAt) (level 0: the radiance volume), FETCH(lightAt) and FETCH(coneAt).
+// FETCH(pyramidAt) (level 0: the radiance volume) and FETCH(coneAt).
 #ifndef VOXGI_CONE_KERNEL_H
 #define VOXGI_CONE_KERNEL_H
 #include "approx_math.h"
 #include "cone_types.h"
-#include "lighting.h"
 
 VOXGI_NAMESPACE_BEGIN
 
@@ -161,76 +160,27 @@ VOXGI_FN void tangentFrame(vec3 n, OUT(vec3) t, OUT(vec3) b) {
   b = vec3(c, s + n.y * n.y * a, -n.y);
 }
 
-// Everything trace_cones computes for the surface point p (voxel-local) with unit normal n facing
-// the camera: direct light with a shadow cone per shadow-casting light, the diffuse cone set, the
-// specular cone along the mirror direction, and ambient occlusion.
-VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
-                                ConeTraceParams params) {
-  PixelLight r;
-  r.directDiffuse = vec3(0.0f);
-  r.directSpecular = vec3(0.0f);
-  r.indirectDiffuse = vec3(0.0f);
-  r.indirectSpecular = vec3(0.0f);
-  r.ambientOcclusion = 0.0f;
-  float maxDistance = params.march.w;
-  precise vec3 origin = p + n * params.march.y;
-  precise vec3 view = normalize3(vec3(params.camera) - p);
-  precise vec3 mirror = n * (2.0f * dot3(n, view)) - view;
-  bool specular = object.specular.x > 0.0f;
-  float shininess = object.specular.y;
-  int shadowKind = params.modes.z == 1 ? kMarchShadowKahl : kMarchShadow;
-  float minVisibility = 1.0f;
-  precise float lightAngle = 0.0f;
-  for (int i = 0; i < params.modes.x; ++i) {
-    LightData l = FETCH(lightAt)(i);
-    vec3 toLight;
-    float distance;
-    vec3 e = lightIrradiance(l, p, params.shadow.w, toLight, distance);
-    if (e == vec3(0.0f)) continue;
-    float cosine = dot3(n, toLight);
-    if (cosine <= 0.0f) continue;
-    float visibility = 1.0f;
-    if (l.info.y == 1u)
-      visibility = 1.0f - marchCone(VOLUMES origin, toLight, params.shadow.x,
-                                    min(distance, maxDistance), shadowKind, params)
-                              .occlusion;
-    minVisibility = min(minVisibility, visibility);
-    precise vec3 arriving = e * (cosine * visibility);
-    r.directDiffuse = r.directDiffuse + arriving * kInvPi;
-    if (specular) {
-      precise float rl = dot3(mirror, toLight);
-      precise float lobe = (shininess + 2.0f) * (0.5f * kInvPi) * powApprox(rl, shininess);
-      r.directSpecular = r.directSpecular + arriving * lobe;
-      if (params.modes.w == 1) {
-        // Seed 000 eq. 5.6: (1 - max(0, angle - grace) / pi)^q with grace = 0.008 pi shininess.
-        precise float late = max(acosApprox(rl) - params.specular.y * shininess, 0.0f);
-        lightAngle = lightAngle + powApprox(1.0f - late * kInvPi, params.specular.x);
-      }
-    }
-  }
+// The diffuse cone set (FETCH(coneAt), params.grid.w cones in the tangent frame) around unit n from
+// `origin`: the weighted sum of the cones' radiance, which is E / pi when the weights sum to 1, and
+// the weighted ambient-occlusion delta.
+VOLUME_FN vec3 gatherDiffuse(VOLUMES_IN vec3 origin, vec3 n, int kind, ConeTraceParams params,
+                             OUT(float) ambientOcclusion) {
   vec3 t;
   vec3 b;
   tangentFrame(n, t, b);
-  int diffuseKind = params.modes.y == 1 ? kMarchFirstHit : kMarchRadiance;
+  precise vec3 sum = vec3(0.0f);
   precise float ambient = 0.0f;
   precise float weights = 0.0f;
   for (int k = 0; k < params.grid.w; ++k) {
     ConeData c = FETCH(coneAt)(k);
     precise vec3 d = (t * c.direction.x + b * c.direction.y) + n * c.direction.z;
-    ConeHit h = marchCone(VOLUMES origin, d, c.direction.w, maxDistance, diffuseKind, params);
-    r.indirectDiffuse = r.indirectDiffuse + h.radiance * c.weight.x;
+    ConeHit h = marchCone(VOLUMES origin, d, c.direction.w, params.march.w, kind, params);
+    sum = sum + h.radiance * c.weight.x;
     ambient = ambient + h.ambient * c.weight.x;
     weights = weights + c.weight.x;
   }
-  // Seed 000 eq. 5.9 darkens first-hit diffuse light by the smallest shadow-cone visibility.
-  if (params.modes.y == 1) r.indirectDiffuse = r.indirectDiffuse * minVisibility;
-  if (weights > 0.0f) r.ambientOcclusion = ambient / weights;
-  if (specular) {
-    ConeHit h =
-        marchCone(VOLUMES origin, mirror, object.specular.x, maxDistance, kMarchRadiance, params);
-    r.indirectSpecular = params.modes.w == 1 ? h.radiance * lightAngle : h.radiance;
-  }
-  return r;
+  ambientOcclusion = weights > 0.0f ? ambient / weights : 0.0f;
+  return sum;
 }
 
 VOXGI_NAMESPACE_END

@@ -1,0 +1,76 @@
+// CPU bounce stage: the shared kernel (shaders/shared/bounce_kernel.h) per voxel, then the pyramid
+// again, bounce.count times. Each voxel is written by one task, so any thread count gives the same
+// bits.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "common/kernel_params.h"
+#include "common/mips.h"
+#include "cpu/cone_volumes.h"
+#include "cpu/pyramid.h"
+#include "cpu/stages.h"
+#include "shaders/shared/bounce_kernel.h"
+
+namespace voxgi::cpu {
+namespace {
+
+// What the bounce kernel reads: the previous bounce through the cone tracer's accessor, and
+// light_voxels' radiance with the voxel albedo and normal.
+struct BounceVolumes {
+  const ConeVolumes& previous;
+  const Buffer& direct;
+  const Buffer& albedo;
+  const Buffer& normal;
+  int n;
+
+  size_t index(glm::ivec3 v) const {
+    return size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z));
+  }
+  glm::vec4 pyramidAt(int level, int face, glm::ivec3 v) const {
+    return previous.pyramidAt(level, face, v);
+  }
+  shared::ConeData coneAt(int i) const { return previous.coneAt(i); }
+  glm::vec4 directAt(glm::ivec3 v) const {
+    const size_t e = index(v);
+    return {direct.vec3At(e), direct.get<float>(e, 3)};
+  }
+  glm::vec3 albedoAt(glm::ivec3 v) const { return albedo.vec3At(index(v)); }
+  glm::vec3 normalAt(glm::ivec3 v) const { return normal.vec3At(index(v)); }
+};
+
+}  // namespace
+
+void bounce(const StageContext& ctx, BufferSet& buffers) {
+  if (!ctx.plan.runs("bounce")) return;
+  checkStageMemory(ctx, "bounce", 2.0);  // the new bounce next to the previous one
+  const int n = ctx.scene.grid.resolution;
+  const ConeTraceSetup setup = prepareBounce(ctx);
+  const char* pyramidBuffer = pyramidName(ctx.plan.mip);
+  const Buffer& direct = buffers.at("radiance");
+  Buffer radiance, pyramid;  // the latest bounce; before the first, light_voxels' and mip's
+  for (int b = 0; b < ctx.plan.bounces; ++b) {
+    Buffer next(bufferSpec("bounce", "radiance"), glm::ivec3(n));
+    {
+      const ConeVolumes previous(b == 0 ? direct : radiance,
+                                 b == 0 ? buffers.at(pyramidBuffer) : pyramid, ctx.plan.mip, n,
+                                 setup.lights, setup.cones);
+      const BounceVolumes volumes{previous, direct, buffers.at("albedo"), buffers.at("normal"), n};
+      tbb::parallel_for(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
+        for (int row = rows.begin(); row != rows.end(); ++row)
+          for (int x = 0; x < n; ++x) {
+            const glm::ivec3 v(x, row % n, row / n);
+            const glm::vec4 r = shared::bounceVoxel(volumes, v, setup.params);
+            const size_t e = volumes.index(v);
+            for (int c = 0; c < 4; ++c) next.set(e, c, r[c]);
+          }
+      });
+    }
+    radiance = std::move(next);
+    pyramid =
+        buildPyramid(bufferSpec("bounce", pyramidBuffer), radiance, n, pyramidFaces(ctx.plan.mip));
+  }
+  buffers["radiance"] = std::move(radiance);
+  buffers[pyramidBuffer] = std::move(pyramid);
+}
+
+}  // namespace voxgi::cpu
