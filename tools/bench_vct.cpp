@@ -35,12 +35,14 @@ double medianSeconds(int repeats, const std::function<void()>& run) {
 
 namespace {
 
-// Times each stage on `inputs` (the CPU outputs of the stages before it); returns stage -> s.
+// Times each stage the plan runs on `inputs` (the CPU outputs of the stages before it); returns
+// stage -> s.
 std::vector<std::pair<std::string, double>> timeStages(const StageContext& ctx, int repeats,
                                                        gpu::GlContext* context) {
   std::vector<std::pair<std::string, double>> out;
   BufferSet inputs;
   for (const validation::StageFunctions& stage : validation::stageFunctions()) {
+    if (!ctx.plan.runs(stage.name)) continue;
     // Copying the inputs is not timed: only the stage call.
     std::vector<double> times;
     BufferSet result;
