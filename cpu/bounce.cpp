@@ -66,8 +66,8 @@ void bounce(const StageContext& ctx, BufferSet& buffers) {
       });
     }
     radiance = std::move(next);
-    pyramid =
-        buildPyramid(bufferSpec("bounce", pyramidBuffer), radiance, n, pyramidFaces(ctx.plan.mip));
+    buildPyramid(bufferSpec("bounce", pyramidBuffer), radiance, n, pyramidFaces(ctx.plan.mip),
+                 pyramid);
   }
   buffers["radiance"] = std::move(radiance);
   buffers[pyramidBuffer] = std::move(pyramid);

@@ -7,7 +7,9 @@
 namespace voxgi::cpu {
 
 // Every level of the pyramid of the N^3 `radiance` volume with `faces` faces (1: isotropic, 6:
-// directional), as a buffer of `spec` (shape mips or mips6).
-Buffer buildPyramid(const BufferSpec& spec, const Buffer& radiance, int n, int faces);
+// directional) into `out`, a buffer of `spec` (shape mips or mips6). An `out` that already has
+// that spec and size is overwritten in place: a pyramid rebuilt every frame or bounce keeps its
+// memory instead of faulting in fresh pages each time.
+void buildPyramid(const BufferSpec& spec, const Buffer& radiance, int n, int faces, Buffer& out);
 
 }  // namespace voxgi::cpu

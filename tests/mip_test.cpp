@@ -4,6 +4,7 @@
 
 #include "common/mips.h"
 #include "cpu/stages.h"
+#include "shaders/shared/mip_kernel.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {
@@ -62,6 +63,65 @@ TEST(Mip, DirectionalFacesCompositeTheNearChildFirst) {
   EXPECT_EQ(level2, 6u * 8u);
   EXPECT_EQ(at(mips, level2 + 0), kRed / 16.0f);
   EXPECT_EQ(at(mips, level2 + 1), kBlue / 16.0f);
+}
+
+// The CPU writes the directional faces with the shared kernel's arithmetic unrolled over rows
+// (cpu/mip.cpp); every face of every level must equal shared::mipAnisotropic bit for bit, here on
+// semi-transparent random premultiplied values.
+TEST(Mip, DirectionalRowsMatchTheSharedKernelBitForBit) {
+  constexpr int n = 16;
+  Scene scene;
+  scene.grid = unitGrid(n);
+  Settings settings;
+  BufferSet b;
+  Buffer radiance(bufferSpec("light_voxels", "radiance"), glm::ivec3(n));
+  uint32_t state = 12345u;
+  const auto next = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return float(state >> 8) / float(1u << 24);
+  };
+  for (size_t e = 0; e < radiance.elementCount(); ++e) {
+    const float a = next() < 0.3f ? 0.0f : next();
+    for (int c = 0; c < 3; ++c) radiance.set(e, c, a * next() * 4.0f);
+    radiance.set(e, 3, a);
+  }
+  b["radiance"] = radiance;
+  const VoxelTriangles none{};
+  cpu::mip(StageContext{scene, settings, none}, b);
+  const Buffer& mips = b.at("radiance_mips6");
+  // Children of level l from level l - 1 (level 0: the radiance volume, shared by every face).
+  struct Below {
+    const Buffer& radiance;
+    const Buffer& mips;
+    int level;
+    glm::vec4 childAt(int face, glm::ivec3 c) const {
+      if (level == 1) return voxelValue(radiance, c);
+      const int size = n >> (level - 1);
+      const size_t e = mipLevelOffset(n, level - 1, 6) + size_t(c.x + face * size) +
+                       size_t(6 * size) * (size_t(c.y) + size_t(size) * size_t(c.z));
+      return at(mips, e);
+    }
+  };
+  size_t compared = 0;
+  for (int level = 1; level <= mipLevelCount(n); ++level) {
+    const int s = n >> level;
+    const Below below{radiance, mips, level};
+    for (int z = 0; z < s; ++z)
+      for (int y = 0; y < s; ++y)
+        for (int face = 0; face < 6; ++face)
+          for (int x = 0; x < s; ++x) {
+            const glm::vec4 expected = shared::mipAnisotropic(below, glm::ivec3(x, y, z), face);
+            const size_t e = mipLevelOffset(n, level, 6) + size_t(x + face * s) +
+                             size_t(6 * s) * (size_t(y) + size_t(s) * size_t(z));
+            const glm::vec4 got = at(mips, e);
+            for (int c = 0; c < 4; ++c)
+              ASSERT_EQ(std::bit_cast<uint32_t>(got[c]), std::bit_cast<uint32_t>(expected[c]))
+                  << "level " << level << " face " << face << " voxel " << x << "," << y << ","
+                  << z;
+            ++compared;
+          }
+  }
+  EXPECT_EQ(compared, 6u * (512u + 64u + 8u + 1u));
 }
 
 }  // namespace
