@@ -1,9 +1,8 @@
 #include "common/effect_plan.h"
 
-#include <cmath>
-#include <numbers>
 #include <sstream>
 
+#include "common/camera_geometry.h"
 #include "common/cone_sets.h"
 
 namespace voxgi {
@@ -42,12 +41,9 @@ bool EffectPlan::runs(std::string_view stage) const {
 
 bool meshInView(const Scene& scene, const Mesh& mesh) {
   if (mesh.triangles.empty()) return false;
-  const Camera& cam = scene.camera;
-  const glm::dvec3 forward = glm::normalize(cam.lookAt - cam.position);
-  const glm::dvec3 right = glm::normalize(glm::cross(forward, cam.up));
-  const glm::dvec3 up = glm::cross(right, forward);
-  const double tanY = std::tan(0.5 * cam.fovYDeg * std::numbers::pi / 180.0);
-  const double tanX = tanY * double(cam.width) / double(cam.height);
+  // The camera both gbuffer backends render with, in voxel-local coordinates.
+  const CameraRays cam = cameraRays(scene);
+  const double tanY = cam.tanHalfFov, tanX = tanY * double(cam.aspect);
   glm::dvec3 lo(mesh.positions[mesh.triangles[0].x]), hi(lo);
   for (const glm::uvec3& t : mesh.triangles)
     for (int c = 0; c < 3; ++c) {
@@ -59,10 +55,11 @@ bool meshInView(const Scene& scene, const Mesh& mesh) {
   for (int corner = 0; corner < 8; ++corner) {
     const glm::dvec3 p((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y,
                        (corner & 4) ? hi.z : lo.z);
-    const glm::dvec3 d = p - cam.position;
-    const double x = glm::dot(d, right), y = glm::dot(d, up), z = glm::dot(d, forward);
-    // A relative margin keeps the test conservative under rounding.
-    const double slack = 1e-6 * glm::length(d);
+    const glm::dvec3 d = scene.grid.toVoxel(p) - glm::dvec3(cam.origin);
+    const double x = glm::dot(d, glm::dvec3(cam.right)), y = glm::dot(d, glm::dvec3(cam.up)),
+                 z = glm::dot(d, glm::dvec3(cam.forward));
+    // A relative margin keeps the test conservative under the camera's float rounding.
+    const double slack = 1e-4 * glm::length(d);
     outside[0] += z < -slack;
     outside[1] += x > z * tanX + slack;
     outside[2] += -x > z * tanX + slack;

@@ -21,11 +21,9 @@ struct BounceVolumes {
   const Buffer& direct;
   const Buffer& albedo;
   const Buffer& normal;
-  int n;
+  const GridSpec& grid;
 
-  size_t index(glm::ivec3 v) const {
-    return size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z));
-  }
+  size_t index(glm::ivec3 v) const { return grid.index(v); }
   glm::vec4 pyramidAt(int level, int face, glm::ivec3 v) const {
     return previous.pyramidAt(level, face, v);
   }
@@ -54,7 +52,8 @@ void bounce(const StageContext& ctx, BufferSet& buffers) {
       const ConeVolumes previous(b == 0 ? direct : radiance,
                                  b == 0 ? buffers.at(pyramidBuffer) : pyramid, ctx.plan.mip, n,
                                  setup.lights, setup.cones);
-      const BounceVolumes volumes{previous, direct, buffers.at("albedo"), buffers.at("normal"), n};
+      const BounceVolumes volumes{previous, direct, buffers.at("albedo"), buffers.at("normal"),
+                                  ctx.scene.grid};
       tbb::parallel_for(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
         for (int row = rows.begin(); row != rows.end(); ++row)
           for (int x = 0; x < n; ++x) {
@@ -66,8 +65,7 @@ void bounce(const StageContext& ctx, BufferSet& buffers) {
       });
     }
     radiance = std::move(next);
-    buildPyramid(bufferSpec("bounce", pyramidBuffer), radiance, n, pyramidFaces(ctx.plan.mip),
-                 pyramid);
+    buildPyramid(bufferSpec("bounce", pyramidBuffer), radiance, n, pyramid);
   }
   buffers["radiance"] = std::move(radiance);
   buffers[pyramidBuffer] = std::move(pyramid);

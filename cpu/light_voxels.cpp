@@ -17,11 +17,9 @@ struct LightVoxelsVolumes {
   const Buffer& normal;
   const Buffer* emission;
   const std::vector<shared::LightData>& lights;
-  int n;
+  const GridSpec& grid;
 
-  size_t index(glm::ivec3 v) const {
-    return size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z));
-  }
+  size_t index(glm::ivec3 v) const { return grid.index(v); }
   float opacityAt(glm::ivec3 v) const { return opacity.get<float>(index(v), 0); }
   glm::vec3 albedoAt(glm::ivec3 v) const { return albedo.vec3At(index(v)); }
   glm::vec3 normalAt(glm::ivec3 v) const { return normal.vec3At(index(v)); }
@@ -42,7 +40,7 @@ void light_voxels(const StageContext& ctx, BufferSet& buffers) {
                                    buffers.at("normal"),
                                    emissive ? &emission->second : nullptr,
                                    lights,
-                                   n};
+                                   ctx.scene.grid};
   const shared::LightVoxelsParams params =
       lightVoxelsParams(ctx, static_cast<int>(lights.size()), emissive);
   Buffer radiance(bufferSpec("light_voxels", "radiance"), glm::ivec3(n));

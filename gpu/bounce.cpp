@@ -23,7 +23,7 @@ void bounce(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   GlTexture direct(gl, uploadVolume(gl, buffers.at("radiance")));
   GlTexture albedo(gl, uploadVolume(gl, buffers.at("albedo")));
   GlTexture normal(gl, uploadVolume(gl, buffers.at("normal")));
-  GlTexture radiance(gl, uploadVolume(gl, buffers.at("radiance")));
+  GlTexture radiance(gl, 0);  // the latest bounce; before the first, `direct` is read
   GlTexture pyramid(gl, levels ? uploadPyramid(gl, buffers.at(pyramidBuffer), n, faces)
                                : createVolume(gl, 4, glm::ivec3(1)));
   Program program(gl, {"bounce.comp"});
@@ -31,8 +31,8 @@ void bounce(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   for (int b = 0; b < ctx.plan.bounces; ++b) {
     GlTexture bounced(gl, createVolume(gl, 4, glm::ivec3(n)));
     program.use();
-    const GLuint textures[] = {radiance.get(), pyramid.get(), direct.get(), albedo.get(),
-                               normal.get()};
+    const GLuint textures[] = {b == 0 ? direct.get() : radiance.get(), pyramid.get(), direct.get(),
+                               albedo.get(), normal.get()};
     for (GLuint unit = 0; unit < 5; ++unit) gl.BindTextureUnit(unit, textures[unit]);
     gl.BindImageTexture(0, bounced.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, coneBlock.get());

@@ -66,8 +66,8 @@ TEST(Mip, DirectionalFacesCompositeTheNearChildFirst) {
 }
 
 // The CPU writes the directional faces with the shared kernel's arithmetic unrolled over rows
-// (cpu/mip.cpp); every face of every level must equal shared::mipAnisotropic bit for bit, here on
-// semi-transparent random premultiplied values.
+// (cpu/pyramid.cpp); every face of every level must equal shared::mipAnisotropic bit for bit, here
+// on semi-transparent random premultiplied values.
 TEST(Mip, DirectionalRowsMatchTheSharedKernelBitForBit) {
   constexpr int n = 16;
   Scene scene;
