@@ -27,6 +27,7 @@ struct BounceVolumes {
   glm::vec4 pyramidAt(int level, int face, glm::ivec3 v) const {
     return previous.pyramidAt(level, face, v);
   }
+  bool cellEmpty(int level, glm::ivec3 i) const { return previous.cellEmpty(level, i); }
   shared::ConeData coneAt(int i) const { return previous.coneAt(i); }
   glm::vec4 directAt(glm::ivec3 v) const {
     const size_t e = index(v);

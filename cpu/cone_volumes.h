@@ -10,6 +10,7 @@
 #include "common/buffer.h"
 #include "common/mips.h"
 #include "common/settings.h"
+#include "cpu/cell_occupancy.h"
 #include "shaders/shared/cone_kernel.h"
 
 namespace voxgi::cpu {
@@ -20,6 +21,7 @@ struct ConeVolumes {
   // reads share cache lines (the values are the stage buffer's, bit for bit).
   const uint32_t* levels[16] = {};
   std::vector<uint32_t> interleaved;
+  CellOccupancy occupancy[16];  // per level
   int faces;
   int n;
   const std::vector<shared::LightData>& lights;
@@ -32,10 +34,12 @@ struct ConeVolumes {
     const Words& pyramid = pyramidBuffer.words;
     if (faces > 1) interleaved.resize(pyramid.size());
     levels[0] = radiance.words.data();
+    occupancy[0] = CellOccupancy(levels[0], n, 4);
     for (int level = 1; level <= mipLevelCount(n); ++level) {
       const size_t offset = 4 * mipLevelOffset(n, level, faces), s = size_t(n >> level);
       if (faces == 1) {
         levels[level] = pyramid.data() + offset;
+        occupancy[level] = CellOccupancy(levels[level], int(s), 4);
         continue;
       }
       for (size_t row = 0; row < s * s; ++row)
@@ -45,6 +49,7 @@ struct ConeVolumes {
               interleaved[offset + 4 * ((row * s + x) * size_t(faces) + size_t(face)) + k] =
                   pyramid[offset + 4 * (row * s * size_t(faces) + size_t(face) * s + x) + k];
       levels[level] = interleaved.data() + offset;
+      occupancy[level] = CellOccupancy(levels[level], int(s), 4 * faces);
     }
   }
   ConeVolumes(const ConeVolumes&) = delete;
@@ -57,6 +62,7 @@ struct ConeVolumes {
     return {std::bit_cast<float>(p[0]), std::bit_cast<float>(p[1]), std::bit_cast<float>(p[2]),
             std::bit_cast<float>(p[3])};
   }
+  bool cellEmpty(int level, glm::ivec3 i) const { return occupancy[level].empty(i); }
   shared::LightData lightAt(int i) const { return lights[size_t(i)]; }
   shared::ConeData coneAt(int i) const { return cones[size_t(i)]; }
 };

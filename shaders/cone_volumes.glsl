@@ -11,3 +11,7 @@ vec4 pyramidAt(int level, int face, ivec3 v) {
   int s = uResolution >> level;
   return texelFetch(uPyramid, ivec3(v.x + face * s, v.y, v.z), level - 1);
 }
+
+// The GPU reads empty cells through its texture cache; the CPU skips them with an occupancy
+// bitmask (cpu/cell_occupancy.h), which gives the same +0.
+bool cellEmpty(int level, ivec3 i) { return false; }

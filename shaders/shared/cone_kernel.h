@@ -2,7 +2,7 @@
 // bounce stages on both backends. A cone marches from the surface, sampling the
 // radiance pyramid at the level whose voxels match its diameter (quadrilinear: trilinear in two
 // levels, blended), and composites premultiplied samples front to back. Volumes are read with
-// FETCH(pyramidAt) (level 0: the radiance volume) and FETCH(coneAt).
+// FETCH(pyramidAt) (level 0: the radiance volume), FETCH(cellEmpty) and FETCH(coneAt).
 #ifndef VOXGI_CONE_KERNEL_H
 #define VOXGI_CONE_KERNEL_H
 #include "approx_math.h"
@@ -35,15 +35,32 @@ VOLUME_FN vec4 pyramidVoxel(VOLUMES_IN int level, int face, ivec3 v, int size, b
   return FETCH(pyramidAt)(level, face, v);
 }
 
-// Trilinear sample of `level` at p (level-0 voxel units), zero outside the grid.
-VOLUME_FN vec4 sampleTrilinear(VOLUMES_IN int level, int face, vec3 p, int size) {
+// The trilinear cell of `level` around p (level-0 voxel units): its lowest voxel, the weights
+// toward the highest, and whether all 8 voxels lie inside the grid.
+struct TrilinearCell {
+  ivec3 base;
+  vec3 f;
+  bool inside;
+};
+
+VOXGI_FN TrilinearCell trilinearCell(int level, vec3 p, int size) {
+  TrilinearCell c;
   precise vec3 q = p * (1.0f / float(1 << level)) - vec3(0.5f);
-  precise vec3 base = floor(q);
-  precise vec3 f = q - base;
-  ivec3 i = ivec3(base);
+  precise vec3 lowest = floor(q);
+  precise vec3 f = q - lowest;
+  c.f = f;
+  c.base = ivec3(lowest);
   // Away from the border (nearly every tap) the 8 voxels skip their bounds tests.
-  bool inside =
-      i.x >= 0 && i.y >= 0 && i.z >= 0 && i.x + 1 < size && i.y + 1 < size && i.z + 1 < size;
+  c.inside = c.base.x >= 0 && c.base.y >= 0 && c.base.z >= 0 && c.base.x + 1 < size &&
+             c.base.y + 1 < size && c.base.z + 1 < size;
+  return c;
+}
+
+// Trilinear filter of one face of `level` over cell c, zero outside the grid.
+VOLUME_FN vec4 filterCell(VOLUMES_IN int level, int face, TrilinearCell c, int size) {
+  ivec3 i = c.base;
+  vec3 f = c.f;
+  bool inside = c.inside;
   vec4 c000 = pyramidVoxel(VOLUMES level, face, i, size, inside);
   vec4 c100 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 0, 0), size, inside);
   vec4 c010 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 0), size, inside);
@@ -59,15 +76,18 @@ VOLUME_FN vec4 sampleTrilinear(VOLUMES_IN int level, int face, vec3 p, int size)
 
 // One level as seen by a cone travelling along `dir`: the isotropic level, or the three faces of
 // the directional pyramid that face the cone weighted by dir^2 (docs/stages/mip.md). Level 0 is
-// the isotropic radiance volume in both modes.
+// the isotropic radiance volume in both modes. A cell whose 8 voxels are all +0 filters to
+// exactly +0, so FETCH(cellEmpty) may skip it.
 VOLUME_FN vec4 sampleLevel(VOLUMES_IN int level, vec3 p, vec3 dir, ConeTraceParams params) {
   int size = params.grid.x >> level;
-  if (level == 0 || params.grid.z == 0) return sampleTrilinear(VOLUMES level, 0, p, size);
+  TrilinearCell c = trilinearCell(level, p, size);
+  if (FETCH(cellEmpty)(level, c.base)) return vec4(0.0f);
+  if (level == 0 || params.grid.z == 0) return filterCell(VOLUMES level, 0, c, size);
   precise vec3 w = dir * dir;
   precise vec4 sum = vec4(0.0f);
-  if (w.x > 0.0f) sum = sum + sampleTrilinear(VOLUMES level, dir.x >= 0.0f ? 0 : 1, p, size) * w.x;
-  if (w.y > 0.0f) sum = sum + sampleTrilinear(VOLUMES level, dir.y >= 0.0f ? 2 : 3, p, size) * w.y;
-  if (w.z > 0.0f) sum = sum + sampleTrilinear(VOLUMES level, dir.z >= 0.0f ? 4 : 5, p, size) * w.z;
+  if (w.x > 0.0f) sum = sum + filterCell(VOLUMES level, dir.x >= 0.0f ? 0 : 1, c, size) * w.x;
+  if (w.y > 0.0f) sum = sum + filterCell(VOLUMES level, dir.y >= 0.0f ? 2 : 3, c, size) * w.y;
+  if (w.z > 0.0f) sum = sum + filterCell(VOLUMES level, dir.z >= 0.0f ? 4 : 5, c, size) * w.z;
   return sum;
 }
 
