@@ -11,7 +11,9 @@
 #include <ImfOutputFile.h>
 #include <Iex.h>
 
+#define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_WRITE_IMPLEMENTATION
+#include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
 #include "common/error.h"
@@ -30,6 +32,11 @@ void commit(const std::string& tmp, const std::string& path) {
 float linearToSrgb(float linear) {
   const float x = std::clamp(linear, 0.0f, 1.0f);
   return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+}
+
+float srgbToLinear(float encoded) {
+  const float x = std::clamp(encoded, 0.0f, 1.0f);
+  return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
 }
 
 void writeExr(const std::string& path, const Image& image) {
@@ -77,16 +84,35 @@ Image readExr(const std::string& path) {
   }
 }
 
+Image readImage(const std::string& path) {
+  if (std::filesystem::path(path).extension() != ".png") return readExr(path);
+  int w = 0, h = 0, channels = 0;
+  unsigned char* bytes = stbi_load(path.c_str(), &w, &h, &channels, 3);
+  if (bytes == nullptr)
+    throw InputError(path, "", std::string("cannot read PNG: ") + stbi_failure_reason());
+  Image image(w, h);
+  for (size_t i = 0; i < image.pixels.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      image.pixels[i][c] = srgbToLinear(float(bytes[i * 3 + size_t(c)]) / 255.0f);
+  stbi_image_free(bytes);
+  return image;
+}
+
+void writeRgb8Png(const std::string& path, int width, int height,
+                  const std::vector<unsigned char>& rgb) {
+  const std::string tmp = path + ".tmp";
+  if (!stbi_write_png(tmp.c_str(), width, height, 3, rgb.data(), width * 3))
+    throw InputError(path, "", "cannot write PNG");
+  commit(tmp, path);
+}
+
 void writePng(const std::string& path, const Image& image, float exposure) {
   std::vector<unsigned char> bytes(size_t(image.width) * size_t(image.height) * 3);
   for (size_t i = 0; i < image.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c)
       bytes[i * 3 + size_t(c)] = static_cast<unsigned char>(
           std::lround(255.0f * linearToSrgb(exposure * image.pixels[i][c])));
-  const std::string tmp = path + ".tmp";
-  if (!stbi_write_png(tmp.c_str(), image.width, image.height, 3, bytes.data(), image.width * 3))
-    throw InputError(path, "", "cannot write PNG");
-  commit(tmp, path);
+  writeRgb8Png(path, image.width, image.height, bytes);
 }
 
 }  // namespace voxgi

@@ -22,9 +22,15 @@ struct Image {
 // Throws InputError naming the file.
 void writeExr(const std::string& path, const Image& image);
 Image readExr(const std::string& path);
+// An EXR, or a PNG (8-bit sRGB decoded to linear) when the name ends in .png.
+Image readImage(const std::string& path);
 void writePng(const std::string& path, const Image& image, float exposure = 1.0f);
+// An 8-bit sRGB image as it is (row-major RGB), through a temporary like the others.
+void writeRgb8Png(const std::string& path, int width, int height,
+                  const std::vector<unsigned char>& rgb);
 
 // sRGB transfer function (IEC 61966-2-1) of a linear value clamped to [0, 1].
 float linearToSrgb(float linear);
+float srgbToLinear(float encoded);
 
 }  // namespace voxgi

@@ -8,7 +8,10 @@
 #include <sys/wait.h>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <openvdb/openvdb.h>
+
+#include "common/image_io.h"
 
 #include "tests/test_scenes.h"
 
@@ -102,6 +105,29 @@ TEST(Cli, DumpWritesEveryBufferOfTheStage) {
   size_t grids = 0;
   for (auto it = file.beginName(); it != file.endName(); ++it) ++grids;
   EXPECT_EQ(grids, 8u);  // the Cornell box emits, so every declared buffer exists
+}
+
+TEST(Cli, CompareReportsMetricsNoiseFloorAndAnErrorMap) {
+  const std::string dir = testTempDir();
+  Image test(16, 8), reference(16, 8), variance(16, 8), small(8, 8);
+  for (glm::vec3& p : test.pixels) p = glm::vec3(0.6f);
+  for (glm::vec3& p : reference.pixels) p = glm::vec3(0.5f);
+  for (glm::vec3& p : variance.pixels) p = glm::vec3(0.0004f);  // standard error 0.02
+  writeExr(dir + "t.exr", test);
+  writeExr(dir + "r.exr", reference);
+  writeExr(dir + "r.variance.exr", variance);
+  writeExr(dir + "small.exr", small);
+  const CommandResult r =
+      voxgi("compare " + dir + "t.exr " + dir + "r.exr --json " + dir + "c.json");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const nlohmann::json c = nlohmann::json::parse(std::ifstream(dir + "c.json"));
+  EXPECT_NEAR(c["rmse"].get<double>(), 0.1, 1e-6);
+  EXPECT_NEAR(c["noise_floor"]["rmse"].get<double>(), 0.02, 1e-6);
+  EXPECT_EQ(c["pixels"].get<int>(), 128);
+  EXPECT_GT(std::filesystem::file_size(dir + "t.error.png"), 0u);
+  const CommandResult bad = voxgi("compare " + dir + "small.exr " + dir + "r.exr");
+  EXPECT_EQ(bad.code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("small.exr: size: 8x8"), std::string::npos) << bad.output;
 }
 
 }  // namespace

@@ -23,6 +23,7 @@
 #include "gpu/program.h"
 #include "tools/backend.h"
 #include "tools/bench.h"
+#include "tools/compare.h"
 #include "validation/diff.h"
 #include "validation/path_trace.h"
 #include "validation/report.h"
@@ -183,12 +184,6 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
 
 std::atomic<bool> interrupted{false};
 
-// Writes "IMG.variance.exr" beside "IMG.exr".
-std::string variancePath(const std::string& out) {
-  const std::filesystem::path p(out);
-  return (p.parent_path() / (p.stem().string() + ".variance" + p.extension().string())).string();
-}
-
 Image imageOf(const Buffer& color) {
   Image image(color.extent.x, color.extent.y);
   for (size_t e = 0; e < image.pixels.size(); ++e) image.pixels[e] = color.vec3At(e);
@@ -236,12 +231,12 @@ int cmdRender(const Common& c, const validation::PathTraceOptions& base, const s
   }
   if (tty) std::cerr << "\n";
   writeExr(out, result.image);
-  writeExr(variancePath(out), result.variance);
+  writeExr(validation::variancePath(out), result.variance);
   if (!png.empty()) writePng(png, result.image);
   std::cout << "path traced " << scene.camera.width << "x" << scene.camera.height << " at "
             << options.spp << " spp in " << result.seconds << " s ("
             << double(result.rays) / result.seconds / 1e6 << " M rays/s) -> " << out << " and "
-            << variancePath(out) << "\n";
+            << validation::variancePath(out) << "\n";
   return kExitOk;
 }
 
@@ -308,6 +303,10 @@ int main(int argc, char** argv) {
       ->required();
   render->add_option("--png", png, "also write a tone-mapped sRGB preview");
   render->footer(describeSettings());
+  tools::CompareOptions compare;
+  auto* compareCmd = app.add_subcommand(
+      "compare", "RMSE, relative MSE, MARE and SSIM of an image against a reference");
+  tools::addCompareOptions(*compareCmd, compare);
   tools::BenchOptions bench;
   auto* benchCmd = app.add_subcommand("bench", "benchmarks (see docs/benchmarks.md)");
   auto* benchVoxelize =
@@ -339,6 +338,7 @@ int main(int argc, char** argv) {
     if (*diff) return cmdDiff(c, stage, json, dumpDir);
     if (*dump) return cmdDump(c, stage, out);
     if (*plan) return cmdPlan(c);
+    if (*compareCmd) return tools::runCompare(compare);
     if (*benchVoxelize) return tools::runBenchVoxelize(bench);
     if (*benchVctCmd) return tools::runBenchVct(benchVct);
   } catch (const InputError& e) {

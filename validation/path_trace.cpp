@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <vector>
 
@@ -372,6 +373,11 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
   result.rays = rays;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
+}
+
+std::string variancePath(const std::string& image) {
+  const std::filesystem::path p(image);
+  return (p.parent_path() / (p.stem().string() + ".variance" + p.extension().string())).string();
 }
 
 }  // namespace voxgi::validation

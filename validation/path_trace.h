@@ -35,4 +35,7 @@ class Cancelled : public std::runtime_error {
 
 PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options);
 
+// Where the variance image of `image` goes: "IMG.variance.exr" beside "IMG.exr".
+std::string variancePath(const std::string& image);
+
 }  // namespace voxgi::validation

@@ -1,0 +1,107 @@
+// The image metrics of `voxgi compare` (validation/image_metrics.h) on small synthetic images
+// with answers worked out by hand.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "validation/image_metrics.h"
+
+namespace voxgi::test {
+namespace {
+
+using validation::compareImages;
+using validation::kRelativeEpsilon;
+
+Image constant(int w, int h, glm::vec3 value) {
+  Image image(w, h);
+  for (glm::vec3& p : image.pixels) p = value;
+  return image;
+}
+
+// Noise in [0.2, 0.8] per channel: a textured image for SSIM.
+Image texture(int w, int h, unsigned seed) {
+  Image image(w, h);
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<float> u(0.2f, 0.8f);
+  for (glm::vec3& p : image.pixels) p = glm::vec3(u(random), u(random), u(random));
+  return image;
+}
+
+// The sRGB curve written out here rather than taken from the code under test.
+double srgb(double x) {
+  return x <= 0.0031308 ? 12.92 * x : 1.055 * std::pow(x, 1 / 2.4) - 0.055;
+}
+
+TEST(ImageMetrics, IdenticalImagesHaveNoError) {
+  const Image a = texture(24, 16, 1);
+  const auto m = compareImages(a, a);
+  EXPECT_EQ(m.pixels, 24u * 16u);
+  EXPECT_EQ(m.rmse, 0.0);
+  EXPECT_EQ(m.relMse, 0.0);
+  EXPECT_EQ(m.mare, 0.0);
+  EXPECT_NEAR(m.ssim, 1.0, 1e-9);
+}
+
+TEST(ImageMetrics, ConstantOffsetGivesTheClosedForms) {
+  // Test 1.1 against reference 1 in every channel, and 0.3 against 0.1.
+  const auto m =
+      compareImages(constant(16, 16, glm::vec3(1.1f)), constant(16, 16, glm::vec3(1.0f)));
+  EXPECT_NEAR(m.rmse, 0.1, 1e-6);
+  EXPECT_NEAR(m.relMse, 0.01 / (1.0 + kRelativeEpsilon), 1e-6);
+  EXPECT_NEAR(m.mare, 0.1 / (1.0 + kRelativeEpsilon), 1e-6);
+  const auto dark =
+      compareImages(constant(16, 16, glm::vec3(0.3f)), constant(16, 16, glm::vec3(0.1f)));
+  EXPECT_NEAR(dark.rmse, 0.2, 1e-6);
+  EXPECT_NEAR(dark.relMse, 0.04 / (0.01 + kRelativeEpsilon), 1e-5);
+  EXPECT_NEAR(dark.mare, 0.2 / (0.1 + kRelativeEpsilon), 1e-5);
+}
+
+TEST(ImageMetrics, SsimOfConstantImagesIsTheLuminanceTerm) {
+  // No variance: SSIM = (2 x y + C1) / (x^2 + y^2 + C1) of the display values.
+  const double x = srgb(0.2), y = srgb(0.4), c1 = 1e-4;
+  const auto m =
+      compareImages(constant(16, 16, glm::vec3(0.2f)), constant(16, 16, glm::vec3(0.4f)));
+  EXPECT_NEAR(m.ssim, (2 * x * y + c1) / (x * x + y * y + c1), 1e-6);
+}
+
+TEST(ImageMetrics, SsimFallsAsNoiseGrowsAndIgnoresChannelsItDoesNotSee) {
+  const Image reference = texture(32, 32, 2);
+  double previous = 1.0;
+  for (const float amplitude : {0.01f, 0.05f, 0.2f}) {
+    Image noisy = reference;
+    std::mt19937 random(3);
+    std::uniform_real_distribution<float> u(-amplitude, amplitude);
+    for (glm::vec3& p : noisy.pixels) p += glm::vec3(u(random));
+    const double ssim = compareImages(noisy, reference).ssim;
+    EXPECT_LT(ssim, previous) << amplitude;
+    previous = ssim;
+  }
+  EXPECT_LT(previous, 0.8);
+  // Values above 1 clamp on the display, so SSIM does not see them; RMSE does.
+  const auto bright =
+      compareImages(constant(16, 16, glm::vec3(2.0f)), constant(16, 16, glm::vec3(3.0f)));
+  EXPECT_NEAR(bright.ssim, 1.0, 1e-9);
+  EXPECT_NEAR(bright.rmse, 1.0, 1e-6);
+}
+
+TEST(ImageMetrics, MaskKeepsOnlyItsPixels) {
+  Image test = constant(8, 8, glm::vec3(0.5f));
+  const Image reference = test;
+  std::vector<uint8_t> mask(64, 1);
+  for (int x = 0; x < 8; ++x) {
+    test.at(x, 0) = glm::vec3(5.0f);  // a bad first row, masked out
+    mask[size_t(x)] = 0;
+  }
+  test.at(3, 4) = glm::vec3(0.6f);  // one kept pixel off by 0.1
+  const auto m = compareImages(test, reference, mask);
+  EXPECT_EQ(m.pixels, 56u);
+  EXPECT_NEAR(m.rmse, std::sqrt(0.01 / 56.0), 1e-6);
+  const auto colours = validation::errorColours(test, reference, mask);
+  EXPECT_EQ(colours[0], 128);                // masked: grey
+  EXPECT_EQ(colours[3 * (8 + 0)], 0);        // exact: black
+  EXPECT_GT(colours[3 * (4 * 8 + 3)], 100);  // relative error 0.1 / 0.51: yellow
+}
+
+}  // namespace
+}  // namespace voxgi::test

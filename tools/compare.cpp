@@ -1,0 +1,88 @@
+#include "tools/compare.h"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+#include "validation/image_metrics.h"
+#include "validation/path_trace.h"
+
+namespace voxgi::tools {
+
+void addCompareOptions(CLI::App& cmd, CompareOptions& o) {
+  cmd.add_option("test", o.test, "image to measure (.exr, or .png as sRGB)")->required();
+  cmd.add_option("reference", o.reference, "reference image, e.g. a path-traced .exr")->required();
+  cmd.add_option("--mask", o.mask, "image of the same size: only pixels non-zero here count");
+  cmd.add_option("--error-png", o.errorPng,
+                 "false-colour relative error map (default: TEST's name + .error.png)");
+  cmd.add_option("--json", o.json, "also write the metrics as JSON");
+}
+
+void checkSameSize(const Image& test, const std::string& testPath, const Image& reference) {
+  if (test.width != reference.width || test.height != reference.height)
+    throw InputError(testPath, "size",
+                     std::to_string(test.width) + "x" + std::to_string(test.height) +
+                         " differs from the reference's " + std::to_string(reference.width) + "x" +
+                         std::to_string(reference.height));
+}
+
+std::vector<uint8_t> readMask(const std::string& path, const Image& reference) {
+  if (path.empty()) return {};
+  const Image mask = readImage(path);
+  checkSameSize(mask, path, reference);
+  std::vector<uint8_t> keep(mask.pixels.size());
+  for (size_t e = 0; e < keep.size(); ++e) keep[e] = mask.pixels[e] != glm::vec3(0.0f) ? 1 : 0;
+  return keep;
+}
+
+int runCompare(const CompareOptions& o) {
+  const Image reference = readImage(o.reference);
+  const Image test = readImage(o.test);
+  checkSameSize(test, o.test, reference);
+  const std::vector<uint8_t> mask = readMask(o.mask, reference);
+  const validation::ImageMetrics m = validation::compareImages(test, reference, mask);
+  std::cout << "compare " << o.test << " against " << o.reference << " (" << reference.width << "x"
+            << reference.height << ", " << m.pixels << " pixels)\n"
+            << "  RMSE    " << m.rmse << "\n"
+            << "  relMSE  " << m.relMse << "\n"
+            << "  MARE    " << m.mare << "\n"
+            << "  SSIM    " << m.ssim << "\n";
+  nlohmann::json out{{"test", o.test}, {"reference", o.reference}, {"pixels", m.pixels},
+                     {"rmse", m.rmse}, {"rel_mse", m.relMse},      {"mare", m.mare},
+                     {"ssim", m.ssim}};
+  // The reference's own error: a perfect image would still measure this far from it.
+  const std::string variance = validation::variancePath(o.reference);
+  if (std::filesystem::exists(variance)) {
+    const Image v = readExr(variance);
+    checkSameSize(v, variance, reference);
+    double sum = 0.0, relative = 0.0;
+    for (size_t e = 0; e < v.pixels.size(); ++e) {
+      if (!mask.empty() && mask[e] == 0) continue;
+      for (int c = 0; c < 3; ++c) {
+        const double r = reference.pixels[e][c];
+        sum += v.pixels[e][c];
+        relative += v.pixels[e][c] / (r * r + validation::kRelativeEpsilon);
+      }
+    }
+    const double values = 3.0 * double(std::max<size_t>(m.pixels, 1));
+    std::cout << "  noise floor of the reference (" << variance << "): RMSE "
+              << std::sqrt(sum / values) << ", relMSE " << relative / values << "\n";
+    out["noise_floor"] = {{"rmse", std::sqrt(sum / values)}, {"rel_mse", relative / values}};
+  }
+  const std::filesystem::path t(o.test);
+  const std::string errorPng = o.errorPng.empty()
+                                   ? (t.parent_path() / (t.stem().string() + ".error.png")).string()
+                                   : o.errorPng;
+  writeRgb8Png(errorPng, reference.width, reference.height,
+               validation::errorColours(test, reference, mask));
+  std::cout << "  error map (|t - r| / (|r| + 0.01), log scale 1e-3 black .. 1 white) -> "
+            << errorPng << "\n";
+  if (!o.json.empty()) std::ofstream(o.json) << out.dump(2) << "\n";
+  return kExitOk;
+}
+
+}  // namespace voxgi::tools

@@ -1,0 +1,28 @@
+// `voxgi compare TEST REFERENCE`: error metrics of an image against a reference, with the
+// reference's own noise floor when its variance image lies beside it, and a false-colour map.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "common/image_io.h"
+
+namespace voxgi::tools {
+
+struct CompareOptions {
+  std::string test, reference, mask, errorPng, json;
+};
+
+void addCompareOptions(CLI::App& cmd, CompareOptions& options);
+int runCompare(const CompareOptions& options);
+
+// The pixels a mask image keeps (non-zero in any channel), checked against the reference's size;
+// empty when `path` is empty.
+std::vector<uint8_t> readMask(const std::string& path, const Image& reference);
+
+// Throws InputError naming `testPath` when the sizes differ.
+void checkSameSize(const Image& test, const std::string& testPath, const Image& reference);
+
+}  // namespace voxgi::tools

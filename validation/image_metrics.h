@@ -1,0 +1,38 @@
+// Image error metrics against a reference (docs/accuracy.md): RMSE, relative MSE, mean absolute
+// relative error and SSIM, over the pixels a mask keeps, plus a false-colour map of the error.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "common/image_io.h"
+
+namespace voxgi::validation {
+
+struct ImageMetrics {
+  double rmse = 0.0;    // sqrt(mean (t - r)^2), over pixels and channels
+  double relMse = 0.0;  // mean (t - r)^2 / (r^2 + eps)
+  double mare = 0.0;    // mean |t - r| / (|r| + eps)
+  double ssim = 1.0;    // mean SSIM of the display luminance (11x11 Gaussian window, sigma 1.5)
+  size_t pixels = 0;    // pixels the mask keeps
+};
+
+// Keeps the relative metrics finite where the reference is black (Rousselle et al. 2011).
+constexpr double kRelativeEpsilon = 0.01;
+
+// `mask`: empty (every pixel) or one byte per pixel, non-zero to keep it. The images must have
+// the same size (the caller checks and names the file).
+ImageMetrics compareImages(const Image& test, const Image& reference,
+                           const std::vector<uint8_t>& mask = {});
+
+// Per pixel |t - r| / (|r| + eps) averaged over the channels, as sRGB colours on a logarithmic
+// scale from 1e-3 (black) through blue, red and yellow to 1 and above (white); pixels outside
+// the mask are mid grey. Row-major RGB, 3 bytes a pixel.
+std::vector<unsigned char> errorColours(const Image& test, const Image& reference,
+                                        const std::vector<uint8_t>& mask = {});
+
+// The luminance SSIM works on: the preview PNG's value (clamp to [0, 1], sRGB curve) of each
+// channel, weighted by Rec. 709.
+double displayLuminance(glm::vec3 linear);
+
+}  // namespace voxgi::validation
