@@ -2,6 +2,7 @@
 // that a typo does not silently fall back to a default.
 #include "common/scene_load.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -312,6 +313,14 @@ Scene loadScene(const std::string& path) {
   }
   scene.grid = fitGrid(scene.bounds(), resolution);
   return scene;
+}
+
+void setImageWidth(Scene& scene, int width, const std::string& source) {
+  if (width < 1 || width > 16384)
+    throw InputError(source, "", "image width must be in [1, 16384], got " + std::to_string(width));
+  const double aspect = double(scene.camera.height) / double(scene.camera.width);
+  scene.camera.height = std::max(1, int(std::lround(double(width) * aspect)));
+  scene.camera.width = width;
 }
 
 }  // namespace voxgi

@@ -17,6 +17,10 @@ Scene loadScene(const std::string& path);
 // Checks a grid resolution (power of two in [1, kMaxResolution]); throws InputError(file, field).
 int readResolution(const std::string& file, const std::string& field, int64_t n);
 
+// Renders `width` pixels wide (1..16384, else InputError naming `source`), the height keeping the
+// camera's aspect ratio.
+void setImageWidth(Scene& scene, int width, const std::string& source);
+
 // Appends the triangles of a mesh file to `scene`, transformed by `transform`. Materials come from
 // the file unless `materialOverride` names one of scene.materials. Throws InputError; call
 // validateGeometry afterwards (it rejects NaN/Inf vertices and bad materials).

@@ -130,6 +130,46 @@ TEST(Cli, CompareReportsMetricsNoiseFloorAndAnErrorMap) {
   EXPECT_NE(bad.output.find("small.exr: size: 8x8"), std::string::npos) << bad.output;
 }
 
+TEST(Cli, StudyWritesEveryCombinationAndThePlot) {
+  const std::string dir = testTempDir(), scene = sourcePath("scenes/cornell_box.json");
+  ASSERT_EQ(voxgi("render " + scene + " --technique path --spp 4 --bounces 1 --image 32 --out " +
+                  dir + "ref.exr")
+                .code,
+            0);
+  const CommandResult r =
+      voxgi("study " + scene + " --technique vct,path --sweep resolution=16,32" +
+            " --sweep spp=1,2 --sweep bounces=1 --image 32 --repeat 1" + " --reference " + dir +
+            "ref.exr --csv " + dir + "s.csv --plot " + dir + "s.png");
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream csv(dir + "s.csv");
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(csv, line);) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 5u);
+  EXPECT_EQ(lines[0].rfind("technique,resolution,spp,bounces,label,seconds,", 0), 0u) << lines[0];
+  EXPECT_EQ(lines[1].rfind("vct,16,,,resolution=16,", 0), 0u) << lines[1];
+  EXPECT_EQ(lines[4].rfind("path,,2,1,spp=2 bounces=1,", 0), 0u) << lines[4];
+  int front = 0;
+  for (size_t k = 1; k < lines.size(); ++k) front += lines[k].back() == '1';
+  EXPECT_GE(front, 1);
+  // The plot is a PNG that matplotlib drew.
+  std::ifstream png(dir + "s.png", std::ios::binary);
+  std::string magic(8, '\0');
+  png.read(magic.data(), 8);
+  EXPECT_EQ(magic, "\x89PNG\r\n\x1a\n");
+  EXPECT_GT(std::filesystem::file_size(dir + "s.png"), 10000u);
+
+  for (const char* bad : {"--sweep cones.step=abc", "--sweep spp=4", "--sweep nokey=1",
+                                 "--sweep resolution=100", "--sweep backend=tpu"}) {
+    const CommandResult b = voxgi("study " + scene + " --technique vct --reference " + dir +
+                                  "ref.exr --image 32 --csv " + dir + "x.csv " + bad);
+    EXPECT_EQ(b.code, 2) << bad << "\n" << b.output;
+    EXPECT_EQ(std::count(b.output.begin(), b.output.end(), '\n'), 1) << bad << "\n" << b.output;
+  }
+  const CommandResult size = voxgi("study " + scene + " --reference " + dir + "ref.exr --csv " +
+                                   dir + "x.csv --sweep resolution=16");
+  EXPECT_EQ(size.code, 2) << size.output;
+}
+
 }  // namespace
 TEST(Cli, PlanSaysWhatRunsAndWhy) {
   const CommandResult r = voxgi("plan " + sourcePath("scenes/cornell_box.json"));

@@ -1,11 +1,12 @@
 // The image metrics of `voxgi compare` (validation/image_metrics.h) on small synthetic images
-// with answers worked out by hand.
+// with answers worked out by hand, and the Pareto front of `voxgi study`.
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
 #include "validation/image_metrics.h"
+#include "validation/pareto.h"
 
 namespace voxgi::test {
 namespace {
@@ -101,6 +102,14 @@ TEST(ImageMetrics, MaskKeepsOnlyItsPixels) {
   EXPECT_EQ(colours[0], 128);                // masked: grey
   EXPECT_EQ(colours[3 * (8 + 0)], 0);        // exact: black
   EXPECT_GT(colours[3 * (4 * 8 + 3)], 100);  // relative error 0.1 / 0.51: yellow
+}
+
+TEST(Pareto, KeepsThePointsNothingBeatsInTimeAndError) {
+  // (1, 5) fast; (2, 3); (2, 4) beaten by (2, 3); (3, 3) beaten by (2, 3); (4, 1) accurate;
+  // (4, 1) again: equal points both stay.
+  const std::vector<double> seconds{1, 2, 2, 3, 4, 4}, error{5, 3, 4, 3, 1, 1};
+  EXPECT_EQ(validation::paretoFront(seconds, error),
+            (std::vector<bool>{true, true, false, false, true, true}));
 }
 
 }  // namespace

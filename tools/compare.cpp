@@ -59,19 +59,10 @@ int runCompare(const CompareOptions& o) {
   if (std::filesystem::exists(variance)) {
     const Image v = readExr(variance);
     checkSameSize(v, variance, reference);
-    double sum = 0.0, relative = 0.0;
-    for (size_t e = 0; e < v.pixels.size(); ++e) {
-      if (!mask.empty() && mask[e] == 0) continue;
-      for (int c = 0; c < 3; ++c) {
-        const double r = reference.pixels[e][c];
-        sum += v.pixels[e][c];
-        relative += v.pixels[e][c] / (r * r + validation::kRelativeEpsilon);
-      }
-    }
-    const double values = 3.0 * double(std::max<size_t>(m.pixels, 1));
-    std::cout << "  noise floor of the reference (" << variance << "): RMSE "
-              << std::sqrt(sum / values) << ", relMSE " << relative / values << "\n";
-    out["noise_floor"] = {{"rmse", std::sqrt(sum / values)}, {"rel_mse", relative / values}};
+    const validation::ImageMetrics floor = validation::noiseFloor(reference, v, mask);
+    std::cout << "  noise floor of the reference (" << variance << "): RMSE " << floor.rmse
+              << ", relMSE " << floor.relMse << "\n";
+    out["noise_floor"] = {{"rmse", floor.rmse}, {"rel_mse", floor.relMse}};
   }
   const std::filesystem::path t(o.test);
   const std::string errorPng = o.errorPng.empty()

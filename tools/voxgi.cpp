@@ -24,6 +24,7 @@
 #include "tools/backend.h"
 #include "tools/bench.h"
 #include "tools/compare.h"
+#include "tools/study.h"
 #include "validation/diff.h"
 #include "validation/path_trace.h"
 #include "validation/report.h"
@@ -62,6 +63,7 @@ using namespace voxgi;
 struct Common {
   std::string scene;
   int resolution = 0;  // 0: the scene's
+  int image = 0;       // image width; 0: the scene's
   std::string mode;    // empty: the settings' voxelize.mode
   std::string backend = "auto";
   std::string gl = "egl";
@@ -79,6 +81,7 @@ Settings makeSettings(const Common& c, const Scene& scene) {
 Scene loadWithOverrides(const Common& c) {
   Scene scene = loadScene(c.scene);
   if (c.resolution != 0) scene.grid.resolution = readResolution("--resolution", "", c.resolution);
+  if (c.image != 0) setImageWidth(scene, c.image, "--image");
   return scene;
 }
 
@@ -252,6 +255,7 @@ int main(int argc, char** argv) {
   auto addCommon = [&](CLI::App* cmd, bool backend) {
     cmd->add_option("scene", c.scene, "scene .json or mesh file (OBJ, glTF, PLY)")->required();
     cmd->add_option("--resolution", c.resolution, "voxel grid resolution (power of two)");
+    cmd->add_option("--image", c.image, "image width in pixels (the height keeps the aspect)");
     cmd->add_option("--mode", c.mode,
                     "voxelization: conservative or antialiased (default: voxelize.mode)")
         ->check(CLI::IsMember({"conservative", "antialiased"}));
@@ -307,6 +311,10 @@ int main(int argc, char** argv) {
   auto* compareCmd = app.add_subcommand(
       "compare", "RMSE, relative MSE, MARE and SSIM of an image against a reference");
   tools::addCompareOptions(*compareCmd, compare);
+  tools::StudyOptions study;
+  auto* studyCmd = app.add_subcommand(
+      "study", "sweep parameters, time each combination and plot its error against a reference");
+  tools::addStudyOptions(*studyCmd, study);
   tools::BenchOptions bench;
   auto* benchCmd = app.add_subcommand("bench", "benchmarks (see docs/benchmarks.md)");
   auto* benchVoxelize =
@@ -339,6 +347,7 @@ int main(int argc, char** argv) {
     if (*dump) return cmdDump(c, stage, out);
     if (*plan) return cmdPlan(c);
     if (*compareCmd) return tools::runCompare(compare);
+    if (*studyCmd) return tools::runStudy(study);
     if (*benchVoxelize) return tools::runBenchVoxelize(bench);
     if (*benchVctCmd) return tools::runBenchVct(benchVct);
   } catch (const InputError& e) {

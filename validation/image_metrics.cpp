@@ -90,6 +90,27 @@ ImageMetrics compareImages(const Image& test, const Image& reference,
   return m;
 }
 
+ImageMetrics noiseFloor(const Image& reference, const Image& variance,
+                        const std::vector<uint8_t>& mask) {
+  ImageMetrics m;
+  m.ssim = 0.0;
+  double sum = 0.0, relative = 0.0;
+  for (size_t e = 0; e < reference.pixels.size(); ++e) {
+    if (!kept(mask, e)) continue;
+    ++m.pixels;
+    for (int c = 0; c < 3; ++c) {
+      const double r = reference.pixels[e][c];
+      sum += variance.pixels[e][c];
+      relative += variance.pixels[e][c] / (r * r + kRelativeEpsilon);
+    }
+  }
+  if (m.pixels == 0) return m;
+  const double values = 3.0 * double(m.pixels);
+  m.rmse = std::sqrt(sum / values);
+  m.relMse = relative / values;
+  return m;
+}
+
 std::vector<unsigned char> errorColours(const Image& test, const Image& reference,
                                         const std::vector<uint8_t>& mask) {
   // Keys at log10(error) = -3, -2.25, -1.5, -0.75, 0: black, blue, red, yellow, white.

@@ -25,6 +25,12 @@ constexpr double kRelativeEpsilon = 0.01;
 ImageMetrics compareImages(const Image& test, const Image& reference,
                            const std::vector<uint8_t>& mask = {});
 
+// The error a perfect image would still measure against a Monte Carlo reference whose per-pixel
+// variance of the mean is `variance`: RMSE = sqrt(mean variance) and relative MSE = mean
+// variance / (r^2 + eps); the other fields stay 0.
+ImageMetrics noiseFloor(const Image& reference, const Image& variance,
+                        const std::vector<uint8_t>& mask = {});
+
 // Per pixel |t - r| / (|r| + eps) averaged over the channels, as sRGB colours on a logarithmic
 // scale from 1e-3 (black) through blue, red and yellow to 1 and above (white); pixels outside
 // the mask are mid grey. Row-major RGB, 3 bytes a pixel.

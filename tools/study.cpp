@@ -1,0 +1,331 @@
+#include "tools/study.h"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include "common/error.h"
+#include "common/scene_load.h"
+#include "common/settings.h"
+#include "common/voxel_triangles.h"
+#include "tools/compare.h"
+#include "validation/image_metrics.h"
+#include "validation/pareto.h"
+#include "validation/path_trace.h"
+#include "validation/stage_functions.h"
+
+extern char** environ;
+
+namespace voxgi::tools {
+
+extern const char* const kPlotStudyScript;  // tools/plot_study.py, embedded by CMake
+
+namespace {
+
+// Keys only the path tracer takes; every other key is the cone tracer's (a --set key,
+// `resolution` or `backend`).
+const std::set<std::string> kPathKeys{"spp", "bounces", "seed"};
+
+bool appliesTo(const std::string& key, const std::string& technique) {
+  return (technique == "path") == (kPathKeys.count(key) != 0);
+}
+
+struct Sweep {
+  std::string key;
+  std::vector<std::string> values;
+};
+
+Sweep parseSweep(const std::string& text) {
+  const size_t eq = text.find('=');
+  Sweep s{text.substr(0, eq), {}};
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size())
+    throw InputError("--sweep", "", "expected key=v1,v2,... got '" + text + "'");
+  std::istringstream values(text.substr(eq + 1));
+  for (std::string v; std::getline(values, v, ',');)
+    if (!v.empty()) s.values.push_back(v);
+  return s;
+}
+
+int parseInt(const std::string& key, const std::string& value) {
+  size_t used = 0;
+  int n = 0;
+  try {
+    n = std::stoi(value, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != value.size() || value.empty())
+    throw InputError("--sweep", key, "expected an integer, got '" + value + "'");
+  return n;
+}
+
+// One point of the study, checked and ready to run.
+struct Job {
+  std::string technique;
+  std::vector<std::pair<std::string, std::string>> values;  // the swept key = value
+  Scene scene;
+  Settings settings;                     // vct
+  bool gpu = false;                      // vct
+  validation::PathTraceOptions options;  // path
+  // "resolution=64 step=0.5": each key's last dot-separated part.
+  std::string label() const {
+    std::ostringstream out;
+    for (const auto& [key, value] : values)
+      out << (out.tellp() == 0 ? "" : " ") << key.substr(key.rfind('.') + 1) << "=" << value;
+    return values.empty() ? technique : out.str();
+  }
+};
+
+struct Result {
+  double seconds = 0.0;
+  std::map<std::string, double> stages;  // stage -> median seconds
+  Image image;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+Result runVct(const Job& job, int repeats, gpu::GlContext* context) {
+  const VoxelTriangles triangles = prepareVoxelTriangles(job.scene, job.scene.grid);
+  const StageContext ctx{job.scene, job.settings, triangles};
+  std::map<std::string, std::vector<double>> stageTimes;
+  std::vector<double> totals;
+  Result r;
+  for (int k = 0; k < repeats; ++k) {
+    BufferSet buffers;
+    double total = 0.0;
+    for (const validation::StageFunctions& stage : validation::stageFunctions()) {
+      if (!ctx.plan.runs(stage.name)) continue;
+      const auto start = std::chrono::steady_clock::now();
+      if (job.gpu)
+        stage.gpu(*context, ctx, buffers);
+      else
+        stage.cpu(ctx, buffers);
+      const double s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      stageTimes[std::string(stage.name)].push_back(s);
+      total += s;
+    }
+    totals.push_back(total);
+    if (k + 1 == repeats) {
+      const Buffer& color = buffers.at("color");
+      r.image = Image(color.extent.x, color.extent.y);
+      for (size_t e = 0; e < r.image.pixels.size(); ++e) r.image.pixels[e] = color.vec3At(e);
+    }
+  }
+  for (const auto& [stage, times] : stageTimes) r.stages[stage] = median(times);
+  r.seconds = median(totals);
+  return r;
+}
+
+Result runPath(const Job& job, int repeats) {
+  std::vector<double> times;
+  Result r;
+  for (int k = 0; k < repeats; ++k) {
+    validation::PathTraceResult p = validation::pathTrace(job.scene, job.options);
+    times.push_back(p.seconds);
+    r.image = std::move(p.image);
+  }
+  r.seconds = median(times);
+  r.stages["path_trace"] = r.seconds;
+  return r;
+}
+
+// Every combination of the sweeps that apply to each technique, checked before anything runs.
+std::vector<Job> makeJobs(const StudyOptions& o, const std::vector<Sweep>& sweeps) {
+  std::vector<Job> jobs;
+  for (const std::string& technique : o.techniques) {
+    std::vector<const Sweep*> mine;
+    for (const Sweep& s : sweeps)
+      if (appliesTo(s.key, technique)) mine.push_back(&s);
+    size_t count = 1;
+    for (const Sweep* s : mine) count *= s->values.size();
+    if (count > 10000) throw InputError("--sweep", "", "more than 10000 combinations");
+    for (size_t index = 0; index < count; ++index) {
+      Job job;
+      job.technique = technique;
+      job.scene = loadScene(o.scene);
+      if (o.image != 0) setImageWidth(job.scene, o.image, "--image");
+      job.settings = resolveSettings(job.scene.settings, job.scene.file, o.preset, o.sets);
+      size_t rest = index;
+      for (const Sweep* s : mine) {
+        const std::string& value = s->values[rest % s->values.size()];
+        rest /= s->values.size();
+        job.values.emplace_back(s->key, value);
+        if (s->key == "resolution")
+          job.scene.grid.resolution =
+              readResolution("--sweep", "resolution", parseInt(s->key, value));
+        else if (s->key == "backend") {
+          if (value != "cpu" && value != "gpu")
+            throw InputError("--sweep", "backend", "expected cpu or gpu, got '" + value + "'");
+          job.gpu = value == "gpu";
+        } else if (s->key == "spp")
+          job.options.spp = std::clamp(parseInt(s->key, value), 1, 1 << 20);
+        else if (s->key == "bounces")
+          job.options.bounces = std::max(parseInt(s->key, value), -1);
+        else if (s->key == "seed")
+          job.options.seed = uint64_t(parseInt(s->key, value));
+        else
+          applySetting(job.settings, s->key + "=" + value, "--sweep");
+      }
+      jobs.push_back(std::move(job));
+    }
+  }
+  for (const Sweep& s : sweeps) {
+    bool used = false;
+    for (const std::string& t : o.techniques) used |= appliesTo(s.key, t);
+    if (!used) throw InputError("--sweep", s.key, "applies to none of the techniques studied");
+  }
+  return jobs;
+}
+
+// Runs /usr/bin/python3 on the embedded plotting script; throws when it fails.
+void plot(const std::string& csv, const std::string& png, const std::string& metric,
+          const std::string& title, const std::string& noiseFloor) {
+  const std::filesystem::path script = std::filesystem::temp_directory_path() /
+                                       ("voxgi_plot_study_" + std::to_string(getpid()) + ".py");
+  std::ofstream(script) << kPlotStudyScript;
+  const std::map<std::string, std::string> labels{{"rmse", "RMSE"},
+                                                  {"rel_mse", "relative MSE"},
+                                                  {"mare", "mean absolute relative error"},
+                                                  {"ssim_loss", "1 - SSIM"}};
+  std::vector<std::string> args{
+      "/usr/bin/python3", script.string(), csv, png, metric, labels.at(metric), title};
+  if (!noiseFloor.empty()) args.push_back(noiseFloor);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  int status = -1;
+  const int spawned = posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ);
+  if (spawned == 0) waitpid(pid, &status, 0);
+  std::filesystem::remove(script);
+  if (spawned != 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error(
+        "plotting with /usr/bin/python3 failed; it needs python3-matplotlib (scripts/setup "
+        "installs it). The CSV is written: " +
+        csv);
+}
+
+}  // namespace
+
+void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
+  cmd.add_option("scene", o.scene, "scene .json or mesh file")->required();
+  cmd.add_option("--technique", o.techniques, "vct and/or path (comma-separated)")
+      ->delimiter(',')
+      ->check(CLI::IsMember({"vct", "path"}));
+  cmd.add_option("--sweep", o.sweeps,
+                 "key=v1,v2,... (repeatable): a --set key, resolution or backend (vct); spp, "
+                 "bounces or seed (path)");
+  cmd.add_option("--preset", o.preset, "vct parameter preset, before --set and the sweeps");
+  cmd.add_option("--set", o.sets, "fixed vct parameter key=value (repeatable)");
+  cmd.add_option("--reference", o.reference, "reference image (.exr)")->required();
+  cmd.add_option("--mask", o.mask, "only pixels non-zero in this image count");
+  cmd.add_option("--csv", o.csv, "output CSV, one row per combination")->required();
+  cmd.add_option("--plot", o.plot, "output PNG: error against time, Pareto front marked");
+  cmd.add_option("--metric", o.metric, "error for the Pareto front and the plot")
+      ->check(CLI::IsMember({"rmse", "rel_mse", "mare", "ssim_loss"}));
+  cmd.add_option("--image", o.image, "image width in pixels (the height keeps the aspect)");
+  cmd.add_option("--repeat", o.repeats, "runs per combination; times are medians")
+      ->check(CLI::Range(1, 100));
+  cmd.add_option("--gl", o.gl, "GL platform for backend=gpu")
+      ->check(CLI::IsMember({"egl", "osmesa"}));
+}
+
+int runStudy(const StudyOptions& o) {
+  std::vector<Sweep> sweeps;
+  for (const std::string& s : o.sweeps) sweeps.push_back(parseSweep(s));
+  const Image reference = readImage(o.reference);
+  const std::vector<uint8_t> mask = readMask(o.mask, reference);
+  const std::vector<Job> jobs = makeJobs(o, sweeps);
+  {
+    Image probe(jobs.front().scene.camera.width, jobs.front().scene.camera.height);
+    checkSameSize(probe, o.scene + " camera.resolution (or --image)", reference);
+  }
+  std::unique_ptr<gpu::GlContext> context;
+  std::vector<Result> results;
+  std::vector<validation::ImageMetrics> metrics;
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    const Job& job = jobs[k];
+    if (job.gpu && context == nullptr) context = gpu::GlContext::create(gpu::parseGlPlatform(o.gl));
+    results.push_back(job.technique == "path" ? runPath(job, o.repeats)
+                                              : runVct(job, o.repeats, context.get()));
+    metrics.push_back(validation::compareImages(results.back().image, reference, mask));
+    std::cout << "[" << k + 1 << "/" << jobs.size() << "] " << job.technique << " " << job.label()
+              << ": " << results.back().seconds << " s, RMSE " << metrics.back().rmse << ", relMSE "
+              << metrics.back().relMse << ", SSIM " << metrics.back().ssim << std::endl;
+  }
+  const auto errorOf = [&](const validation::ImageMetrics& m) {
+    return o.metric == "rmse"      ? m.rmse
+           : o.metric == "rel_mse" ? m.relMse
+           : o.metric == "mare"    ? m.mare
+                                   : 1.0 - m.ssim;
+  };
+  std::vector<double> seconds, errors;
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    seconds.push_back(results[k].seconds);
+    errors.push_back(errorOf(metrics[k]));
+  }
+  const std::vector<bool> front = validation::paretoFront(seconds, errors);
+
+  std::vector<std::string> stages;
+  for (const validation::StageFunctions& s : validation::stageFunctions())
+    stages.emplace_back(s.name);
+  stages.emplace_back("path_trace");
+  std::ofstream csv(o.csv);
+  if (!csv) throw InputError(o.csv, "", "cannot write");
+  csv << "technique";
+  for (const Sweep& s : sweeps) csv << "," << s.key;
+  csv << ",label,seconds";
+  for (const std::string& s : stages) csv << "," << s << "_seconds";
+  csv << ",rmse,rel_mse,mare,ssim,ssim_loss,pareto\n";
+  csv.precision(6);
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    csv << jobs[k].technique;
+    for (const Sweep& s : sweeps) {
+      csv << ",";
+      for (const auto& [key, value] : jobs[k].values)
+        if (key == s.key) csv << value;
+    }
+    csv << "," << jobs[k].label() << "," << results[k].seconds;
+    for (const std::string& s : stages) {
+      csv << ",";
+      const auto it = results[k].stages.find(s);
+      if (it != results[k].stages.end()) csv << it->second;
+    }
+    const validation::ImageMetrics& m = metrics[k];
+    csv << "," << m.rmse << "," << m.relMse << "," << m.mare << "," << m.ssim << "," << 1.0 - m.ssim
+        << "," << (front[k] ? 1 : 0) << "\n";
+  }
+  csv.close();
+  std::cout << "wrote " << o.csv << " (" << jobs.size() << " rows)\n";
+  if (o.plot.empty()) return kExitOk;
+
+  std::string noiseFloor;
+  const std::string variance = validation::variancePath(o.reference);
+  if (std::filesystem::exists(variance) && (o.metric == "rmse" || o.metric == "rel_mse")) {
+    const Image v = readExr(variance);
+    checkSameSize(v, variance, reference);
+    const validation::ImageMetrics floor = validation::noiseFloor(reference, v, mask);
+    noiseFloor = std::to_string(o.metric == "rmse" ? floor.rmse : floor.relMse);
+  }
+  const std::string title = std::filesystem::path(o.scene).filename().string() + " against " +
+                            std::filesystem::path(o.reference).filename().string();
+  plot(o.csv, o.plot, o.metric, title, noiseFloor);
+  std::cout << "wrote " << o.plot << "\n";
+  return kExitOk;
+}
+
+}  // namespace voxgi::tools

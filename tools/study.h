@@ -1,0 +1,29 @@
+// `voxgi study`: every combination of the swept parameters, rendered and timed (median of
+// repeats, per stage), measured against a reference image, written as CSV with the Pareto front
+// of error against time, and plotted by tools/plot_study.py (docs/accuracy.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace voxgi::tools {
+
+struct StudyOptions {
+  std::string scene;
+  std::vector<std::string> techniques{"vct"};  // vct and/or path
+  std::vector<std::string> sweeps;             // "key=v1,v2,..."
+  std::string preset = "default";
+  std::vector<std::string> sets;  // fixed vct parameters, applied before the swept ones
+  std::string reference, mask, csv, plot;
+  std::string metric = "rel_mse";  // the error the Pareto front and the plot use
+  std::string gl = "egl";          // for backend=gpu
+  int image = 0;                   // image width (height keeps the camera's aspect); 0: the scene's
+  int repeats = 3;
+};
+
+void addStudyOptions(CLI::App& cmd, StudyOptions& options);
+int runStudy(const StudyOptions& options);
+
+}  // namespace voxgi::tools
