@@ -1,6 +1,6 @@
-"""Plots a `voxgi study` CSV: error against time on log axes, one marker per technique, each
-point labelled with its swept values, the Pareto front as a staircase and the reference's noise
-floor as a dotted line. Called by voxgi (embedded); usable by hand:
+"""Plots a `voxgi study` CSV: error against time on log axes, one marker per technique, the
+Pareto front of all points as a solid staircase, each technique's own front dashed with its points
+labelled by their swept values, and the reference's noise floor as a dotted line. Called by voxgi (embedded); usable by hand:
 /usr/bin/python3 tools/plot_study.py study.csv study.png rel_mse "relative MSE" "title" [floor]
 """
 import csv
@@ -21,14 +21,21 @@ def main(csv_path, png_path, metric, metric_label, title, noise_floor=None):
         points = [r for r in rows if r["technique"] == technique]
         x = [float(r["seconds"]) for r in points]
         y = [float(r[metric]) for r in points]
-        ax.scatter(x, y, marker=markers.get(technique, "^"), s=28, alpha=0.8, label=technique)
-        for r, xi, yi in zip(points, x, y):
-            ax.annotate(r["label"], (xi, yi), fontsize=6, xytext=(3, 3),
-                        textcoords="offset points")
+        dots = ax.scatter(x, y, marker=markers.get(technique, "^"), s=28, alpha=0.8,
+                          label=technique)
+        # The technique's own front, dashed; only its points are labelled, to stay readable
+        # (every point is in the CSV).
+        own = sorted((r for r in points if r["pareto_technique"] == "1"),
+                     key=lambda r: float(r["seconds"]))
+        ax.step([float(r["seconds"]) for r in own], [float(r[metric]) for r in own],
+                where="post", color=dots.get_facecolor()[0], linestyle="--", linewidth=0.8)
+        for r in own:
+            ax.annotate(r["label"], (float(r["seconds"]), float(r[metric])), fontsize=6,
+                        xytext=(3, 3), textcoords="offset points")
     front = sorted((r for r in rows if r["pareto"] == "1"), key=lambda r: float(r["seconds"]))
     if front:
         ax.step([float(r["seconds"]) for r in front], [float(r[metric]) for r in front],
-                where="post", color="black", linewidth=1, label="Pareto front")
+                where="post", color="black", linewidth=1, label="Pareto front (all)")
     if noise_floor is not None:
         ax.axhline(float(noise_floor), color="grey", linestyle=":",
                    label="reference noise floor")

@@ -25,11 +25,12 @@ uint64_t mix(uint64_t z) {
   return z ^ (z >> 31);
 }
 
-// Random numbers of one (pixel, sample): dimension d is hash(key, d), independent of threads.
+// Random numbers of one (pixel, sample): dimension d is the d-th output of SplitMix64 seeded with
+// key = hash(seed, pixel, sample), independent of threads. One finaliser per number.
 struct Sampler {
   uint64_t key;
   uint64_t dimension = 0;
-  float next() { return float(mix(key ^ mix(++dimension)) >> 40) * 0x1p-24f; }
+  float next() { return float(mix(key + 0x9e3779b97f4a7c15ull * ++dimension) >> 40) * 0x1p-24f; }
 };
 
 float luminance(vec3 c) {
@@ -72,6 +73,7 @@ struct Setup {
   explicit Setup(const Scene& scene) {
     device = rtcNewDevice("threads=0");
     rtc = rtcNewScene(device);
+    rtcSetSceneBuildQuality(rtc, RTC_BUILD_QUALITY_HIGH);  // built once, traced millions of times
     const auto [lo, hi] = scene.bounds();
     if (lo.x <= hi.x) sceneScale = float(glm::length(hi - lo));
     normals.resize(scene.meshes.size());
