@@ -1,9 +1,11 @@
 // The voxgi command: exit codes, one-line errors and the files it writes.
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 #include <vector>
 #include <sys/wait.h>
 
@@ -136,18 +138,31 @@ TEST(Cli, StudyWritesEveryCombinationAndThePlot) {
                   dir + "ref.exr")
                 .code,
             0);
+  // Both backends (llvmpipe through OSMesa): the same image, so the same error.
   const CommandResult r =
-      voxgi("study " + scene + " --technique vct,path --sweep resolution=16,32" +
-            " --sweep spp=1,2 --sweep bounces=1 --image 32 --repeat 1" + " --reference " + dir +
-            "ref.exr --csv " + dir + "s.csv --plot " + dir + "s.png");
+      voxgi("study " + scene + " --technique vct,path --sweep backend=cpu,gpu --gl osmesa" +
+            " --sweep resolution=16 --sweep spp=1,2 --sweep bounces=1 --image 32 --repeat 1" +
+            " --reference " + dir + "ref.exr --csv " + dir + "s.csv --plot " + dir + "s.png");
   ASSERT_EQ(r.code, 0) << r.output;
   std::ifstream csv(dir + "s.csv");
+  std::vector<std::vector<std::string>> rows;
   std::vector<std::string> lines;
-  for (std::string line; std::getline(csv, line);) lines.push_back(line);
+  for (std::string line; std::getline(csv, line);) {
+    lines.push_back(line);
+    std::istringstream fields(line);
+    rows.emplace_back();
+    for (std::string f; std::getline(fields, f, ',');) rows.back().push_back(f);
+  }
   ASSERT_EQ(lines.size(), 5u);
-  EXPECT_EQ(lines[0].rfind("technique,resolution,spp,bounces,label,seconds,", 0), 0u) << lines[0];
-  EXPECT_EQ(lines[1].rfind("vct,16,,,resolution=16,", 0), 0u) << lines[1];
-  EXPECT_EQ(lines[4].rfind("path,,2,1,spp=2 bounces=1,", 0), 0u) << lines[4];
+  EXPECT_EQ(lines[0].rfind("technique,backend,resolution,spp,bounces,label,seconds,", 0), 0u)
+      << lines[0];
+  EXPECT_EQ(lines[1].rfind("vct,cpu,16,,,backend=cpu resolution=16,", 0), 0u) << lines[1];
+  EXPECT_EQ(lines[2].rfind("vct,gpu,16,,,backend=gpu resolution=16,", 0), 0u) << lines[2];
+  EXPECT_EQ(lines[4].rfind("path,,,2,1,spp=2 bounces=1,", 0), 0u) << lines[4];
+  const auto rmse = std::find(rows[0].begin(), rows[0].end(), "rmse") - rows[0].begin();
+  ASSERT_LT(size_t(rmse), rows[1].size());
+  EXPECT_GT(std::stod(rows[1][size_t(rmse)]), 0.0);
+  EXPECT_NEAR(std::stod(rows[1][size_t(rmse)]), std::stod(rows[2][size_t(rmse)]), 1e-6);
   int front = 0;
   for (size_t k = 1; k < lines.size(); ++k) front += lines[k].back() == '1';
   EXPECT_GE(front, 2);  // pareto_technique, the last column: each technique has a front
