@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -130,6 +131,22 @@ TEST(Cli, CompareReportsMetricsNoiseFloorAndAnErrorMap) {
   const CommandResult bad = voxgi("compare " + dir + "small.exr " + dir + "r.exr");
   EXPECT_EQ(bad.code, 2) << bad.output;
   EXPECT_NE(bad.output.find("small.exr: size: 8x8"), std::string::npos) << bad.output;
+  // A reference with a NaN and an empty mask are bad input; a NaN under test is reported.
+  Image withNan = reference, empty(16, 8);
+  withNan.at(3, 2).g = std::numeric_limits<float>::quiet_NaN();
+  writeExr(dir + "nan.exr", withNan);
+  writeExr(dir + "empty.exr", empty);
+  const CommandResult nanReference = voxgi("compare " + dir + "t.exr " + dir + "nan.exr");
+  EXPECT_EQ(nanReference.code, 2) << nanReference.output;
+  EXPECT_NE(nanReference.output.find("nan.exr: pixel (3, 2): not finite"), std::string::npos)
+      << nanReference.output;
+  const CommandResult emptyMask =
+      voxgi("compare " + dir + "t.exr " + dir + "r.exr --mask " + dir + "empty.exr");
+  EXPECT_EQ(emptyMask.code, 2) << emptyMask.output;
+  const CommandResult nanTest = voxgi("compare " + dir + "nan.exr " + dir + "r.exr");
+  EXPECT_EQ(nanTest.code, 0) << nanTest.output;
+  EXPECT_NE(nanTest.output.find("non-finite pixels in " + dir + "nan.exr: 1"), std::string::npos)
+      << nanTest.output;
 }
 
 TEST(Cli, StudyWritesEveryCombinationAndThePlot) {

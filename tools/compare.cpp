@@ -1,5 +1,6 @@
 #include "tools/compare.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -12,6 +13,13 @@
 #include "validation/path_trace.h"
 
 namespace voxgi::tools {
+namespace {
+
+bool finite(glm::vec3 p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+}  // namespace
 
 void addCompareOptions(CLI::App& cmd, CompareOptions& o) {
   cmd.add_option("test", o.test, "image to measure (.exr, or .png as sRGB)")->required();
@@ -36,11 +44,23 @@ std::vector<uint8_t> readMask(const std::string& path, const Image& reference) {
   checkSameSize(mask, path, reference);
   std::vector<uint8_t> keep(mask.pixels.size());
   for (size_t e = 0; e < keep.size(); ++e) keep[e] = mask.pixels[e] != glm::vec3(0.0f) ? 1 : 0;
+  if (std::find(keep.begin(), keep.end(), 1) == keep.end())
+    throw InputError(path, "", "the mask keeps no pixel");
   return keep;
 }
 
+Image readReference(const std::string& path) {
+  Image reference = readImage(path);
+  for (int y = 0; y < reference.height; ++y)
+    for (int x = 0; x < reference.width; ++x)
+      if (!finite(reference.at(x, y)))
+        throw InputError(path, "pixel (" + std::to_string(x) + ", " + std::to_string(y) + ")",
+                         "not finite; a reference must be");
+  return reference;
+}
+
 int runCompare(const CompareOptions& o) {
-  const Image reference = readImage(o.reference);
+  const Image reference = readReference(o.reference);
   const Image test = readImage(o.test);
   checkSameSize(test, o.test, reference);
   const std::vector<uint8_t> mask = readMask(o.mask, reference);
@@ -51,6 +71,10 @@ int runCompare(const CompareOptions& o) {
             << "  relMSE  " << m.relMse << "\n"
             << "  MARE    " << m.mare << "\n"
             << "  SSIM    " << m.ssim << "\n";
+  // NaN or Inf in the image under test is a finding, not bad input: the metrics show it too.
+  const size_t nonFinite = size_t(std::count_if(test.pixels.begin(), test.pixels.end(),
+                                                [](glm::vec3 p) { return !finite(p); }));
+  if (nonFinite > 0) std::cout << "  non-finite pixels in " << o.test << ": " << nonFinite << "\n";
   nlohmann::json out{{"test", o.test}, {"reference", o.reference}, {"pixels", m.pixels},
                      {"rmse", m.rmse}, {"rel_mse", m.relMse},      {"mare", m.mare},
                      {"ssim", m.ssim}};

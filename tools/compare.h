@@ -18,9 +18,12 @@ struct CompareOptions {
 void addCompareOptions(CLI::App& cmd, CompareOptions& options);
 int runCompare(const CompareOptions& options);
 
-// The pixels a mask image keeps (non-zero in any channel), checked against the reference's size;
-// empty when `path` is empty.
+// The pixels a mask image keeps (non-zero in any channel), checked against the reference's size
+// and to keep at least one; empty when `path` is empty.
 std::vector<uint8_t> readMask(const std::string& path, const Image& reference);
+
+// An image every pixel of which is finite; throws InputError naming the first pixel that is not.
+Image readReference(const std::string& path);
 
 // Throws InputError naming `testPath` when the sizes differ.
 void checkSameSize(const Image& test, const std::string& testPath, const Image& reference);

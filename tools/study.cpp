@@ -247,7 +247,7 @@ void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
 int runStudy(const StudyOptions& o) {
   std::vector<Sweep> sweeps;
   for (const std::string& s : o.sweeps) sweeps.push_back(parseSweep(s));
-  const Image reference = readImage(o.reference);
+  const Image reference = readReference(o.reference);
   const std::vector<uint8_t> mask = readMask(o.mask, reference);
   const std::vector<Job> jobs = makeJobs(o, sweeps);
   {
