@@ -39,6 +39,9 @@ struct BenchVctOptions {
 void addBenchVctOptions(CLI::App& cmd, BenchVctOptions& options);
 int runBenchVct(const BenchVctOptions& options);
 
+// The median of `values` (the upper one of the middle two for an even count).
+double median(std::vector<double> values);
+
 // The median wall-clock time of `repeats` runs of `run`.
 double medianSeconds(int repeats, const std::function<void()>& run);
 

@@ -22,6 +22,11 @@
 
 namespace voxgi::tools {
 
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
 double medianSeconds(int repeats, const std::function<void()>& run) {
   std::vector<double> t;
   for (int r = 0; r < repeats; ++r) {
@@ -29,8 +34,7 @@ double medianSeconds(int repeats, const std::function<void()>& run) {
     run();
     t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
+  return median(std::move(t));
 }
 
 namespace {
@@ -56,8 +60,7 @@ std::vector<std::pair<std::string, double>> timeStages(const StageContext& ctx, 
       times.push_back(
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
-    std::sort(times.begin(), times.end());
-    const double s = times[times.size() / 2];
+    const double s = median(std::move(times));
     if (stage.name != "voxelize") out.emplace_back(stage.name, s);
     if (context != nullptr)
       stage.cpu(ctx, inputs);  // the next stage's inputs come from the CPU

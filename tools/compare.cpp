@@ -30,18 +30,28 @@ void addCompareOptions(CLI::App& cmd, CompareOptions& o) {
   cmd.add_option("--json", o.json, "also write the metrics as JSON");
 }
 
-void checkSameSize(const Image& test, const std::string& testPath, const Image& reference) {
-  if (test.width != reference.width || test.height != reference.height)
-    throw InputError(testPath, "size",
-                     std::to_string(test.width) + "x" + std::to_string(test.height) +
+void checkSameSize(int width, int height, const std::string& name, const Image& reference) {
+  if (width != reference.width || height != reference.height)
+    throw InputError(name, "size",
+                     std::to_string(width) + "x" + std::to_string(height) +
                          " differs from the reference's " + std::to_string(reference.width) + "x" +
                          std::to_string(reference.height));
+}
+
+std::optional<validation::ImageMetrics> referenceNoiseFloor(const std::string& referencePath,
+                                                            const Image& reference,
+                                                            const std::vector<uint8_t>& mask) {
+  const std::string variance = validation::variancePath(referencePath);
+  if (!std::filesystem::exists(variance)) return std::nullopt;
+  const Image v = readExr(variance);
+  checkSameSize(v.width, v.height, variance, reference);
+  return validation::noiseFloor(reference, v, mask);
 }
 
 std::vector<uint8_t> readMask(const std::string& path, const Image& reference) {
   if (path.empty()) return {};
   const Image mask = readImage(path);
-  checkSameSize(mask, path, reference);
+  checkSameSize(mask.width, mask.height, path, reference);
   std::vector<uint8_t> keep(mask.pixels.size());
   for (size_t e = 0; e < keep.size(); ++e) keep[e] = mask.pixels[e] != glm::vec3(0.0f) ? 1 : 0;
   if (std::find(keep.begin(), keep.end(), 1) == keep.end())
@@ -62,7 +72,7 @@ Image readReference(const std::string& path) {
 int runCompare(const CompareOptions& o) {
   const Image reference = readReference(o.reference);
   const Image test = readImage(o.test);
-  checkSameSize(test, o.test, reference);
+  checkSameSize(test.width, test.height, o.test, reference);
   const std::vector<uint8_t> mask = readMask(o.mask, reference);
   const validation::ImageMetrics m = validation::compareImages(test, reference, mask);
   std::cout << "compare " << o.test << " against " << o.reference << " (" << reference.width << "x"
@@ -79,14 +89,10 @@ int runCompare(const CompareOptions& o) {
                      {"rmse", m.rmse}, {"rel_mse", m.relMse},      {"mare", m.mare},
                      {"ssim", m.ssim}};
   // The reference's own error: a perfect image would still measure this far from it.
-  const std::string variance = validation::variancePath(o.reference);
-  if (std::filesystem::exists(variance)) {
-    const Image v = readExr(variance);
-    checkSameSize(v, variance, reference);
-    const validation::ImageMetrics floor = validation::noiseFloor(reference, v, mask);
-    std::cout << "  noise floor of the reference (" << variance << "): RMSE " << floor.rmse
-              << ", relMSE " << floor.relMse << "\n";
-    out["noise_floor"] = {{"rmse", floor.rmse}, {"rel_mse", floor.relMse}};
+  if (const auto floor = referenceNoiseFloor(o.reference, reference, mask)) {
+    std::cout << "  noise floor of the reference (" << validation::variancePath(o.reference)
+              << "): RMSE " << floor->rmse << ", relMSE " << floor->relMse << "\n";
+    out["noise_floor"] = {{"rmse", floor->rmse}, {"rel_mse", floor->relMse}};
   }
   const std::filesystem::path t(o.test);
   const std::string errorPng = o.errorPng.empty()

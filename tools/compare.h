@@ -2,12 +2,14 @@
 // reference's own noise floor when its variance image lies beside it, and a false-colour map.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "common/image_io.h"
+#include "validation/image_metrics.h"
 
 namespace voxgi::tools {
 
@@ -25,7 +27,13 @@ std::vector<uint8_t> readMask(const std::string& path, const Image& reference);
 // An image every pixel of which is finite; throws InputError naming the first pixel that is not.
 Image readReference(const std::string& path);
 
-// Throws InputError naming `testPath` when the sizes differ.
-void checkSameSize(const Image& test, const std::string& testPath, const Image& reference);
+// Throws InputError naming `name` when width x height is not the reference's size.
+void checkSameSize(int width, int height, const std::string& name, const Image& reference);
+
+// The noise floor of a path-traced reference (validation::noiseFloor) from the variance image
+// beside it, if there is one.
+std::optional<validation::ImageMetrics> referenceNoiseFloor(const std::string& referencePath,
+                                                            const Image& reference,
+                                                            const std::vector<uint8_t>& mask);
 
 }  // namespace voxgi::tools

@@ -14,10 +14,12 @@
 #include <set>
 #include <sstream>
 
+#include "common/buffer_io.h"
 #include "common/error.h"
 #include "common/scene_load.h"
 #include "common/settings.h"
 #include "common/voxel_triangles.h"
+#include "tools/bench.h"
 #include "tools/compare.h"
 #include "validation/image_metrics.h"
 #include "validation/pareto.h"
@@ -92,11 +94,6 @@ struct Result {
   Image image;
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
 Result runVct(const Job& job, int repeats, gpu::GlContext* context) {
   const VoxelTriangles triangles = prepareVoxelTriangles(job.scene, job.scene.grid);
   const StageContext ctx{job.scene, job.settings, triangles};
@@ -119,11 +116,7 @@ Result runVct(const Job& job, int repeats, gpu::GlContext* context) {
       total += s;
     }
     totals.push_back(total);
-    if (k + 1 == repeats) {
-      const Buffer& color = buffers.at("color");
-      r.image = Image(color.extent.x, color.extent.y);
-      for (size_t e = 0; e < r.image.pixels.size(); ++e) r.image.pixels[e] = color.vec3At(e);
-    }
+    if (k + 1 == repeats) r.image = bufferImage(buffers.at("color"));
   }
   for (const auto& [stage, times] : stageTimes) r.stages[stage] = median(times);
   r.seconds = median(totals);
@@ -250,10 +243,8 @@ int runStudy(const StudyOptions& o) {
   const Image reference = readReference(o.reference);
   const std::vector<uint8_t> mask = readMask(o.mask, reference);
   const std::vector<Job> jobs = makeJobs(o, sweeps);
-  {
-    Image probe(jobs.front().scene.camera.width, jobs.front().scene.camera.height);
-    checkSameSize(probe, o.scene + " camera.resolution (or --image)", reference);
-  }
+  checkSameSize(jobs.front().scene.camera.width, jobs.front().scene.camera.height,
+                o.scene + " camera.resolution (or --image)", reference);
   std::unique_ptr<gpu::GlContext> context;
   std::vector<Result> results;
   std::vector<validation::ImageMetrics> metrics;
@@ -328,13 +319,9 @@ int runStudy(const StudyOptions& o) {
   if (o.plot.empty()) return kExitOk;
 
   std::string noiseFloor;
-  const std::string variance = validation::variancePath(o.reference);
-  if (std::filesystem::exists(variance) && (o.metric == "rmse" || o.metric == "rel_mse")) {
-    const Image v = readExr(variance);
-    checkSameSize(v, variance, reference);
-    const validation::ImageMetrics floor = validation::noiseFloor(reference, v, mask);
-    noiseFloor = std::to_string(o.metric == "rmse" ? floor.rmse : floor.relMse);
-  }
+  const auto floor = referenceNoiseFloor(o.reference, reference, mask);
+  if (floor && (o.metric == "rmse" || o.metric == "rel_mse"))
+    noiseFloor = std::to_string(o.metric == "rmse" ? floor->rmse : floor->relMse);
   const std::string title = std::filesystem::path(o.scene).filename().string() + " against " +
                             std::filesystem::path(o.reference).filename().string();
   plot(o.csv, o.plot, o.metric, title, noiseFloor);

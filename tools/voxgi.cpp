@@ -187,16 +187,10 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
 
 std::atomic<bool> interrupted{false};
 
-Image imageOf(const Buffer& color) {
-  Image image(color.extent.x, color.extent.y);
-  for (size_t e = 0; e < image.pixels.size(); ++e) image.pixels[e] = color.vec3At(e);
-  return image;
-}
-
 // Voxel cone tracing: every stage up to compose on the chosen backend.
 int cmdRenderVct(const Common& c, const std::string& out, const std::string& png) {
   const StageRun run = runStages(c, "compose");
-  const Image image = imageOf(run.buffers.at("color"));
+  const Image image = bufferImage(run.buffers.at("color"));
   writeExr(out, image);
   if (!png.empty()) writePng(png, image);
   std::cout << "cone traced " << run.scene.camera.width << "x" << run.scene.camera.height << " at "

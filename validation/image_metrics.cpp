@@ -11,6 +11,13 @@ bool kept(const std::vector<uint8_t>& mask, size_t e) {
   return mask.empty() || mask[e] != 0;
 }
 
+// The luminance SSIM works on: the preview PNG's value (clamp to [0, 1], sRGB curve) of each
+// channel, weighted by Rec. 709.
+double displayLuminance(glm::vec3 linear) {
+  return 0.2126 * double(linearToSrgb(linear.r)) + 0.7152 * double(linearToSrgb(linear.g)) +
+         0.0722 * double(linearToSrgb(linear.b));
+}
+
 // SSIM (Wang et al. 2004) with the usual constants for values in [0, 1]: an 11x11 Gaussian window
 // of sigma 1.5 (weights sum to 1), C1 = (0.01)^2, C2 = (0.03)^2. Windows are clipped at the image
 // border and renormalised, so every pixel has a value and small images work.
@@ -61,11 +68,6 @@ double meanSsim(const Image& test, const Image& reference, const std::vector<uin
 }
 
 }  // namespace
-
-double displayLuminance(glm::vec3 linear) {
-  return 0.2126 * double(linearToSrgb(linear.r)) + 0.7152 * double(linearToSrgb(linear.g)) +
-         0.0722 * double(linearToSrgb(linear.b));
-}
 
 ImageMetrics compareImages(const Image& test, const Image& reference,
                            const std::vector<uint8_t>& mask) {

@@ -37,8 +37,4 @@ ImageMetrics noiseFloor(const Image& reference, const Image& variance,
 std::vector<unsigned char> errorColours(const Image& test, const Image& reference,
                                         const std::vector<uint8_t>& mask = {});
 
-// The luminance SSIM works on: the preview PNG's value (clamp to [0, 1], sRGB curve) of each
-// channel, weighted by Rec. 709.
-double displayLuminance(glm::vec3 linear);
-
 }  // namespace voxgi::validation
