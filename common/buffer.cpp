@@ -2,68 +2,37 @@
 
 #include "common/mips.h"
 
-#include <array>
 #include <stdexcept>
 
 namespace voxgi {
-namespace {
-
-#define VOXGI_STAGE(stage, summary) StageSpec{#stage, summary},
-constexpr std::array kStages{
-#include "common/stages.inc"
-};
-#undef VOXGI_STAGE
-
-#define VOXGI_BUFFER(stage, name, type, components, shape, need, meaning)                \
-  BufferSpec{#stage,           #name,  ScalarType::type, components, BufferShape::shape, \
-             BufferNeed::need, meaning},
-constexpr std::array kBuffers{
-#include "common/stages.inc"
-};
-#undef VOXGI_BUFFER
-
-}  // namespace
-
-const char* scalarTypeName(ScalarType t) {
-  switch (t) {
-    case ScalarType::u32:
-      return "u32";
-    case ScalarType::i32:
-      return "i32";
-    case ScalarType::f32:
-      return "f32";
-  }
-  return "?";
-}
-
-std::span<const StageSpec> stageSpecs() {
-  return kStages;
-}
-std::span<const BufferSpec> bufferSpecs() {
-  return kBuffers;
-}
-
-std::vector<const BufferSpec*> stageBuffers(std::string_view stage) {
-  std::vector<const BufferSpec*> out;
-  for (const BufferSpec& b : kBuffers)
-    if (b.stage == stage) out.push_back(&b);
-  return out;
-}
-
-const BufferSpec& bufferSpec(std::string_view stage, std::string_view name) {
-  for (const BufferSpec& b : kBuffers)
-    if (b.stage == stage && b.name == name) return b;
-  throw std::out_of_range("no buffer " + std::string(stage) + "." + std::string(name));
-}
-
-const StageSpec* findStage(std::string_view name) {
-  for (const StageSpec& s : kStages)
-    if (s.name == name) return &s;
-  return nullptr;
-}
-
 Buffer::Buffer(const BufferSpec& s, glm::ivec3 e)
     : spec(&s), extent(e), words(size_t(e.x) * size_t(e.y) * size_t(e.z) * size_t(s.components)) {}
+
+const Buffer& BufferSet::at(BufferId id) const {
+  const Buffer* b = find(id);
+  if (b == nullptr)
+    throw std::logic_error("no buffer " + bufferSpec(id).qualifiedName() +
+                           " in the set: no stage before the reader produced it");
+  return *b;
+}
+
+const Buffer* BufferSet::find(BufferId id) const {
+  const auto it = buffers_.find(id);
+  return it == buffers_.end() ? nullptr : &it->second;
+}
+
+void BufferSet::put(Buffer b) {
+  const BufferId id = b.spec->id;
+  buffers_.insert_or_assign(id, std::move(b));
+}
+
+Buffer BufferSet::take(BufferId id) {
+  const auto it = buffers_.find(id);
+  if (it == buffers_.end()) return {};
+  Buffer b = std::move(it->second);
+  buffers_.erase(it);
+  return b;
+}
 
 double Buffer::value(size_t element, int component) const {
   switch (spec->type) {

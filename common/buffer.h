@@ -1,4 +1,4 @@
-// Named, typed buffers that flow between stages. Every element is a 32-bit word (u32, i32 or f32),
+// Typed buffers that flow between stages. Every element is a 32-bit word (u32, i32 or f32),
 // `components` words per voxel or pixel, voxels x-fastest (see common/grid.h).
 #pragma once
 
@@ -14,6 +14,8 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+
+#include "common/stage_list.h"
 
 namespace voxgi {
 
@@ -42,44 +44,6 @@ struct ZeroedAllocator {
 };
 using Words = std::vector<uint32_t, ZeroedAllocator<uint32_t>>;
 
-enum class ScalarType { u32, i32, f32 };
-const char* scalarTypeName(ScalarType t);
-
-// Which effect of the plan (common/effect_plan.h) a buffer depends on: without it the buffer is not
-// produced.
-enum class BufferNeed { always, emission, isotropic, anisotropic, specular, ambient_occlusion };
-
-// How a buffer's elements are laid out (common/pyramid.h has the level offsets):
-// volume: N^3 voxels; mips: levels 1..log2(N) of an N^3 volume, level l is (N>>l)^3, one after
-// another; mips6: the same levels, each six (N>>l)^3 volumes side by side along x (faces +x, -x,
-// +y, -y, +z, -z), so level l is (6(N>>l)) x (N>>l) x (N>>l); image: the camera's pixels, row 0 at
-// the top.
-enum class BufferShape { volume, mips, mips6, image };
-
-// A buffer as declared in common/stages.inc.
-struct BufferSpec {
-  std::string_view stage;
-  std::string_view name;
-  ScalarType type;
-  int components;
-  BufferShape shape;
-  BufferNeed need;
-  std::string_view meaning;
-};
-
-struct StageSpec {
-  std::string_view name;
-  std::string_view summary;
-};
-
-std::span<const StageSpec> stageSpecs();
-std::span<const BufferSpec> bufferSpecs();
-// The buffers a stage writes, in declaration order.
-std::vector<const BufferSpec*> stageBuffers(std::string_view stage);
-const BufferSpec& bufferSpec(std::string_view stage, std::string_view name);
-// The stage with this name; nullptr if there is none.
-const StageSpec* findStage(std::string_view name);
-
 struct Buffer {
   const BufferSpec* spec = nullptr;
   glm::ivec3 extent{0};
@@ -87,6 +51,7 @@ struct Buffer {
 
   Buffer() = default;
   Buffer(const BufferSpec& s, glm::ivec3 e);
+  Buffer(BufferId id, glm::ivec3 e) : Buffer(bufferSpec(id), e) {}
   size_t elementCount() const { return size_t(extent.x) * size_t(extent.y) * size_t(extent.z); }
   int components() const { return spec->components; }
   template <class T>
@@ -108,8 +73,28 @@ struct Buffer {
   double value(size_t element, int component) const;
 };
 
-// Buffers by name; a stage reads its inputs from the set and adds its outputs.
-using BufferSet = std::map<std::string, Buffer, std::less<>>;
+// The buffers of one run, each under its own declaration (stage and name): bounce's radiance
+// never replaces light_voxels'. A stage reads its inputs with at() or find() and adds its outputs
+// with put(); iteration follows the declaration order of common/stages.inc.
+class BufferSet {
+ public:
+  // Throws std::logic_error naming the buffer when the set does not hold it (a stage read an
+  // input that no stage before it produced).
+  const Buffer& at(BufferId id) const;
+  const Buffer* find(BufferId id) const;
+  bool contains(BufferId id) const { return buffers_.count(id) != 0; }
+  // Adds or replaces the buffer under its spec's id.
+  void put(Buffer b);
+  // Moves the buffer out of the set (an empty Buffer if absent), for a stage that rebuilds it in
+  // place and puts it back.
+  Buffer take(BufferId id);
+  size_t size() const { return buffers_.size(); }
+  auto begin() const { return buffers_.begin(); }
+  auto end() const { return buffers_.end(); }
+
+ private:
+  std::map<BufferId, Buffer> buffers_;
+};
 
 // Elements of a buffer of `shape` for an N^3 grid or a width x height image.
 uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image);

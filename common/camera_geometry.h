@@ -8,6 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "common/scene.h"
+#include "shaders/shared/gbuffer_kernel.h"
 
 namespace voxgi {
 
@@ -22,10 +23,7 @@ struct CameraRays {
   glm::mat4 viewProjection(float nearPlane, float farPlane) const;
 };
 
-struct SurfaceTriangle {
-  glm::vec4 normal;  // xyz: unit normal (right-handed winding), 0 if degenerate
-  glm::uvec4 info;   // x: object id (mesh index + 1), y: material index
-};
+using shared::SurfaceTriangle;
 
 struct CameraGeometry {
   CameraRays camera;

@@ -1,39 +1,55 @@
-// The effect planner (DESIGN.md): which stages, buffers and cones a scene needs, decided once from
-// the scene and the settings so that a scene pays only for the effects it uses. Stages read the
-// decisions from StageContext::plan; `voxgi plan` prints them with the reason for each.
+// The effect plan (docs/effect-plan.md): which stages, buffers and effects a scene needs, decided
+// once from the scene and the settings by its technique's planner (common/<technique>/plan.cpp),
+// so that a scene pays only for the effects it uses. Stages read the decisions from
+// StageContext::plan; `voxgi plan` prints them with the reason for each.
 #pragma once
 
+#include <bitset>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "common/scene.h"
-#include "common/settings.h"
+#include "common/stage_list.h"
 
 namespace voxgi {
 
-// One line of the plan: a stage or an effect, whether it runs, and why.
+// One line of the plan: a stage (`stage` set) or an effect, whether it is in, and why.
 struct PlanItem {
   std::string name;
   bool in = true;
   std::string why;
+  const StageSpec* stage = nullptr;
 };
 
-struct EffectPlan {
-  bool full = false;              // plan.mode=full: every optional effect below is computed
-  bool emission = false;          // emission volume, emitted radiance per voxel and per pixel
-  bool specular = false;          // specular cone and direct specular lobe per pixel
-  bool ambientOcclusion = false;  // the ambient_occlusion buffer
-  int shadowLights = 0;           // lights that trace a shadow cone per pixel
-  int bounces = 0;                // runs of the bounce stage
-  MipMode mip = MipMode::anisotropic;
+class EffectPlan {
+ public:
+  bool full = false;            // plan.mode=full: every optional effect is computed
   std::vector<PlanItem> items;  // stages in graph order, each followed by its effects
 
-  // Whether the stage runs at all (bounce only with bounce.count > 0).
-  bool runs(std::string_view stage) const;
+  // A stage of the plan and whether it runs; an effect of it (indented under its stage).
+  void stage(StageId id, bool runs, std::string why);
+  void effect(std::string name, Effect e, bool in, std::string why);
+  // An effect decided without a line of its own (its stage's line says why).
+  void set(Effect e, bool in) { effects_.set(size_t(e), in); }
+  // An item that is neither a stage nor a buffer's effect (cones, shadow lights).
+  void note(std::string name, bool in, std::string why);
+
+  // Whether the stage runs (a stage the planner did not list does not).
+  bool runs(StageId id) const;
+  // Whether the planner decided the stage (listed it, in or out).
+  bool decides(StageId id) const;
+  // Whether the effect is on (`always` is).
+  bool on(Effect e) const { return e == Effect::always || effects_.test(size_t(e)); }
+  // Why the stage is out, as `voxgi plan` prints it; empty when it runs.
+  std::string whySkipped(StageId id) const;
+
+ private:
+  std::bitset<256> effects_;  // by Effect (a uint8_t)
 };
 
-EffectPlan planEffects(const Scene& scene, const Settings& settings);
+// Whether the plan produces the buffer: its stage runs and its effect is on.
+bool bufferNeeded(const BufferSpec& spec, const EffectPlan& plan);
 
 // Whether any triangle of `mesh` can be in the camera's view: false only when its bounding box
 // lies wholly outside one plane of the view frustum (conservative).

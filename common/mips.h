@@ -6,17 +6,7 @@
 #include <bit>
 #include <cstdint>
 
-#include "common/settings.h"
-
 namespace voxgi {
-
-// The pyramid buffer `mip.mode` asks for, and its faces per voxel.
-inline const char* pyramidName(MipMode mode) {
-  return mode == MipMode::isotropic ? "radiance_mips" : "radiance_mips6";
-}
-inline int pyramidFaces(MipMode mode) {
-  return mode == MipMode::isotropic ? 1 : 6;
-}
 
 // Levels above the base of an N^3 volume (N a power of two): N>>levelCount(N) == 1.
 inline int mipLevelCount(int resolution) {

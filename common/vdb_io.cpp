@@ -115,7 +115,7 @@ void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers
         g->setTransform(gridTransform(grid, level));
         if (name == "opacity") g->setGridClass(openvdb::GRID_FOG_VOLUME);
         if (name == "normal") g->setVectorType(openvdb::VEC_COVARIANT);
-        g->insertMeta("voxgi_stage", openvdb::StringMetadata(std::string(b->spec->stage)));
+        g->insertMeta("voxgi_stage", openvdb::StringMetadata(b->spec->stageSpec().qualifiedName()));
         g->insertMeta("voxgi_type", openvdb::StringMetadata(scalarTypeName(b->spec->type)));
         g->insertMeta("voxgi_level", openvdb::Int32Metadata(level));
         g->insertMeta("voxgi_grid_min",
@@ -174,7 +174,7 @@ BufferSet readVdb(const std::string& path, GridSpec& grid,
     fillBuffer<openvdb::Vec3IGrid>(g, b, n, [](Buffer& x, size_t e, const openvdb::Vec3i& v) {
       for (int c = 0; c < 3; ++c) x.set(e, c, v[c]);
     });
-    out.emplace(g->getName(), std::move(b));
+    out.put(std::move(b));
   }
   return out;
 }

@@ -19,9 +19,9 @@ namespace voxgi {
 void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers,
               const GridSpec& grid, const std::map<std::string, std::string>& metadata = {});
 
-// Reads every volume grid of 1 or 3 components written by writeVdb back into dense buffers (keyed
-// by grid name) and the grid. `specs` supplies the BufferSpec for each name (a grid with no spec is
-// skipped). Throws InputError on unreadable files or missing metadata.
+// Reads every volume grid of 1 or 3 components written by writeVdb back into dense buffers and
+// the grid. `specs` supplies the BufferSpec for each grid name (a grid with no spec is skipped).
+// Throws InputError on unreadable files or missing metadata.
 BufferSet readVdb(const std::string& path, GridSpec& grid,
                   const std::vector<const BufferSpec*>& specs);
 

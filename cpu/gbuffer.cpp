@@ -1,95 +1,43 @@
 // CPU gbuffer stage: one Embree ray through every pixel centre; the nearest hit's position,
 // facing normal and material go to the pixel buffers. Rows are independent tasks.
-#include <embree3/rtcore.h>
 #include <tbb/parallel_for.h>
 
 #include "common/camera_geometry.h"
+#include "common/ray_scene.h"
 #include "cpu/stages.h"
 #include "shaders/shared/gbuffer_kernel.h"
 
 namespace voxgi::cpu {
-namespace {
 
-// An Embree scene of the camera geometry's triangles (geometry 0, primitive = triangle index).
-class RayScene {
- public:
-  explicit RayScene(const CameraGeometry& g) {
-    device_ = rtcNewDevice("threads=0");
-    scene_ = rtcNewScene(device_);
-    RTCGeometry geom = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-    const size_t count = g.triangles.size();
-    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0,
-                                                          RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-                                                          std::max<size_t>(1, g.vertices.size())));
-    for (size_t i = 0; i < g.vertices.size(); ++i)
-      for (int c = 0; c < 3; ++c) v[3 * i + size_t(c)] = g.vertices[i][c];
-    auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(
-        geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), count));
-    for (size_t i = 0; i < 3 * count; ++i) idx[i] = static_cast<unsigned>(i);
-    rtcCommitGeometry(geom);
-    rtcAttachGeometry(scene_, geom);
-    rtcReleaseGeometry(geom);
-    rtcCommitScene(scene_);
-  }
-  ~RayScene() {
-    rtcReleaseScene(scene_);
-    rtcReleaseDevice(device_);
-  }
-  RayScene(const RayScene&) = delete;
-  RayScene& operator=(const RayScene&) = delete;
-
-  // The nearest triangle along o + t d (t > 0), or -1; `t` gets its distance parameter.
-  long long intersect(glm::vec3 o, glm::vec3 d, float& t) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRayHit rh{};
-    rh.ray.org_x = o.x;
-    rh.ray.org_y = o.y;
-    rh.ray.org_z = o.z;
-    rh.ray.dir_x = d.x;
-    rh.ray.dir_y = d.y;
-    rh.ray.dir_z = d.z;
-    rh.ray.tnear = 0.0f;
-    rh.ray.tfar = INFINITY;
-    rh.ray.mask = 0xFFFFFFFFu;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(scene_, &context, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return -1;
-    t = rh.ray.tfar;
-    return rh.hit.primID;
-  }
-
- private:
-  RTCDevice device_ = nullptr;
-  RTCScene scene_ = nullptr;
-};
-
-}  // namespace
-
-void gbuffer(const StageContext& ctx, BufferSet& buffers) {
-  checkStageMemory(ctx, "gbuffer");
+void common::gbuffer(const StageContext& ctx, BufferSet& buffers) {
+  checkStageMemory(ctx, StageId::common_gbuffer);
   const CameraGeometry g = prepareCameraGeometry(ctx.scene);
   const CameraRays& cam = g.camera;
-  const RayScene rays(g);
+  // One geometry of the camera geometry's triangles: primitive = triangle index.
+  RayScene rays;
+  std::vector<glm::uvec3> triangles(g.triangles.size());
+  for (size_t t = 0; t < triangles.size(); ++t)
+    triangles[t] = glm::uvec3(3 * t, 3 * t + 1, 3 * t + 2);
+  rays.addMesh(0, g.vertices, triangles);
+  rays.commit();
   const glm::ivec3 extent(cam.width, cam.height, 1);
-  const bool emissive = ctx.plan.emission;
-  Buffer position(bufferSpec("gbuffer", "pixel_position"), extent);
-  Buffer normal(bufferSpec("gbuffer", "pixel_normal"), extent);
-  Buffer albedo(bufferSpec("gbuffer", "pixel_albedo"), extent);
-  Buffer specular(bufferSpec("gbuffer", "pixel_specular"), extent);
-  Buffer emission = emissive ? Buffer(bufferSpec("gbuffer", "pixel_emission"), extent) : Buffer();
-  Buffer objectId(bufferSpec("gbuffer", "object_id"), extent);
-  Buffer primitiveId(bufferSpec("gbuffer", "primitive_id"), extent);
+  const bool emissive = ctx.plan.on(Effect::emission);
+  Buffer position(BufferId::common_gbuffer_pixel_position, extent);
+  Buffer normal(BufferId::common_gbuffer_pixel_normal, extent);
+  Buffer albedo(BufferId::common_gbuffer_pixel_albedo, extent);
+  Buffer specular(BufferId::common_gbuffer_pixel_specular, extent);
+  Buffer emission = emissive ? Buffer(BufferId::common_gbuffer_pixel_emission, extent) : Buffer();
+  Buffer objectId(BufferId::common_gbuffer_object_id, extent);
+  Buffer primitiveId(BufferId::common_gbuffer_primitive_id, extent);
   tbb::parallel_for(0, cam.height, [&](int y) {
     for (int x = 0; x < cam.width; ++x) {
       const glm::vec3 d = cam.pixelDirection(x, y);
-      float t = 0.0f;
-      const long long tri = rays.intersect(cam.origin, d, t);
-      if (tri < 0) continue;
-      const SurfaceTriangle& s = g.triangles[size_t(tri)];
+      const RayScene::Hit hit = rays.intersect(cam.origin, d);
+      if (!hit.found) continue;
+      const SurfaceTriangle& s = g.triangles[hit.primitive];
       const Material& m = ctx.scene.materials[s.info.y];
       const size_t e = size_t(y) * size_t(cam.width) + size_t(x);
-      const glm::vec3 p = cam.origin + d * t;
+      const glm::vec3 p = cam.origin + d * hit.t;
       const glm::vec3 n = shared::facingNormal(glm::vec3(s.normal), d);
       for (int c = 0; c < 3; ++c) {
         position.set(e, c, p[c]);
@@ -100,16 +48,16 @@ void gbuffer(const StageContext& ctx, BufferSet& buffers) {
       }
       specular.set(e, 3, m.shininess);
       objectId.set<uint32_t>(e, 0, s.info.x);
-      primitiveId.set<uint32_t>(e, 0, static_cast<uint32_t>(tri) + 1u);
+      primitiveId.set<uint32_t>(e, 0, hit.primitive + 1u);
     }
   });
-  buffers["pixel_position"] = std::move(position);
-  buffers["pixel_normal"] = std::move(normal);
-  buffers["pixel_albedo"] = std::move(albedo);
-  buffers["pixel_specular"] = std::move(specular);
-  if (emissive) buffers["pixel_emission"] = std::move(emission);
-  buffers["object_id"] = std::move(objectId);
-  buffers["primitive_id"] = std::move(primitiveId);
+  buffers.put(std::move(position));
+  buffers.put(std::move(normal));
+  buffers.put(std::move(albedo));
+  buffers.put(std::move(specular));
+  if (emissive) buffers.put(std::move(emission));
+  buffers.put(std::move(objectId));
+  buffers.put(std::move(primitiveId));
 }
 
 }  // namespace voxgi::cpu

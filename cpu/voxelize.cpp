@@ -68,35 +68,33 @@ void conservativeTriangle(const VoxelTriangle& t, int n, Accumulator& acc) {
 }
 
 void antialiasedTriangle(const VoxelTriangle& t, int n, Accumulator& acc) {
-  const int s = int(t.info.y);
-  for (int i = 0; i < s; ++i)
-    for (int j = 0; j < s - i; ++j)
-      // The last cell of a row has only the upward half (as shaders/voxelize_antialiased.comp).
-      for (int part = 0, parts = j == s - 1 - i ? 1 : 2; part < parts; ++part) {
-        const glm::vec3 p = shared::antialiasedSample(t, i, j, part == 0);
-        const glm::ivec3 base = shared::tentBase(p);
-        for (int corner = 0; corner < 8; ++corner) {
-          const glm::ivec3 voxel = shared::tentCorner(base, corner);
-          if (!inside(voxel, n)) continue;
-          const unsigned w = shared::tentWeight(t, p, base, corner);
-          if (w != 0u) acc(voxel, shared::weightedContribution(t, w));
-        }
+  for (int i = 0; i < int(t.info.y); ++i)
+    for (int k = 0; k < shared::antialiasedRowSamples(t, i); ++k) {
+      const glm::vec3 p = shared::antialiasedRowSample(t, i, k);
+      const glm::ivec3 base = shared::tentBase(p);
+      for (int corner = 0; corner < 8; ++corner) {
+        const glm::ivec3 voxel = shared::tentCorner(base, corner);
+        if (!inside(voxel, n)) continue;
+        const unsigned w = shared::tentWeight(t, p, base, corner);
+        if (w != 0u) acc(voxel, shared::weightedContribution(t, w));
       }
+    }
 }
 
 }  // namespace
 
-void voxelize(const StageContext& ctx, BufferSet& buffers) {
+void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
   const GridSpec& grid = ctx.scene.grid;
   const int n = grid.resolution;
-  checkStageMemory(ctx, "voxelize");
+  checkStageMemory(ctx, StageId::common_voxelize);
   const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
-  const bool emissive = ctx.plan.emission;  // emissionScale may be 0 under plan.mode=full
+  const bool emissive =
+      ctx.plan.on(Effect::emission);  // emissionScale may be 0 under plan.mode=full
   const glm::ivec3 extent(n);
-  Buffer weight(bufferSpec("voxelize", "weight_sum"), extent);
-  Buffer albedoSum(bufferSpec("voxelize", "albedo_sum"), extent);
-  Buffer normalSum(bufferSpec("voxelize", "normal_sum"), extent);
-  Buffer emissionSum = emissive ? Buffer(bufferSpec("voxelize", "emission_sum"), extent) : Buffer();
+  Buffer weight(BufferId::common_voxelize_weight_sum, extent);
+  Buffer albedoSum(BufferId::common_voxelize_albedo_sum, extent);
+  Buffer normalSum(BufferId::common_voxelize_normal_sum, extent);
+  Buffer emissionSum = emissive ? Buffer(BufferId::common_voxelize_emission_sum, extent) : Buffer();
   Accumulator acc{grid, weight, albedoSum, normalSum, emissive ? &emissionSum : nullptr};
 
   const auto& tris = ctx.triangles.triangles;
@@ -109,10 +107,10 @@ void voxelize(const StageContext& ctx, BufferSet& buffers) {
     }
   });
 
-  Buffer opacity(bufferSpec("voxelize", "opacity"), extent);
-  Buffer albedo(bufferSpec("voxelize", "albedo"), extent);
-  Buffer normal(bufferSpec("voxelize", "normal"), extent);
-  Buffer emission = emissive ? Buffer(bufferSpec("voxelize", "emission"), extent) : Buffer();
+  Buffer opacity(BufferId::common_voxelize_opacity, extent);
+  Buffer albedo(BufferId::common_voxelize_albedo, extent);
+  Buffer normal(BufferId::common_voxelize_normal, extent);
+  Buffer emission = emissive ? Buffer(BufferId::common_voxelize_emission, extent) : Buffer();
   std::atomic<bool> tooHeavy{false};
   tbb::parallel_for(
       tbb::blocked_range<size_t>(0, weight.elementCount(), 4096), [&](const auto& range) {
@@ -141,15 +139,15 @@ void voxelize(const StageContext& ctx, BufferSet& buffers) {
                      "more than 32768 voxel faces of surface fall into one voxel (fixed-point "
                      "overflow); lower grid.resolution or remove overlapping copies");
 
-  buffers["weight_sum"] = std::move(weight);
-  buffers["albedo_sum"] = std::move(albedoSum);
-  buffers["normal_sum"] = std::move(normalSum);
-  buffers["opacity"] = std::move(opacity);
-  buffers["albedo"] = std::move(albedo);
-  buffers["normal"] = std::move(normal);
+  buffers.put(std::move(weight));
+  buffers.put(std::move(albedoSum));
+  buffers.put(std::move(normalSum));
+  buffers.put(std::move(opacity));
+  buffers.put(std::move(albedo));
+  buffers.put(std::move(normal));
   if (emissive) {
-    buffers["emission_sum"] = std::move(emissionSum);
-    buffers["emission"] = std::move(emission);
+    buffers.put(std::move(emissionSum));
+    buffers.put(std::move(emission));
   }
 }
 

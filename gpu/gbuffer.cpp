@@ -13,20 +13,23 @@ namespace voxgi::gpu {
 namespace {
 
 struct Target {
-  const char* buffer;
+  BufferId buffer;
   GLenum format;
 };
 // Colour attachment i holds Targets[i]; float targets are RGBA32F (extra channels dropped).
-constexpr Target kTargets[] = {{"pixel_position", GL_RGBA32F}, {"pixel_normal", GL_RGBA32F},
-                               {"pixel_albedo", GL_RGBA32F},   {"pixel_specular", GL_RGBA32F},
-                               {"pixel_emission", GL_RGBA32F}, {"object_id", GL_R32UI},
-                               {"primitive_id", GL_R32UI}};
+constexpr Target kTargets[] = {{BufferId::common_gbuffer_pixel_position, GL_RGBA32F},
+                               {BufferId::common_gbuffer_pixel_normal, GL_RGBA32F},
+                               {BufferId::common_gbuffer_pixel_albedo, GL_RGBA32F},
+                               {BufferId::common_gbuffer_pixel_specular, GL_RGBA32F},
+                               {BufferId::common_gbuffer_pixel_emission, GL_RGBA32F},
+                               {BufferId::common_gbuffer_object_id, GL_R32UI},
+                               {BufferId::common_gbuffer_primitive_id, GL_R32UI}};
 constexpr int kTargetCount = 7;
 
 }  // namespace
 
-void gbuffer(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
-  const Gl& gl = beginStage(context, ctx, "gbuffer");
+void common::gbuffer(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+  const Gl& gl = beginStage(context, ctx, StageId::common_gbuffer);
   const CameraGeometry g = prepareCameraGeometry(ctx.scene);
   const CameraRays& cam = g.camera;
   const int w = cam.width, h = cam.height;
@@ -63,7 +66,7 @@ void gbuffer(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   }
   gl.ClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &one);
 
-  Program program(gl, {"gbuffer.vert", "gbuffer.frag"});
+  Program program(gl, {&shaders::gbuffer_vert, &shaders::gbuffer_frag});
   program.set("uViewProjection", cam.viewProjection(1e-2f, g.farPlane));
   program.set("uForward", cam.forward);
   program.set("uRight", cam.right);
@@ -94,7 +97,7 @@ void gbuffer(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   const glm::ivec3 extent(w, h, 1);
   std::vector<float> rgba(size_t(w) * size_t(h) * 4);
   for (int i = 0; i < kTargetCount; ++i) {
-    const BufferSpec& spec = bufferSpec("gbuffer", kTargets[i].buffer);
+    const BufferSpec& spec = bufferSpec(kTargets[i].buffer);
     if (!bufferNeeded(spec, ctx.plan)) continue;
     Buffer out(spec, extent);
     gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
@@ -107,7 +110,7 @@ void gbuffer(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
       for (size_t e = 0; e < out.elementCount(); ++e)
         for (int c = 0; c < spec.components; ++c) out.set(e, c, rgba[4 * e + size_t(c)]);
     }
-    buffers[std::string(spec.name)] = std::move(out);
+    buffers.put(std::move(out));
   }
   gl.DeleteFramebuffers(1, &fbo);
   gl.DeleteTextures(kTargetCount + 1, textures.data());

@@ -17,11 +17,11 @@ GLenum stageType(std::string_view file) {
 
 }  // namespace
 
-GLuint compileShader(const Gl& gl, std::string_view fileName, std::string_view text) {
-  const GLuint shader = gl.CreateShader(stageType(fileName));
-  const char* source = text.data();
+GLuint compileShader(const Gl& gl, const ShaderSource& source, std::string_view text) {
+  const GLuint shader = gl.CreateShader(stageType(source.name));
+  const char* chars = text.data();
   const auto length = static_cast<GLint>(text.size());
-  gl.ShaderSource(shader, 1, &source, &length);
+  gl.ShaderSource(shader, 1, &chars, &length);
   gl.CompileShader(shader);
   GLint ok = 0;
   gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -31,20 +31,16 @@ GLuint compileShader(const Gl& gl, std::string_view fileName, std::string_view t
   std::vector<char> log(static_cast<size_t>(logLength) + 1, '\0');
   gl.GetShaderInfoLog(shader, logLength, nullptr, log.data());
   gl.DeleteShader(shader);
-  std::string message(log.data());
-  try {
-    message = mapShaderLog(shaderSource(fileName), message);
-  } catch (const std::out_of_range&) {  // not an embedded shader: locations stay numeric
-  }
-  throw ShaderError("cannot compile " + std::string(fileName) + ":\n" + message);
+  throw ShaderError("cannot compile shaders/" + std::string(source.name) + ":\n" +
+                    mapShaderLog(source, log.data()));
 }
 
-Program::Program(const Gl& gl, std::initializer_list<std::string_view> stages) : gl_(gl) {
+Program::Program(const Gl& gl, std::initializer_list<const ShaderSource*> stages) : gl_(gl) {
   id_ = gl.CreateProgram();
   std::vector<GLuint> shaders;
   try {
-    for (std::string_view name : stages) {
-      shaders.push_back(compileShader(gl, name, shaderSource(name).text));
+    for (const ShaderSource* stage : stages) {
+      shaders.push_back(compileShader(gl, *stage, stage->text));
       gl.AttachShader(id_, shaders.back());
     }
   } catch (...) {
@@ -61,7 +57,7 @@ Program::Program(const Gl& gl, std::initializer_list<std::string_view> stages) :
     gl.GetProgramInfoLog(id_, static_cast<GLsizei>(log.size()), nullptr, log.data());
     gl.DeleteProgram(id_);
     std::string names;
-    for (std::string_view n : stages) names += std::string(n) + " ";
+    for (const ShaderSource* stage : stages) names += "shaders/" + std::string(stage->name) + " ";
     throw ShaderError("cannot link " + names + ":\n" + log.data());
   }
 }

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "gpu/gl.h"
+#include "shaders/embedded.h"
 
 namespace voxgi::gpu {
 
@@ -19,9 +20,9 @@ class ShaderError : public std::runtime_error {
 
 class Program {
  public:
-  // `stages`: embedded file names; the stage type comes from the extension (.vert .geom .frag
-  // .comp).
-  Program(const Gl& gl, std::initializer_list<std::string_view> stages);
+  // `stages`: embedded shaders (shaders/embedded.h); the stage type comes from the file's
+  // extension (.vert .geom .frag .comp).
+  Program(const Gl& gl, std::initializer_list<const ShaderSource*> stages);
   Program(const Program&) = delete;
   Program& operator=(const Program&) = delete;
   ~Program();
@@ -41,8 +42,8 @@ class Program {
   GLuint id_ = 0;
 };
 
-// Compiles GLSL text (as embedded, or any other for tests) and returns the shader, or throws
-// ShaderError with the mapped log.
-GLuint compileShader(const Gl& gl, std::string_view fileName, std::string_view text);
+// Compiles `text` as the stage of `source` (its own text, or an edited copy in tests) and returns
+// the shader, or throws ShaderError with the log's locations mapped through source's file table.
+GLuint compileShader(const Gl& gl, const ShaderSource& source, std::string_view text);
 
 }  // namespace voxgi::gpu

@@ -1,33 +1,52 @@
 #include "gpu/volumes.h"
 
+#include <stdexcept>
+#include <string>
+
 #include "common/mips.h"
 
 namespace voxgi::gpu {
 namespace {
 
+void checkComponents(int components) {
+  if (components < 1 || components > 4)
+    throw std::logic_error("a texture holds 1 to 4 components, not " + std::to_string(components) +
+                           ": use uploadWords (gpu/volumes.h)");
+}
+
 GLenum pixelFormat(int components) {
+  checkComponents(components);
   constexpr GLenum formats[] = {GL_RED, GL_RG, GL_RGB, GL_RGBA};
   return formats[components - 1];
 }
 
 }  // namespace
 
-const Gl& beginStage(GlContext& context, const StageContext& ctx, std::string_view stage) {
+const Gl& beginStage(GlContext& context, const StageContext& ctx, StageId stage) {
   context.makeCurrent();
   checkStageMemory(ctx, stage, 2.0);
   return context.gl();
 }
 
 GLenum floatFormat(int components) {
+  checkComponents(components);
   constexpr GLenum formats[] = {GL_R32F, GL_RG32F, GL_RGB32F, GL_RGBA32F};
   return formats[components - 1];
 }
 
-GLuint createVolume(const Gl& gl, int components, glm::ivec3 size, int levels) {
+GLuint createTexture3d(const Gl& gl, GLenum internalFormat, glm::ivec3 size, int levels) {
   GLuint texture = 0;
   gl.CreateTextures(GL_TEXTURE_3D, 1, &texture);
-  gl.TextureStorage3D(texture, levels, floatFormat(components), size.x, size.y, size.z);
+  gl.TextureStorage3D(texture, levels, internalFormat, size.x, size.y, size.z);
   return texture;
+}
+
+GLuint createVolume(const Gl& gl, int components, glm::ivec3 size, int levels) {
+  return createTexture3d(gl, floatFormat(components), size, levels);
+}
+
+GLuint uploadWords(const Gl& gl, const Buffer& b) {
+  return createBuffer(gl, b.words.size() * 4, b.words.data());
 }
 
 GLuint uploadVolume(const Gl& gl, const Buffer& b) {
@@ -38,13 +57,22 @@ GLuint uploadVolume(const Gl& gl, const Buffer& b) {
   return texture;
 }
 
+void readTexture(const Gl& gl, GLuint texture, int level, GLenum format, GLenum type,
+                 glm::ivec3 size, Buffer& out, size_t offset) {
+  gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
+  const size_t first = offset * size_t(out.components());
+  const size_t channels = format == GL_RG ? 2 : format == GL_RGB ? 3 : format == GL_RGBA ? 4 : 1;
+  const size_t words = size_t(size.x) * size_t(size.y) * size_t(size.z) * channels;
+  if (first + words > out.words.size())
+    throw std::logic_error("readTexture: the texture does not fit the buffer " +
+                           out.spec->qualifiedName());
+  gl.GetTextureImage(texture, level, format, type, static_cast<GLsizei>(words * 4),
+                     out.words.data() + first);
+}
+
 void readVolume(const Gl& gl, GLuint texture, int level, glm::ivec3 size, Buffer& out,
                 size_t offset) {
-  gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
-  const size_t words = size_t(size.x) * size_t(size.y) * size_t(size.z) * size_t(out.components());
-  gl.GetTextureImage(texture, level, pixelFormat(out.components()), GL_FLOAT,
-                     static_cast<GLsizei>(words * 4),
-                     out.words.data() + offset * size_t(out.components()));
+  readTexture(gl, texture, level, pixelFormat(out.components()), GL_FLOAT, size, out, offset);
 }
 
 GLuint createPyramid(const Gl& gl, int resolution, int faces) {

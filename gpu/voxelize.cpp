@@ -7,27 +7,12 @@
 #include "common/error.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
+#include "gpu/volumes.h"
 #include "shaders/shared/voxelize_layout.h"
 
 namespace voxgi::gpu {
-namespace {
 
-GLuint makeVolume(const Gl& gl, GLenum format, int width, int n) {
-  GLuint texture = 0;
-  gl.CreateTextures(GL_TEXTURE_3D, 1, &texture);
-  gl.TextureStorage3D(texture, 1, format, width, n, n);
-  return texture;
-}
-
-void readVolume(const Gl& gl, GLuint texture, GLenum format, GLenum type, Buffer& out) {
-  gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
-  gl.GetTextureImage(texture, 0, format, type, static_cast<GLsizei>(out.words.size() * 4),
-                     out.words.data());
-}
-
-}  // namespace
-
-void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   context.makeCurrent();
   const Gl& gl = context.gl();
   const int n = ctx.scene.grid.resolution;
@@ -36,9 +21,10 @@ void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
                      std::to_string(n) + " needs 3D images of width " + std::to_string(3 * n) +
                          ", above this GL's GL_MAX_3D_TEXTURE_SIZE " +
                          std::to_string(context.max3dTextureSize()));
-  checkStageMemory(ctx, "voxelize", 2.0);  // GPU copies plus the read-back buffers
+  checkStageMemory(ctx, StageId::common_voxelize, 2.0);  // GPU copies plus the read-back buffers
   const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
-  const bool emissive = ctx.plan.emission;  // emissionScale may be 0 under plan.mode=full
+  const bool emissive =
+      ctx.plan.on(Effect::emission);  // emissionScale may be 0 under plan.mode=full
   const auto& tris = ctx.triangles.triangles;
 
   GlBuffer triangles(gl,
@@ -48,10 +34,10 @@ void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, triangles.get());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, status.get());
 
-  GlTexture weight(gl, makeVolume(gl, GL_R32UI, n, n));
-  GlTexture albedoSum(gl, makeVolume(gl, GL_R32UI, 3 * n, n));
-  GlTexture normalSum(gl, makeVolume(gl, GL_R32I, 3 * n, n));
-  GlTexture emissionSum(gl, emissive ? makeVolume(gl, GL_R32UI, 3 * n, n) : 0);
+  GlTexture weight(gl, createTexture3d(gl, GL_R32UI, glm::ivec3(n)));
+  GlTexture albedoSum(gl, createTexture3d(gl, GL_R32UI, {3 * n, n, n}));
+  GlTexture normalSum(gl, createTexture3d(gl, GL_R32I, {3 * n, n, n}));
+  GlTexture emissionSum(gl, emissive ? createTexture3d(gl, GL_R32UI, {3 * n, n, n}) : 0);
   for (GLuint t : {weight.get(), albedoSum.get(), emissionSum.get()})
     if (t != 0) gl.ClearTexImage(t, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   gl.ClearTexImage(normalSum.get(), 0, GL_RED_INTEGER, GL_INT, &zero);
@@ -73,7 +59,7 @@ void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
       }
       GlBuffer rows(gl, createBuffer(gl, firstRow.size() * sizeof(uint32_t), firstRow.data()));
       gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, rows.get());
-      Program splat(gl, {"voxelize_antialiased.comp"});
+      Program splat(gl, {&shaders::voxelize_antialiased_comp});
       splat.set("uResolution", n);
       splat.set("uHasEmission", emissive ? 1 : 0);
       splat.set("uTriangleCount", static_cast<unsigned>(tris.size()));
@@ -83,7 +69,8 @@ void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
       const uint32_t width = std::min<uint32_t>(groups, 65535u);
       gl.DispatchCompute(width, (groups + width - 1) / width, 1);
     } else {
-      Program raster(gl, {"voxelize.vert", "voxelize.geom", "voxelize.frag"});
+      Program raster(gl,
+                     {&shaders::voxelize_vert, &shaders::voxelize_geom, &shaders::voxelize_frag});
       raster.set("uResolution", n);
       raster.set("uHasEmission", emissive ? 1 : 0);
       raster.use();
@@ -109,12 +96,12 @@ void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
     gl.check("voxelize: accumulating");
   }
 
-  GlTexture opacity(gl, makeVolume(gl, GL_R32F, n, n));
-  GlTexture albedo(gl, makeVolume(gl, GL_R32F, 3 * n, n));
-  GlTexture normal(gl, makeVolume(gl, GL_R32F, 3 * n, n));
-  GlTexture emission(gl, emissive ? makeVolume(gl, GL_R32F, 3 * n, n) : 0);
+  GlTexture opacity(gl, createTexture3d(gl, GL_R32F, glm::ivec3(n)));
+  GlTexture albedo(gl, createTexture3d(gl, GL_R32F, {3 * n, n, n}));
+  GlTexture normal(gl, createTexture3d(gl, GL_R32F, {3 * n, n, n}));
+  GlTexture emission(gl, emissive ? createTexture3d(gl, GL_R32F, {3 * n, n, n}) : 0);
   {
-    Program resolve(gl, {"voxelize_resolve.comp"});
+    Program resolve(gl, {&shaders::voxelize_resolve_comp});
     resolve.set("uResolution", n);
     resolve.set("uHasEmission", emissive ? 1 : 0);
     resolve.set("uAntialiased", antialiased ? 1 : 0);
@@ -142,20 +129,21 @@ void voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
                      "overflow); lower grid.resolution or remove overlapping copies");
 
   const glm::ivec3 extent(n);
-  auto read = [&](const char* name, GLuint texture, GLenum format, GLenum type) {
-    Buffer b(bufferSpec("voxelize", name), extent);
-    readVolume(gl, texture, format, type, b);
-    buffers[name] = std::move(b);
+  auto read = [&](BufferId id, GLuint texture, GLenum format, GLenum type) {
+    Buffer b(id, extent);
+    readTexture(gl, texture, 0, format, type, {b.components() * n, n, n}, b);
+    buffers.put(std::move(b));
   };
-  read("weight_sum", weight.get(), GL_RED_INTEGER, GL_UNSIGNED_INT);
-  read("albedo_sum", albedoSum.get(), GL_RED_INTEGER, GL_UNSIGNED_INT);
-  read("normal_sum", normalSum.get(), GL_RED_INTEGER, GL_INT);
-  read("opacity", opacity.get(), GL_RED, GL_FLOAT);
-  read("albedo", albedo.get(), GL_RED, GL_FLOAT);
-  read("normal", normal.get(), GL_RED, GL_FLOAT);
+  using enum BufferId;
+  read(common_voxelize_weight_sum, weight.get(), GL_RED_INTEGER, GL_UNSIGNED_INT);
+  read(common_voxelize_albedo_sum, albedoSum.get(), GL_RED_INTEGER, GL_UNSIGNED_INT);
+  read(common_voxelize_normal_sum, normalSum.get(), GL_RED_INTEGER, GL_INT);
+  read(common_voxelize_opacity, opacity.get(), GL_RED, GL_FLOAT);
+  read(common_voxelize_albedo, albedo.get(), GL_RED, GL_FLOAT);
+  read(common_voxelize_normal, normal.get(), GL_RED, GL_FLOAT);
   if (emissive) {
-    read("emission_sum", emissionSum.get(), GL_RED_INTEGER, GL_UNSIGNED_INT);
-    read("emission", emission.get(), GL_RED, GL_FLOAT);
+    read(common_voxelize_emission_sum, emissionSum.get(), GL_RED_INTEGER, GL_UNSIGNED_INT);
+    read(common_voxelize_emission, emission.get(), GL_RED, GL_FLOAT);
   }
   gl.check("voxelize: reading back");
 }

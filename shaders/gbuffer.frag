@@ -4,10 +4,6 @@
 #include "shared/camera.h"
 #include "shared/gbuffer_kernel.h"
 
-struct SurfaceTriangle {
-  vec4 normal;  // xyz: unit normal
-  uvec4 info;   // x: object id, y: material index
-};
 layout(std430, binding = 1) readonly buffer Triangles { SurfaceTriangle triangles[]; };
 layout(std430, binding = 2) readonly buffer Materials { MaterialData materials[]; };
 uniform vec3 uForward;

@@ -1,6 +1,7 @@
 #version 450 core
 // Antialiased voxelization: the n*n area samples of every triangle are splatted with the trilinear
-// tent kernel, in the same order and fixed point as cpu/voxelize.cpp. One invocation handles one
+// tent kernel, in the order of shaders/shared/voxelize_kernel.h (antialiasedRowSample) and the
+// fixed point of cpu/voxelize.cpp. One invocation handles one
 // row i of one triangle's subdivision (at most 2n - 1 samples): llvmpipe ends an invocation after
 // 65535 loop iterations, which a whole large triangle (n^2 samples * 8 corners) would exceed.
 layout(local_size_x = 64) in;
@@ -23,19 +24,15 @@ void main() {
     else hi = mid;
   }
   VoxelTriangle t = triangles[lo];
-  int s = int(t.info.y);
   int i = int(row - firstRow[lo]);
-  for (int j = 0; j < s - i; ++j) {
-    int parts = j == s - 1 - i ? 1 : 2;  // the last cell of a row has only the upward half
-    for (int part = 0; part < parts; ++part) {
-      vec3 p = antialiasedSample(t, i, j, part == 0);
-      ivec3 base = tentBase(p);
-      for (int corner = 0; corner < 8; ++corner) {
-        ivec3 voxel = tentCorner(base, corner);
-        bool inside = all(greaterThanEqual(voxel, ivec3(0))) && all(lessThan(voxel, ivec3(uResolution)));
-        uint w = inside ? tentWeight(t, p, base, corner) : 0u;
-        if (w != 0u) accumulate(voxel, weightedContribution(t, w));
-      }
+  for (int k = 0; k < antialiasedRowSamples(t, i); ++k) {
+    vec3 p = antialiasedRowSample(t, i, k);
+    ivec3 base = tentBase(p);
+    for (int corner = 0; corner < 8; ++corner) {
+      ivec3 voxel = tentCorner(base, corner);
+      bool inside = all(greaterThanEqual(voxel, ivec3(0))) && all(lessThan(voxel, ivec3(uResolution)));
+      uint w = inside ? tentWeight(t, p, base, corner) : 0u;
+      if (w != 0u) accumulate(voxel, weightedContribution(t, w));
     }
   }
 }

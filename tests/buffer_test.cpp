@@ -3,6 +3,7 @@
 #include "common/buffer.h"
 #include "common/mips.h"
 #include "common/stage.h"
+#include "common/technique.h"
 #include "validation/comparisons.h"
 
 namespace voxgi {
@@ -10,18 +11,20 @@ namespace {
 
 TEST(Stages, EveryBufferHasAComparisonWithAReason) {
   for (const BufferSpec& b : bufferSpecs()) {
-    const auto& c = validation::comparisonFor(b.stage, b.name);
+    const auto& c = validation::comparisonFor(b.id);
+    EXPECT_TRUE(c.buffer == b.id) << b.name;
     EXPECT_FALSE(c.reason.empty()) << b.name;
     if (b.type != ScalarType::f32) {
       EXPECT_EQ(c.metric, validation::Metric::exact) << b.name;
     }
   }
-  EXPECT_NE(findStage("voxelize"), nullptr);
-  EXPECT_EQ(findStage("nonexistent"), nullptr);
+  EXPECT_NE(findStage("common", "voxelize"), nullptr);
+  EXPECT_EQ(findStage("vct", "voxelize"), nullptr);
+  EXPECT_EQ(findStage("common", "nonexistent"), nullptr);
 }
 
 TEST(Buffer, TypedWordsRoundTrip) {
-  Buffer b(bufferSpec("voxelize", "normal_sum"), glm::ivec3(2));
+  Buffer b(BufferId::common_voxelize_normal_sum, glm::ivec3(2));
   EXPECT_EQ(b.words.size(), 8u * 3u);
   b.set<int32_t>(5, 2, -7);
   EXPECT_EQ(b.get<int32_t>(5, 2), -7);
@@ -37,17 +40,18 @@ TEST(Buffer, ShapesAndStageBytes) {
   Scene scene;
   scene.grid.resolution = 4;
   Settings settings;
-  EXPECT_EQ(stageBufferBytes("voxelize", scene, planEffects(scene, settings)),
+  const Technique& vct = findTechnique("vct");
+  EXPECT_EQ(stageBufferBytes(StageId::common_voxelize, scene, vct.plan(scene, settings)),
             64u * 4u * (1 + 3 + 3 + 1 + 3 + 3));
   // bounce produces nothing unless asked, then the radiance and the pyramid mip.mode picks.
-  EXPECT_EQ(stageBufferBytes("bounce", scene, planEffects(scene, settings)), 0u);
-  settings.bounceCount = 2;
-  EXPECT_EQ(stageBufferBytes("bounce", scene, planEffects(scene, settings)),
+  EXPECT_EQ(stageBufferBytes(StageId::vct_bounce, scene, vct.plan(scene, settings)), 0u);
+  settings.vct.bounceCount = 2;
+  EXPECT_EQ(stageBufferBytes(StageId::vct_bounce, scene, vct.plan(scene, settings)),
             4u * 4u * (64u + 6u * (8u + 1u)));
   scene.materials.push_back({});
   scene.materials[0].emission = glm::vec3(1.0f);
   scene.meshes.push_back({"m", {glm::dvec3(0.0)}, {glm::uvec3(0u)}, 0});
-  EXPECT_EQ(stageBufferBytes("voxelize", scene, planEffects(scene, settings)),
+  EXPECT_EQ(stageBufferBytes(StageId::common_voxelize, scene, vct.plan(scene, settings)),
             64u * 4u * (1 + 3 + 3 + 3 + 1 + 3 + 3 + 3));
 }
 

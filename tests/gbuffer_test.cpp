@@ -43,30 +43,33 @@ glm::vec4 pixel(const Buffer& b, int x, int y) {
 TEST(Gbuffer, PixelsSeeTheNearestSurfaceWithAFacingNormal) {
   const Scene scene = wallScene();
   const BufferSet b = runCpuUntil(scene, Settings{}, "gbuffer");
-  const Buffer& id = b.at("object_id");
+  const Buffer& id = b.at(BufferId::common_gbuffer_object_id);
   // The centre pixel (32, 32) sees the front face; its ray passes just right of and below the
   // image centre by half a pixel.
   EXPECT_EQ(id.words[32 * 64 + 32], 2u);
-  const glm::vec4 p = pixel(b.at("pixel_position"), 32, 32);
+  const glm::vec4 p = pixel(b.at(BufferId::common_gbuffer_pixel_position), 32, 32);
   EXPECT_NEAR(p.z, 0.5 * 32, 1e-4);  // voxel units: z = 0.5 of a 32-voxel unit grid
   const double halfPixel = std::tan(3.14159265358979 / 6.0) / 64.0 * 1.5 * 32.0;  // at depth 1.5
   EXPECT_NEAR(p.x, 16.0 + halfPixel, 1e-3);
   EXPECT_NEAR(p.y, 16.0 - halfPixel, 1e-3);
-  EXPECT_EQ(pixel(b.at("pixel_normal"), 32, 32), glm::vec4(0, 0, 1, 0));  // toward the camera
-  EXPECT_EQ(pixel(b.at("pixel_specular"), 32, 32), glm::vec4(0.5f, 0.5f, 0.5f, 20.0f));
+  EXPECT_EQ(pixel(b.at(BufferId::common_gbuffer_pixel_normal), 32, 32),
+            glm::vec4(0, 0, 1, 0));  // toward the camera
+  EXPECT_EQ(pixel(b.at(BufferId::common_gbuffer_pixel_specular), 32, 32),
+            glm::vec4(0.5f, 0.5f, 0.5f, 20.0f));
   // A corner pixel sees the wall: white, facing the camera whatever the quad's winding.
   EXPECT_EQ(id.words[2 * 64 + 2], 1u);
-  EXPECT_EQ(pixel(b.at("pixel_normal"), 2, 2), glm::vec4(0, 0, 1, 0));
-  EXPECT_EQ(pixel(b.at("pixel_albedo"), 2, 2), glm::vec4(0.7f, 0.7f, 0.7f, 0.0f));
-  EXPECT_EQ(b.count("pixel_emission"), 0u);  // nothing emits
+  EXPECT_EQ(pixel(b.at(BufferId::common_gbuffer_pixel_normal), 2, 2), glm::vec4(0, 0, 1, 0));
+  EXPECT_EQ(pixel(b.at(BufferId::common_gbuffer_pixel_albedo), 2, 2),
+            glm::vec4(0.7f, 0.7f, 0.7f, 0.0f));
+  EXPECT_FALSE(b.contains(BufferId::common_gbuffer_pixel_emission));  // nothing emits
 }
 
 TEST(Gbuffer, BackgroundPixelsAreZero) {
   Scene scene = wallScene();
   scene.camera.lookAt = {0.5, 0.5, 3.0};  // looking away from everything
   const BufferSet b = runCpuUntil(scene, Settings{}, "gbuffer");
-  for (uint32_t w : b.at("object_id").words) ASSERT_EQ(w, 0u);
-  for (uint32_t w : b.at("pixel_position").words) ASSERT_EQ(w, 0u);
+  for (uint32_t w : b.at(BufferId::common_gbuffer_object_id).words) ASSERT_EQ(w, 0u);
+  for (uint32_t w : b.at(BufferId::common_gbuffer_pixel_position).words) ASSERT_EQ(w, 0u);
 }
 
 }  // namespace

@@ -27,11 +27,11 @@ TEST_P(GpuStages, AgreeWithCpu) {
   Scene scene = loadScene(sourcePath(c.scene));
   scene.grid.resolution = 32;
   scene.camera.width = scene.camera.height = 64;
-  const Settings settings = resolveSettings(scene.settings, scene.file, c.preset, c.sets);
+  const Settings settings = resolveSettings(vct(), scene.settings, scene.file, c.preset, c.sets);
   std::vector<std::string> stages;
-  for (const StageSpec& s : stageSpecs())
-    if (s.name != "voxelize") stages.emplace_back(s.name);
-  const auto reports = validation::diffStages(scene, settings, glContext(c.platform), stages, "");
+  for (const StageSpec* s : vct().steps())
+    if (s->id != StageId::common_voxelize) stages.push_back(s->qualifiedName());
+  const auto reports = diffVct(scene, settings, glContext(c.platform), stages);
   std::ostringstream table;
   validation::printReport(table, reports);
   for (const auto& r : reports) EXPECT_TRUE(r.pass) << r.stage << "\n" << table.str();

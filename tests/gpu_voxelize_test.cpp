@@ -34,8 +34,7 @@ const char* name(gpu::GlPlatform p) {
 void expectBackendsAgree(const Scene& scene, VoxelizeMode mode, gpu::GlPlatform platform) {
   Settings settings;
   settings.voxelizeMode = mode;
-  const auto reports =
-      validation::diffStages(scene, settings, glContext(platform), {"voxelize"}, "");
+  const auto reports = diffVct(scene, settings, glContext(platform), {"voxelize"});
   ASSERT_EQ(reports.size(), 1u);
   std::ostringstream table;
   validation::printReport(table, reports);
@@ -132,7 +131,8 @@ TEST(GpuVoxelizeHardCases, ResolutionBeyondTheGlLimitIsAnInputError) {
   Settings settings;
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
   BufferSet out;
-  EXPECT_THROW(gpu::voxelize(context, StageContext{scene, settings, tris}, out), InputError);
+  EXPECT_THROW(gpu::common::voxelize(context, StageContext{vct(), scene, settings, tris}, out),
+               InputError);
 }
 
 }  // namespace

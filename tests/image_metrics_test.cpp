@@ -1,18 +1,18 @@
-// The image metrics of `voxgi compare` (validation/image_metrics.h) on small synthetic images
-// with answers worked out by hand, and the Pareto front of `voxgi study`.
+// The image metrics of `voxgi compare` (validation/reference/image_metrics.h) on small synthetic
+// images with answers worked out by hand, and the Pareto front of `voxgi study`.
 #include <cmath>
 #include <random>
 
 #include <gtest/gtest.h>
 
-#include "validation/image_metrics.h"
-#include "validation/pareto.h"
+#include "validation/reference/image_metrics.h"
+#include "validation/reference/pareto.h"
 
 namespace voxgi::test {
 namespace {
 
-using validation::compareImages;
-using validation::kRelativeEpsilon;
+using reference::compareImages;
+using reference::kRelativeEpsilon;
 
 Image constant(int w, int h, glm::vec3 value) {
   Image image(w, h);
@@ -98,7 +98,7 @@ TEST(ImageMetrics, MaskKeepsOnlyItsPixels) {
   const auto m = compareImages(test, reference, mask);
   EXPECT_EQ(m.pixels, 56u);
   EXPECT_NEAR(m.rmse, std::sqrt(0.01 / 56.0), 1e-6);
-  const auto colours = validation::errorColours(test, reference, mask);
+  const auto colours = reference::errorColours(test, reference, mask);
   EXPECT_EQ(colours[0], 128);                // masked: grey
   EXPECT_EQ(colours[3 * (8 + 0)], 0);        // exact: black
   EXPECT_GT(colours[3 * (4 * 8 + 3)], 100);  // relative error 0.1 / 0.51: yellow
@@ -108,7 +108,7 @@ TEST(Pareto, KeepsThePointsNothingBeatsInTimeAndError) {
   // (1, 5) fast; (2, 3); (2, 4) beaten by (2, 3); (3, 3) beaten by (2, 3); (4, 1) accurate;
   // (4, 1) again: equal points both stay.
   const std::vector<double> seconds{1, 2, 2, 3, 4, 4}, error{5, 3, 4, 3, 1, 1};
-  EXPECT_EQ(validation::paretoFront(seconds, error),
+  EXPECT_EQ(reference::paretoFront(seconds, error),
             (std::vector<bool>{true, true, false, false, true, true}));
 }
 

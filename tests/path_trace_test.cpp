@@ -6,13 +6,13 @@
 
 #include "common/scene_load.h"
 #include "tests/test_scenes.h"
-#include "validation/path_trace.h"
+#include "validation/reference/path_trace.h"
 
 namespace voxgi::test {
 namespace {
 
-using validation::pathTrace;
-using validation::PathTraceOptions;
+using reference::pathTrace;
+using reference::PathTraceOptions;
 
 Scene withCamera(Scene scene, glm::dvec3 position, glm::dvec3 lookAt, glm::dvec3 up, double fov,
                  int size) {

@@ -30,10 +30,11 @@ std::string errorOf(const std::string& json) {
 TEST(SceneLoad, CornellBox) {
   const Scene s = loadScene(sourcePath("scenes/cornell_box.json"));
   EXPECT_EQ(s.triangleCount(), 32u);
-  EXPECT_TRUE(planEffects(s, Settings{}).emission);
+  EXPECT_TRUE(vct().plan(s, Settings{}).on(Effect::emission));
   EXPECT_EQ(s.settings, std::vector<std::string>{"bounce.count=1"});
-  EXPECT_EQ(resolveSettings(s.settings, s.file, "default", {}).bounceCount, 1);
-  EXPECT_EQ(resolveSettings(s.settings, s.file, "default", {"bounce.count=0"}).bounceCount, 0);
+  EXPECT_EQ(resolveSettings(vct(), s.settings, s.file, "default", {}).vct.bounceCount, 1);
+  EXPECT_EQ(
+      resolveSettings(vct(), s.settings, s.file, "default", {"bounce.count=0"}).vct.bounceCount, 0);
   EXPECT_EQ(s.grid.resolution, 64);
   bool red = false;
   for (const Material& m : s.materials)

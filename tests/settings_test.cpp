@@ -3,6 +3,7 @@
 
 #include "common/error.h"
 #include "common/settings.h"
+#include "common/technique.h"
 
 namespace voxgi {
 namespace {
@@ -22,9 +23,9 @@ TEST(Settings, AssignmentsParseAndRangesHold) {
   applySetting(s, "voxel_shadow.kappa=0.5", "--set");
   applySetting(s, "mip.mode=isotropic", "--set");
   applySetting(s, "voxel_shadow.mode=soft", "--set");
-  EXPECT_EQ(s.voxelShadowKappa, 0.5f);
-  EXPECT_EQ(s.mip, MipMode::isotropic);
-  EXPECT_EQ(s.voxelShadow, VoxelShadow::soft);
+  EXPECT_EQ(s.vct.voxelShadowKappa, 0.5f);
+  EXPECT_EQ(s.vct.mip, MipMode::isotropic);
+  EXPECT_EQ(s.vct.voxelShadow, VoxelShadow::soft);
   expectRejected("voxel_shadow.offset=0", "voxel_shadow.offset");   // below the range
   expectRejected("voxel_shadow.kappa=0.5x", "voxel_shadow.kappa");  // trailing junk
   expectRejected("voxel_shadow.kappa=nan", "voxel_shadow.kappa");   // not finite
@@ -35,15 +36,16 @@ TEST(Settings, AssignmentsParseAndRangesHold) {
 
 TEST(Settings, PresetsSetTheirKeysAndListEveryKey) {
   Settings s;
-  applyPreset(s, "kahl2019");
-  EXPECT_EQ(s.voxelShadow, VoxelShadow::none);
-  EXPECT_EQ(s.mip, MipMode::isotropic);
+  const Technique& vct = findTechnique("vct");
+  applyPreset(s, vct, "kahl2019");
+  EXPECT_EQ(s.vct.voxelShadow, VoxelShadow::none);
+  EXPECT_EQ(s.vct.mip, MipMode::isotropic);
   Settings v;
-  applyPreset(v, "villegas2017");
-  EXPECT_EQ(v.attenuation, LightAttenuation::normal_weighted);
-  EXPECT_THROW(applyPreset(v, "nobody2020"), InputError);
-  const std::string help = describeSettings();
-  for (const std::string& kv : settingValues(Settings{}))
+  applyPreset(v, vct, "villegas2017");
+  EXPECT_EQ(v.vct.attenuation, LightAttenuation::normal_weighted);
+  EXPECT_THROW(applyPreset(v, vct, "nobody2020"), InputError);
+  const std::string help = describeSettings(vct);
+  for (const std::string& kv : settingValues(Settings{}, vct))
     EXPECT_NE(help.find(kv.substr(0, kv.find('='))), std::string::npos) << kv;
 }
 

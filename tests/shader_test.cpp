@@ -16,10 +16,10 @@ TEST(Shaders, EveryProgramLinksOnBothPlatforms) {
   for (gpu::GlPlatform p : {gpu::GlPlatform::osmesa, gpu::GlPlatform::egl}) {
     gpu::GlContext& context = glContext(p);
     context.makeCurrent();
-    EXPECT_NO_THROW(
-        gpu::Program(context.gl(), {"voxelize.vert", "voxelize.geom", "voxelize.frag"}));
-    EXPECT_NO_THROW(gpu::Program(context.gl(), {"voxelize_antialiased.comp"}));
-    EXPECT_NO_THROW(gpu::Program(context.gl(), {"voxelize_resolve.comp"}));
+    EXPECT_NO_THROW(gpu::Program(
+        context.gl(), {&shaders::voxelize_vert, &shaders::voxelize_geom, &shaders::voxelize_frag}));
+    EXPECT_NO_THROW(gpu::Program(context.gl(), {&shaders::voxelize_antialiased_comp}));
+    EXPECT_NO_THROW(gpu::Program(context.gl(), {&shaders::voxelize_resolve_comp}));
   }
 }
 
@@ -27,7 +27,7 @@ TEST(Shaders, VoxelTriangleLayoutMatchesCpp) {
   gpu::GlContext& context = glContext(gpu::GlPlatform::egl);
   context.makeCurrent();
   const gpu::Gl& gl = context.gl();
-  const gpu::Program program(gl, {"voxelize_antialiased.comp"});
+  const gpu::Program program(gl, {&shaders::voxelize_antialiased_comp});
   auto query = [&](const char* variable, GLenum property) {
     const GLuint index = gl.GetProgramResourceIndex(program.id(), GL_BUFFER_VARIABLE, variable);
     EXPECT_NE(index, GL_INVALID_INDEX) << variable;
@@ -50,14 +50,14 @@ TEST(Shaders, VoxelTriangleLayoutMatchesCpp) {
 TEST(Shaders, CompileErrorsNameTheFileAndLine) {
   gpu::GlContext& context = glContext(gpu::GlPlatform::egl);
   context.makeCurrent();
-  const ShaderSource& source = shaderSource("voxelize.frag");
+  const ShaderSource& source = shaders::voxelize_frag;
   ASSERT_GE(source.files.size(), 2u);
   std::string text(source.text);
   // An error on line 42 of the first included file (source-string number 1).
   const size_t afterVersion = text.find('\n') + 1;
   text.insert(afterVersion, "#line 42 1\nthis is not GLSL;\n#line 2 0\n");
   try {
-    gpu::compileShader(context.gl(), "voxelize.frag", text);
+    gpu::compileShader(context.gl(), source, text);
     FAIL() << "broken shader compiled";
   } catch (const gpu::ShaderError& e) {
     const std::string expected = std::string(source.files[1]) + ":42";
@@ -66,7 +66,7 @@ TEST(Shaders, CompileErrorsNameTheFileAndLine) {
 }
 
 TEST(Shaders, LogMappingHandlesMesaAndNvidiaFormats) {
-  const ShaderSource& source = shaderSource("voxelize.frag");
+  const ShaderSource& source = shaders::voxelize_frag;
   const std::string file = std::string(source.files[1]);
   EXPECT_NE(mapShaderLog(source, "1:12(5): error: x").find(file + ":12"), std::string::npos);
   EXPECT_NE(mapShaderLog(source, "1(12) : error C0000: x").find(file + ":12"), std::string::npos);

@@ -14,9 +14,9 @@ TEST(StageDeterminism, AllStagesBitIdenticalOn1_2_8Threads) {
   scene.grid.resolution = 32;
   scene.camera.width = scene.camera.height = 48;
   Settings settings;
-  applyPreset(settings, "villegas2017");  // soft voxel shadows: the longest marches
-  settings.bounceCount = 1;
-  const std::string last(stageSpecs().back().name);
+  applyPreset(settings, vct(), "villegas2017");  // soft voxel shadows: the longest marches
+  settings.vct.bounceCount = 1;
+  const std::string last = vct().steps().back()->qualifiedName();
   uint64_t reference = 0;
   for (int threads : {1, 2, 8}) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));

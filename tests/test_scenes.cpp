@@ -4,9 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include "common/pipeline.h"
 #include "common/voxel_triangles.h"
-#include "cpu/stages.h"
-#include "validation/stage_functions.h"
+#include "cpu/backend.h"
+#include "gpu/backend.h"
 
 namespace voxgi::test {
 
@@ -52,20 +53,34 @@ BufferSet runCpu(const Scene& scene, VoxelizeMode mode) {
   settings.voxelizeMode = mode;
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
   BufferSet out;
-  cpu::voxelize(StageContext{scene, settings, tris}, out);
+  cpu::CpuBackend cpu;
+  runPipeline(cpu, StageContext{vct(), scene, settings, tris}, out,
+              &stageSpec(StageId::common_voxelize));
   return out;
 }
 
 BufferSet runCpuUntil(const Scene& scene, const Settings& settings, std::string_view last) {
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
-  const StageContext ctx{scene, settings, tris};
   BufferSet out;
-  for (const validation::StageFunctions& stage : validation::stageFunctions()) {
-    stage.cpu(ctx, out);
-    if (last == stage.name) return out;
-  }
-  ADD_FAILURE() << "no stage " << last;
+  cpu::CpuBackend cpu;
+  runPipeline(cpu, StageContext{vct(), scene, settings, tris}, out,
+              &resolveStage(vct(), std::string(last)));
   return out;
+}
+
+const Technique& vct() {
+  return findTechnique("vct");
+}
+
+std::vector<validation::StageReport> diffVct(const Scene& scene, const Settings& settings,
+                                             gpu::GlContext& context,
+                                             const std::vector<std::string>& stages) {
+  const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
+  std::vector<const StageSpec*> specs;
+  for (const std::string& s : stages) specs.push_back(&resolveStage(vct(), s));
+  cpu::CpuBackend cpu;
+  gpu::GpuBackend gpu(context);
+  return validation::diffStages(StageContext{vct(), scene, settings, tris}, cpu, gpu, specs, "");
 }
 
 glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v) {
@@ -82,8 +97,8 @@ uint64_t hashBuffers(const BufferSet& buffers) {
     h ^= x;
     h *= 1099511628211ull;
   };
-  for (const auto& [name, b] : buffers) {
-    for (char c : name) mix(static_cast<unsigned char>(c));
+  for (const auto& [id, b] : buffers) {
+    for (char c : bufferSpec(id).qualifiedName()) mix(static_cast<unsigned char>(c));
     for (uint32_t w : b.words) mix(w);
   }
   return h;

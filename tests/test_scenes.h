@@ -8,6 +8,8 @@
 #include "common/buffer.h"
 #include "common/scene.h"
 #include "common/stage.h"
+#include "gpu/context.h"
+#include "validation/diff.h"
 
 namespace voxgi::test {
 
@@ -21,12 +23,21 @@ std::vector<Triangle> quad(int axis, double at, glm::dvec2 lo, glm::dvec2 hi);
 // A unit grid [0, size]^3 with N^3 voxels.
 GridSpec unitGrid(int n, double size = 1.0);
 
+// The voxelize stage on the CPU.
 BufferSet runCpu(const Scene& scene, VoxelizeMode mode);
-// Runs the CPU stages in graph order up to and including `last`.
+// Runs the CPU stages vct's plan runs, in graph order, up to and including `last` ("mip",
+// "vct/mip").
 BufferSet runCpuUntil(const Scene& scene, const Settings& settings, std::string_view last);
+// The voxel cone tracing technique.
+const Technique& vct();
+// `voxgi diff` of vct's stages named in `stages` (each resolved as --stage is), CPU against the
+// GPU backend on `context`.
+std::vector<validation::StageReport> diffVct(const Scene& scene, const Settings& settings,
+                                             gpu::GlContext& context,
+                                             const std::vector<std::string>& stages);
 // Voxel v's components of a volume buffer.
 glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v);
-// FNV-1a over every buffer's name and words.
+// FNV-1a over every buffer's qualified name and words.
 uint64_t hashBuffers(const BufferSet& buffers);
 std::string sourcePath(const std::string& relative);  // relative to the project root
 // A folder of the running test's own (ctest runs tests as parallel processes), ending in '/'.

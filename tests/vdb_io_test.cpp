@@ -16,7 +16,7 @@ TEST(VdbIo, EveryVoxelizeBufferRoundTrips) {
   for (auto& p : scene.meshes[0].positions) p = scene.grid.min + p * 2.0;
   const BufferSet b = runCpu(scene, VoxelizeMode::antialiased);
   std::vector<const Buffer*> all;
-  for (const auto& [name, buffer] : b) all.push_back(&buffer);
+  for (const auto& [id, buffer] : b) all.push_back(&buffer);
   const std::string path = testTempDir() + "roundtrip.vdb";
   writeVdb(path, all, scene.grid);
   GridSpec read;
@@ -27,7 +27,8 @@ TEST(VdbIo, EveryVoxelizeBufferRoundTrips) {
   EXPECT_EQ(read.min, scene.grid.min);
   EXPECT_EQ(read.size, scene.grid.size);
   ASSERT_EQ(back.size(), b.size());
-  for (const auto& [name, buffer] : b) EXPECT_EQ(back.at(name).words, buffer.words) << name;
+  for (const auto& [id, buffer] : b)
+    EXPECT_EQ(back.at(id).words, buffer.words) << buffer.spec->qualifiedName();
 }
 
 TEST(VdbIo, VoxelCentresLineUpWithTheWorld) {
@@ -37,7 +38,7 @@ TEST(VdbIo, VoxelCentresLineUpWithTheWorld) {
   const BufferSet b = runCpu(makeScene(quad(2, 0.4, {0.1, 0.2}, {0.8, 0.9}), unitGrid(8)),
                              VoxelizeMode::conservative);
   const std::string path = testTempDir() + "transform.vdb";
-  writeVdb(path, {&b.at("opacity")}, scene.grid);
+  writeVdb(path, {&b.at(BufferId::common_voxelize_opacity)}, scene.grid);
   openvdb::io::File file(path);
   file.open();
   const auto grid = file.readGrid("opacity");

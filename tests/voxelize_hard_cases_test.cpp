@@ -16,7 +16,7 @@ namespace {
 
 size_t occupied(const BufferSet& b) {
   size_t n = 0;
-  for (uint32_t w : b.at("weight_sum").words) n += w != 0u;
+  for (uint32_t w : b.at(BufferId::common_voxelize_weight_sum).words) n += w != 0u;
   return n;
 }
 
@@ -58,21 +58,26 @@ TEST(VoxelizeHardCases, WallOnAVoxelFaceAndMovedByATenThousandthOfAVoxel) {
   const BufferSet onFace = runCpu(wallAt(8.0), VoxelizeMode::conservative);
   const BufferSet moved = runCpu(wallAt(8.0 + 1e-4), VoxelizeMode::conservative);
   const GridSpec g = unitGrid(16);
-  EXPECT_NEAR(onFace.at("weight_sum").words[g.index({8, 8, 7})], 65536.0, 2.0);
-  EXPECT_NEAR(onFace.at("weight_sum").words[g.index({8, 8, 8})], 65536.0, 2.0);
-  EXPECT_EQ(moved.at("weight_sum").words[g.index({8, 8, 7})], 0u);
-  EXPECT_NEAR(moved.at("weight_sum").words[g.index({8, 8, 8})], 65536.0, 2.0);
+  EXPECT_NEAR(onFace.at(BufferId::common_voxelize_weight_sum).words[g.index({8, 8, 7})], 65536.0,
+              2.0);
+  EXPECT_NEAR(onFace.at(BufferId::common_voxelize_weight_sum).words[g.index({8, 8, 8})], 65536.0,
+              2.0);
+  EXPECT_EQ(moved.at(BufferId::common_voxelize_weight_sum).words[g.index({8, 8, 7})], 0u);
+  EXPECT_NEAR(moved.at(BufferId::common_voxelize_weight_sum).words[g.index({8, 8, 8})], 65536.0,
+              2.0);
   // Antialiased: every voxel changes by O(1e-4) (opacity and premultiplied attributes).
   for (double z : {8.0, 8.5, 8.37}) {
     const BufferSet a = runCpu(wallAt(z), VoxelizeMode::antialiased);
     const BufferSet b = runCpu(wallAt(z + 1e-4), VoxelizeMode::antialiased);
     double worst = 0.0;
     for (size_t e = 0; e < g.voxelCount(); ++e) {
-      const double oa = a.at("opacity").get<float>(e, 0), ob = b.at("opacity").get<float>(e, 0);
+      const double oa = a.at(BufferId::common_voxelize_opacity).get<float>(e, 0),
+                   ob = b.at(BufferId::common_voxelize_opacity).get<float>(e, 0);
       worst = std::max(worst, std::abs(oa - ob));
       for (int c = 0; c < 3; ++c)
-        worst = std::max(worst, std::abs(oa * a.at("albedo").get<float>(e, c) -
-                                         ob * b.at("albedo").get<float>(e, c)));
+        worst =
+            std::max(worst, std::abs(oa * a.at(BufferId::common_voxelize_albedo).get<float>(e, c) -
+                                     ob * b.at(BufferId::common_voxelize_albedo).get<float>(e, c)));
     }
     // The tent weight moves by 1e-4 per 1e-4 voxel; rounding to 2^-16 adds a few units.
     EXPECT_LT(worst, 1e-4 + 8.0 / 65536.0) << "wall at " << z;
@@ -88,7 +93,8 @@ TEST(VoxelizeHardCases, TriangleLargerThanTheGrid) {
     const GridSpec& g = scene.grid;
     for (int j = 0; j < 16; ++j)
       for (int i = 0; i < 16; ++i) {
-        const float opacity = b.at("opacity").get<float>(g.index({i, j, 8}), 0);
+        const float opacity =
+            b.at(BufferId::common_voxelize_opacity).get<float>(g.index({i, j, 8}), 0);
         EXPECT_GT(opacity, mode == VoxelizeMode::conservative ? 0.99f : 0.45f) << i << "," << j;
       }
     if (mode == VoxelizeMode::conservative) {
@@ -109,8 +115,8 @@ TEST(VoxelizeHardCases, SceneFarFromTheOriginMatchesTheSameSceneAtTheOrigin) {
   };
   for (VoxelizeMode mode : {VoxelizeMode::conservative, VoxelizeMode::antialiased}) {
     const BufferSet near = runCpu(shifted(0.0), mode), far = runCpu(shifted(1e6), mode);
-    const auto& a = near.at("weight_sum").words;
-    const auto& b = far.at("weight_sum").words;
+    const auto& a = near.at(BufferId::common_voxelize_weight_sum).words;
+    const auto& b = far.at(BufferId::common_voxelize_weight_sum).words;
     for (size_t e = 0; e < a.size(); ++e)
       ASSERT_NEAR(double(a[e]), double(b[e]), 2.0 + 1e-4 * a[e])
           << voxelizeModeName(mode) << " voxel " << e;
@@ -126,8 +132,8 @@ TEST(VoxelizeHardCases, TinySceneVoxelizesLikeTheUnitScene) {
   const BufferSet unit = runCpu(scaled(1.0), VoxelizeMode::conservative);
   const BufferSet tiny = runCpu(scaled(1e-4), VoxelizeMode::conservative);
   EXPECT_EQ(occupied(unit), occupied(tiny));
-  const auto& a = unit.at("weight_sum").words;
-  const auto& b = tiny.at("weight_sum").words;
+  const auto& a = unit.at(BufferId::common_voxelize_weight_sum).words;
+  const auto& b = tiny.at(BufferId::common_voxelize_weight_sum).words;
   for (size_t e = 0; e < a.size(); ++e) ASSERT_NEAR(double(a[e]), double(b[e]), 2.0 + 1e-4 * a[e]);
 }
 
@@ -146,7 +152,7 @@ TEST(VoxelizeHardCases, EmptySceneGivesEmptyVolumes) {
 TEST(VoxelizeHardCases, ResolutionOne) {
   const Scene scene = makeScene(quad(2, 0.5, {0.25, 0.25}, {0.75, 0.75}), unitGrid(1));
   const BufferSet b = runCpu(scene, VoxelizeMode::conservative);
-  EXPECT_NEAR(b.at("weight_sum").words[0], 0.25 * 65536.0, 2.0);
+  EXPECT_NEAR(b.at(BufferId::common_voxelize_weight_sum).words[0], 0.25 * 65536.0, 2.0);
   EXPECT_NO_THROW(runCpu(scene, VoxelizeMode::antialiased));
 }
 
@@ -155,7 +161,7 @@ TEST(VoxelizeHardCases, ResolutionTooLargeForMemoryIsAnErrorBeforeAllocating) {
   try {
     const Settings settings;
     const VoxelTriangles none{};
-    checkStageMemory(StageContext{scene, settings, none}, "voxelize");
+    checkStageMemory(StageContext{vct(), scene, settings, none}, StageId::common_voxelize);
     FAIL() << "2048^3 voxelize buffers accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("grid.resolution"), std::string::npos) << e.what();

@@ -16,7 +16,7 @@ namespace {
 constexpr double kUnit = 65536.0;  // fixed-point units per h^2
 
 uint32_t weightAt(const BufferSet& b, const GridSpec& g, glm::ivec3 v) {
-  return b.at("weight_sum").words[g.index(v)];
+  return b.at(BufferId::common_voxelize_weight_sum).words[g.index(v)];
 }
 
 // Independent closed triangle / closed box overlap in double (box [lo, lo+1]^3), with the
@@ -62,7 +62,9 @@ TEST(Voxelize, AxisAlignedQuadCoversExactlyItsVoxelsWithTheirAreas) {
         const double cx = (i == 4 || i == 11) ? 0.84 : 1.0, cy = (j == 4 || j == 11) ? 0.84 : 1.0;
         // Two triangles, each rounded once: at most one unit apart from the exact area.
         EXPECT_NEAR(w, cx * cy * kUnit, 2.0) << i << "," << j;
-        EXPECT_FLOAT_EQ(b.at("opacity").get<float>(scene.grid.index({i, j, k}), 0), 1.0f);
+        EXPECT_FLOAT_EQ(
+            b.at(BufferId::common_voxelize_opacity).get<float>(scene.grid.index({i, j, k}), 0),
+            1.0f);
       }
 }
 
@@ -73,21 +75,22 @@ TEST(Voxelize, AttributesAreTheMaterialsAndTheUnitNormal) {
   const Scene scene = makeScene(quad(1, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16), m);
   const BufferSet b = runCpu(scene, VoxelizeMode::conservative);
   const size_t e = scene.grid.index({8, 4, 8});
-  ASSERT_GT(b.at("weight_sum").words[e], 0u);
+  ASSERT_GT(b.at(BufferId::common_voxelize_weight_sum).words[e], 0u);
   for (int c = 0; c < 3; ++c) {
-    EXPECT_NEAR(b.at("albedo").get<float>(e, c), m.albedo[c], 1e-4);
-    EXPECT_NEAR(b.at("emission").get<float>(e, c), m.emission[c], 1e-4 * 3.0);
+    EXPECT_NEAR(b.at(BufferId::common_voxelize_albedo).get<float>(e, c), m.albedo[c], 1e-4);
+    EXPECT_NEAR(b.at(BufferId::common_voxelize_emission).get<float>(e, c), m.emission[c],
+                1e-4 * 3.0);
   }
   // quad(1, ...) spans (z, x): its winding gives the -y normal.
-  EXPECT_NEAR(std::abs(b.at("normal").get<float>(e, 1)), 1.0f, 1e-4);
-  EXPECT_NEAR(b.at("normal").get<float>(e, 0), 0.0f, 1e-4);
+  EXPECT_NEAR(std::abs(b.at(BufferId::common_voxelize_normal).get<float>(e, 1)), 1.0f, 1e-4);
+  EXPECT_NEAR(b.at(BufferId::common_voxelize_normal).get<float>(e, 0), 0.0f, 1e-4);
 }
 
 TEST(Voxelize, NonEmissiveScenesGetNoEmissionBuffers) {
   const Scene scene = makeScene(quad(2, 0.5, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16));
   const BufferSet b = runCpu(scene, VoxelizeMode::conservative);
-  EXPECT_EQ(b.count("emission"), 0u);
-  EXPECT_EQ(b.count("emission_sum"), 0u);
+  EXPECT_FALSE(b.contains(BufferId::common_voxelize_emission));
+  EXPECT_FALSE(b.contains(BufferId::common_voxelize_emission_sum));
 }
 
 TEST(Voxelize, TotalWeightIsTheSurfaceArea) {
@@ -104,7 +107,7 @@ TEST(Voxelize, TotalWeightIsTheSurfaceArea) {
   for (VoxelizeMode mode : {VoxelizeMode::conservative, VoxelizeMode::antialiased}) {
     const BufferSet b = runCpu(scene, mode);
     double total = 0.0;
-    for (uint32_t w : b.at("weight_sum").words) total += w;
+    for (uint32_t w : b.at(BufferId::common_voxelize_weight_sum).words) total += w;
     EXPECT_NEAR(total / kUnit, area, area * 2e-3) << voxelizeModeName(mode);
   }
 }
@@ -140,7 +143,8 @@ TEST(Voxelize, AntialiasedWallThroughVoxelCentresIsOpaqueInItsLayerOnly) {
       makeScene(quad(2, 8.5 * h, {2.0 * h, 2.0 * h}, {14.0 * h, 14.0 * h}), unitGrid(16));
   const BufferSet b = runCpu(scene, VoxelizeMode::antialiased);
   for (int k = 6; k <= 10; ++k) {
-    const float o = b.at("opacity").get<float>(scene.grid.index({8, 8, k}), 0);
+    const float o =
+        b.at(BufferId::common_voxelize_opacity).get<float>(scene.grid.index({8, 8, k}), 0);
     EXPECT_NEAR(o, k == 8 ? 1.0f : 0.0f, 1e-3) << "layer " << k;
   }
 }

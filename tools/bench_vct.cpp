@@ -14,11 +14,13 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
+#include "common/pipeline.h"
 #include "common/scene_load.h"
 #include "common/voxel_triangles.h"
+#include "cpu/backend.h"
 #include "cpu/stages.h"
+#include "gpu/backend.h"
 #include "tools/bench.h"
-#include "validation/stage_functions.h"
 
 namespace voxgi::tools {
 
@@ -39,33 +41,35 @@ double medianSeconds(int repeats, const std::function<void()>& run) {
 
 namespace {
 
-// Times each stage the plan runs on `inputs` (the CPU outputs of the stages before it); returns
-// stage -> s.
+// Times each stage the plan runs after voxelize on `backend`, from the CPU's outputs of the
+// stages before it (voxelize has its own benchmark, `voxgi bench voxelize`); returns stage -> s.
 std::vector<std::pair<std::string, double>> timeStages(const StageContext& ctx, int repeats,
-                                                       gpu::GlContext* context) {
+                                                       StageBackend& backend) {
+  cpu::CpuBackend reference;
+  const bool onCpu = dynamic_cast<cpu::CpuBackend*>(&backend) != nullptr;
   std::vector<std::pair<std::string, double>> out;
   BufferSet inputs;
-  for (const validation::StageFunctions& stage : validation::stageFunctions()) {
-    if (!ctx.plan.runs(stage.name)) continue;
-    // Copying the inputs is not timed: only the stage call.
+  for (const StageSpec* stage : plannedStages(ctx)) {
+    if (stage->id == StageId::common_voxelize) {
+      runStage(reference, *stage, ctx, inputs);
+      continue;
+    }
+    // Copying the inputs is not timed: only the stage.
     std::vector<double> times;
     BufferSet result;
     for (int r = 0; r < repeats; ++r) {
       result = inputs;
       const auto start = std::chrono::steady_clock::now();
-      if (context != nullptr && stage.name != "voxelize")
-        stage.gpu(*context, ctx, result);
-      else
-        stage.cpu(ctx, result);
+      const StageOutputs outputs = runStage(backend, *stage, ctx, result);
       times.push_back(
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+      if (!outputs.ok()) throw std::logic_error(outputs.describe(*stage, backend.name()));
     }
-    const double s = median(std::move(times));
-    if (stage.name != "voxelize") out.emplace_back(stage.name, s);
-    if (context != nullptr)
-      stage.cpu(ctx, inputs);  // the next stage's inputs come from the CPU
-    else
+    out.emplace_back(stage->qualifiedName(), median(std::move(times)));
+    if (onCpu)
       inputs = std::move(result);
+    else
+      runStage(reference, *stage, ctx, inputs);  // the next stage's inputs come from the CPU
   }
   return out;
 }
@@ -75,19 +79,20 @@ std::pair<double, double> mipVersusMemcpy(int n, int repeats, MipMode mode) {
   Scene scene;
   scene.grid.resolution = n;
   Settings settings;
-  settings.mip = mode;
+  settings.vct.mip = mode;
   BufferSet buffers;
-  Buffer radiance(bufferSpec("light_voxels", "radiance"), glm::ivec3(n));
+  Buffer radiance(BufferId::vct_light_voxels_radiance, glm::ivec3(n));
   for (size_t i = 0; i < radiance.words.size(); ++i)
     radiance.words[i] = std::bit_cast<uint32_t>(float(i % 97) / 97.0f);
   std::vector<uint32_t> copy(radiance.words.size());
   const double memcpySeconds = medianSeconds(
       repeats, [&] { std::memcpy(copy.data(), radiance.words.data(), copy.size() * 4); });
-  buffers["radiance"] = std::move(radiance);
+  buffers.put(std::move(radiance));
   const VoxelTriangles none{};
-  const double mipSeconds = medianSeconds(repeats, [&] {
-    cpu::mip(StageContext{scene, settings, none}, buffers);
-  });
+  const StageContext ctx{findTechnique("vct"), scene, settings, none};
+  // The stage function itself, not the runner: the runner drops a stage's old buffers first, and
+  // this measures the in-place rebuild a pyramid gets every frame.
+  const double mipSeconds = medianSeconds(repeats, [&] { cpu::vct::mip(ctx, buffers); });
   return {mipSeconds, memcpySeconds};
 }
 
@@ -120,17 +125,23 @@ int runBenchVct(const BenchVctOptions& o) {
         Scene scene = loadScene(file);
         scene.grid.resolution = n;
         scene.camera.width = scene.camera.height = image;
-        const Settings settings = resolveSettings(scene.settings, scene.file, o.preset, o.sets);
+        const Technique& vct = findTechnique("vct");
+        const Settings settings =
+            resolveSettings(vct, scene.settings, scene.file, o.preset, o.sets);
         const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
-        const StageContext ctx{scene, settings, tris};
+        const StageContext ctx{vct, scene, settings, tris};
+        cpu::CpuBackend cpuBackend;
         std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>> runs;
         for (int t : o.threads) {
           tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(t));
           tbb::task_arena arena(t);
           runs.emplace_back("cpu " + std::to_string(t) + " thr",
-                            arena.execute([&] { return timeStages(ctx, o.repeats, nullptr); }));
+                            arena.execute([&] { return timeStages(ctx, o.repeats, cpuBackend); }));
         }
-        if (context) runs.emplace_back("gpu osmesa", timeStages(ctx, o.repeats, context.get()));
+        if (context) {
+          gpu::GpuBackend gpuBackend(*context);
+          runs.emplace_back("gpu osmesa", timeStages(ctx, o.repeats, gpuBackend));
+        }
         const std::string name = std::filesystem::path(file).stem().string();
         for (const auto& [backend, stages] : runs)
           for (const auto& [stage, seconds] : stages) {

@@ -12,9 +12,10 @@
 #include <openvdb/tools/MeshToVolume.h>
 #include <tbb/global_control.h>
 
+#include "common/pipeline.h"
 #include "common/scene_load.h"
-#include "cpu/stages.h"
-#include "gpu/stages.h"
+#include "cpu/backend.h"
+#include "gpu/backend.h"
 #include "tools/bench.h"
 
 namespace voxgi::tools {
@@ -103,16 +104,20 @@ int runBenchVoxelize(const BenchOptions& o) {
             << " | meshToVolume band 1, 2 threads s | cpu 2 threads / meshToVolume band 3 |\n"
             << "|---|---|---|---|---|---|---|---|---|---|\n";
   Settings settings;
+  const Technique& vct = findTechnique("vct");  // any technique runs the shared voxelize stage
+  const StageSpec& voxelize = stageSpec(StageId::common_voxelize);
+  cpu::CpuBackend cpuBackend;
+  std::unique_ptr<gpu::GpuBackend> gpuBackend;
+  if (context) gpuBackend = std::make_unique<gpu::GpuBackend>(*context);
   for (Scene& scene : meshes) {
     for (int n : o.resolutions) {
       scene.grid = fitGrid(scene.bounds(), n);
-      BufferSet sink;
       auto runCpu = [&](size_t threads) {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
         return medianSeconds(o.repeats, [&] {
           const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
           BufferSet out;
-          cpu::voxelize(StageContext{scene, settings, tris}, out);
+          runStage(cpuBackend, voxelize, StageContext{vct, scene, settings, tris}, out);
         });
       };
       const double cpu1 = runCpu(1), cpu2 = runCpu(2);
@@ -122,7 +127,7 @@ int runBenchVoxelize(const BenchOptions& o) {
           gpuSeconds = medianSeconds(o.repeats, [&] {
             const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
             BufferSet out;
-            gpu::voxelize(*context, StageContext{scene, settings, tris}, out);
+            runStage(*gpuBackend, voxelize, StageContext{vct, scene, settings, tris}, out);
           });
         } catch (const std::exception& e) {
           std::cerr << "bench: gpu at " << n << "^3 skipped: " << e.what() << "\n";

@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "validation/image_metrics.h"
-#include "validation/path_trace.h"
+#include "validation/reference/image_metrics.h"
+#include "validation/reference/path_trace.h"
 
 namespace voxgi::tools {
 namespace {
@@ -38,14 +38,14 @@ void checkSameSize(int width, int height, const std::string& name, const Image& 
                          std::to_string(reference.height));
 }
 
-std::optional<validation::ImageMetrics> referenceNoiseFloor(const std::string& referencePath,
-                                                            const Image& reference,
-                                                            const std::vector<uint8_t>& mask) {
-  const std::string variance = validation::variancePath(referencePath);
+std::optional<reference::ImageMetrics> referenceNoiseFloor(const std::string& referencePath,
+                                                           const Image& reference,
+                                                           const std::vector<uint8_t>& mask) {
+  const std::string variance = reference::variancePath(referencePath);
   if (!std::filesystem::exists(variance)) return std::nullopt;
   const Image v = readExr(variance);
   checkSameSize(v.width, v.height, variance, reference);
-  return validation::noiseFloor(reference, v, mask);
+  return reference::noiseFloor(reference, v, mask);
 }
 
 std::vector<uint8_t> readMask(const std::string& path, const Image& reference) {
@@ -74,7 +74,7 @@ int runCompare(const CompareOptions& o) {
   const Image test = readImage(o.test);
   checkSameSize(test.width, test.height, o.test, reference);
   const std::vector<uint8_t> mask = readMask(o.mask, reference);
-  const validation::ImageMetrics m = validation::compareImages(test, reference, mask);
+  const reference::ImageMetrics m = reference::compareImages(test, reference, mask);
   std::cout << "compare " << o.test << " against " << o.reference << " (" << reference.width << "x"
             << reference.height << ", " << m.pixels << " pixels)\n"
             << "  RMSE    " << m.rmse << "\n"
@@ -90,7 +90,7 @@ int runCompare(const CompareOptions& o) {
                      {"ssim", m.ssim}};
   // The reference's own error: a perfect image would still measure this far from it.
   if (const auto floor = referenceNoiseFloor(o.reference, reference, mask)) {
-    std::cout << "  noise floor of the reference (" << validation::variancePath(o.reference)
+    std::cout << "  noise floor of the reference (" << reference::variancePath(o.reference)
               << "): RMSE " << floor->rmse << ", relMSE " << floor->relMse << "\n";
     out["noise_floor"] = {{"rmse", floor->rmse}, {"rel_mse", floor->relMse}};
   }
@@ -99,7 +99,7 @@ int runCompare(const CompareOptions& o) {
                                    ? (t.parent_path() / (t.stem().string() + ".error.png")).string()
                                    : o.errorPng;
   writeRgb8Png(errorPng, reference.width, reference.height,
-               validation::errorColours(test, reference, mask));
+               reference::errorColours(test, reference, mask));
   std::cout << "  error map (|t - r| / (|r| + 0.01), log scale 1e-3 black .. 1 white) -> "
             << errorPng << "\n";
   if (!o.json.empty()) std::ofstream(o.json) << out.dump(2) << "\n";

@@ -9,7 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "common/image_io.h"
-#include "validation/image_metrics.h"
+#include "validation/reference/image_metrics.h"
 
 namespace voxgi::tools {
 
@@ -30,10 +30,10 @@ Image readReference(const std::string& path);
 // Throws InputError naming `name` when width x height is not the reference's size.
 void checkSameSize(int width, int height, const std::string& name, const Image& reference);
 
-// The noise floor of a path-traced reference (validation::noiseFloor) from the variance image
+// The noise floor of a path-traced reference (reference::noiseFloor) from the variance image
 // beside it, if there is one.
-std::optional<validation::ImageMetrics> referenceNoiseFloor(const std::string& referencePath,
-                                                            const Image& reference,
-                                                            const std::vector<uint8_t>& mask);
+std::optional<reference::ImageMetrics> referenceNoiseFloor(const std::string& referencePath,
+                                                           const Image& reference,
+                                                           const std::vector<uint8_t>& mask);
 
 }  // namespace voxgi::tools

@@ -108,10 +108,13 @@ int main(int argc, char** argv) {
     std::cerr << e.what() << "\n";
     return 1;
   }
-  const std::string name = fs::path(input).filename().string();
+  // The name is the path under the include folder ("vct/mip.comp"), so stage files of different
+  // techniques may share a file name.
+  const std::string name = fs::relative(fs::path(input), fs::path(includeDir)).string();
   if (!validator.empty()) {
     // glslangValidator picks the stage from the extension, so keep it on the temporary.
-    const fs::path resolved = fs::path(output).parent_path() / ("resolved_" + name);
+    const fs::path resolved =
+        fs::path(output).parent_path() / ("resolved_" + fs::path(input).filename().string());
     fs::create_directories(resolved.parent_path());
     std::ofstream(resolved) << resolver.text;
     const std::string command = validator + " \"" + resolved.string() + "\" 2>&1";
@@ -131,7 +134,7 @@ int main(int argc, char** argv) {
   std::ostringstream cpp;
   cpp << "// Generated from shaders/" << name << " by voxgi_shader_embed. Do not edit.\n"
       << "#include \"shaders/shader_source.h\"\n#include <array>\n"
-      << "namespace voxgi::embedded {\n"
+      << "namespace voxgi::shaders {\n"
       << "static const std::array<std::string_view, " << resolver.files.size() << "> " << ident
       << "_files{";
   for (const auto& f : resolver.files) cpp << cppString(f) << ", ";

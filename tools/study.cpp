@@ -16,15 +16,17 @@
 
 #include "common/buffer_io.h"
 #include "common/error.h"
+#include "common/pipeline.h"
 #include "common/scene_load.h"
 #include "common/settings.h"
 #include "common/voxel_triangles.h"
 #include "tools/bench.h"
 #include "tools/compare.h"
-#include "validation/image_metrics.h"
-#include "validation/pareto.h"
-#include "validation/path_trace.h"
-#include "validation/stage_functions.h"
+#include "validation/reference/image_metrics.h"
+#include "validation/reference/pareto.h"
+#include "cpu/backend.h"
+#include "gpu/backend.h"
+#include "validation/reference/path_trace.h"
 
 extern char** environ;
 
@@ -34,7 +36,7 @@ extern const char* const kPlotStudyScript;  // tools/plot_study.py, embedded by 
 
 namespace {
 
-// Keys only the path tracer takes; every other key is the cone tracer's (a --set key,
+// Keys only the path tracer takes; every other key is a staged technique's (a --set key,
 // `resolution` or `backend`).
 const std::set<std::string> kPathKeys{"spp", "bounces", "seed"};
 
@@ -76,9 +78,9 @@ struct Job {
   std::string technique;
   std::vector<std::pair<std::string, std::string>> values;  // the swept key = value
   Scene scene;
-  Settings settings;                     // vct
-  bool gpu = false;                      // vct
-  validation::PathTraceOptions options;  // path
+  Settings settings;                    // a staged technique
+  bool gpu = false;                     // a staged technique
+  reference::PathTraceOptions options;  // path
   // "resolution=64 step=0.5": each key's last dot-separated part.
   std::string label() const {
     std::ostringstream out;
@@ -94,29 +96,27 @@ struct Result {
   Image image;
 };
 
-Result runVct(const Job& job, int repeats, gpu::GlContext* context) {
+// A technique of the registry through the stage runner, timing each stage.
+Result runTechnique(const Job& job, int repeats, gpu::GlContext* context) {
+  const Technique& technique = findTechnique(job.technique);
   const VoxelTriangles triangles = prepareVoxelTriangles(job.scene, job.scene.grid);
-  const StageContext ctx{job.scene, job.settings, triangles};
+  const StageContext ctx{technique, job.scene, job.settings, triangles};
+  cpu::CpuBackend cpuBackend;
+  std::unique_ptr<gpu::GpuBackend> gpuBackend;
+  if (job.gpu) gpuBackend = std::make_unique<gpu::GpuBackend>(*context);
+  StageBackend& backend = job.gpu ? static_cast<StageBackend&>(*gpuBackend) : cpuBackend;
   std::map<std::string, std::vector<double>> stageTimes;
   std::vector<double> totals;
   Result r;
   for (int k = 0; k < repeats; ++k) {
     BufferSet buffers;
     double total = 0.0;
-    for (const validation::StageFunctions& stage : validation::stageFunctions()) {
-      if (!ctx.plan.runs(stage.name)) continue;
-      const auto start = std::chrono::steady_clock::now();
-      if (job.gpu)
-        stage.gpu(*context, ctx, buffers);
-      else
-        stage.cpu(ctx, buffers);
-      const double s =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      stageTimes[std::string(stage.name)].push_back(s);
-      total += s;
-    }
+    runPipeline(backend, ctx, buffers, nullptr, [&](const StageSpec& stage, double seconds) {
+      stageTimes[stage.qualifiedName()].push_back(seconds);
+      total += seconds;
+    });
     totals.push_back(total);
-    if (k + 1 == repeats) r.image = bufferImage(buffers.at("color"));
+    if (k + 1 == repeats) r.image = bufferImage(buffers.at(technique.image));
   }
   for (const auto& [stage, times] : stageTimes) r.stages[stage] = median(times);
   r.seconds = median(totals);
@@ -127,7 +127,7 @@ Result runPath(const Job& job, int repeats) {
   std::vector<double> times;
   Result r;
   for (int k = 0; k < repeats; ++k) {
-    validation::PathTraceResult p = validation::pathTrace(job.scene, job.options);
+    reference::PathTraceResult p = reference::pathTrace(job.scene, job.options);
     times.push_back(p.seconds);
     r.image = std::move(p.image);
   }
@@ -151,7 +151,9 @@ std::vector<Job> makeJobs(const StudyOptions& o, const std::vector<Sweep>& sweep
       job.technique = technique;
       job.scene = loadScene(o.scene);
       if (o.image != 0) setImageWidth(job.scene, o.image, "--image");
-      job.settings = resolveSettings(job.scene.settings, job.scene.file, o.preset, o.sets);
+      if (technique != "path")
+        job.settings = resolveSettings(findTechnique(technique), job.scene.settings, job.scene.file,
+                                       o.preset, o.sets);
       size_t rest = index;
       for (const Sweep* s : mine) {
         const std::string& value = s->values[rest % s->values.size()];
@@ -216,14 +218,17 @@ void plot(const std::string& csv, const std::string& png, const std::string& met
 
 void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
   cmd.add_option("scene", o.scene, "scene .json or mesh file")->required();
-  cmd.add_option("--technique", o.techniques, "vct and/or path (comma-separated)")
+  std::vector<std::string> names{"path"};
+  for (const Technique& t : techniques()) names.emplace_back(t.name);
+  cmd.add_option("--technique", o.techniques, techniqueNames() + " and/or path (comma-separated)")
       ->delimiter(',')
-      ->check(CLI::IsMember({"vct", "path"}));
-  cmd.add_option("--sweep", o.sweeps,
-                 "key=v1,v2,... (repeatable): a --set key, resolution or backend (vct); spp, "
-                 "bounces or seed (path)");
-  cmd.add_option("--preset", o.preset, "vct parameter preset, before --set and the sweeps");
-  cmd.add_option("--set", o.sets, "fixed vct parameter key=value (repeatable)");
+      ->check(CLI::IsMember(names));
+  cmd.add_option(
+      "--sweep", o.sweeps,
+      "key=v1,v2,... (repeatable): a --set key, resolution or backend (staged techniques); spp, "
+      "bounces or seed (path)");
+  cmd.add_option("--preset", o.preset, "parameter preset, before --set and the sweeps");
+  cmd.add_option("--set", o.sets, "fixed parameter key=value (repeatable)");
   cmd.add_option("--reference", o.reference, "reference image (.exr)")->required();
   cmd.add_option("--mask", o.mask, "only pixels non-zero in this image count");
   cmd.add_option("--csv", o.csv, "output CSV, one row per combination")->required();
@@ -247,18 +252,18 @@ int runStudy(const StudyOptions& o) {
                 o.scene + " camera.resolution (or --image)", reference);
   std::unique_ptr<gpu::GlContext> context;
   std::vector<Result> results;
-  std::vector<validation::ImageMetrics> metrics;
+  std::vector<reference::ImageMetrics> metrics;
   for (size_t k = 0; k < jobs.size(); ++k) {
     const Job& job = jobs[k];
     if (job.gpu && context == nullptr) context = gpu::GlContext::create(gpu::parseGlPlatform(o.gl));
     results.push_back(job.technique == "path" ? runPath(job, o.repeats)
-                                              : runVct(job, o.repeats, context.get()));
-    metrics.push_back(validation::compareImages(results.back().image, reference, mask));
+                                              : runTechnique(job, o.repeats, context.get()));
+    metrics.push_back(reference::compareImages(results.back().image, reference, mask));
     std::cout << "[" << k + 1 << "/" << jobs.size() << "] " << job.technique << " " << job.label()
               << ": " << results.back().seconds << " s, RMSE " << metrics.back().rmse << ", relMSE "
               << metrics.back().relMse << ", SSIM " << metrics.back().ssim << std::endl;
   }
-  const auto errorOf = [&](const validation::ImageMetrics& m) {
+  const auto errorOf = [&](const reference::ImageMetrics& m) {
     return o.metric == "rmse"      ? m.rmse
            : o.metric == "rel_mse" ? m.relMse
            : o.metric == "mare"    ? m.mare
@@ -269,7 +274,7 @@ int runStudy(const StudyOptions& o) {
     seconds.push_back(results[k].seconds);
     errors.push_back(errorOf(metrics[k]));
   }
-  const std::vector<bool> front = validation::paretoFront(seconds, errors);
+  const std::vector<bool> front = reference::paretoFront(seconds, errors);
   // Each technique's own front too: what its best trade-offs are even where another wins.
   std::vector<bool> techniqueFront(jobs.size(), false);
   for (const std::string& technique : o.techniques) {
@@ -281,13 +286,17 @@ int runStudy(const StudyOptions& o) {
         s.push_back(seconds[k]);
         e.push_back(errors[k]);
       }
-    const std::vector<bool> f = validation::paretoFront(s, e);
+    const std::vector<bool> f = reference::paretoFront(s, e);
     for (size_t i = 0; i < mine.size(); ++i) techniqueFront[mine[i]] = f[i];
   }
 
+  // Columns: every stage of the studied techniques, then the path tracer.
   std::vector<std::string> stages;
-  for (const validation::StageFunctions& s : validation::stageFunctions())
-    stages.emplace_back(s.name);
+  for (const std::string& t : o.techniques)
+    if (t != "path")
+      for (const StageSpec* s : findTechnique(t).steps())
+        if (std::find(stages.begin(), stages.end(), s->qualifiedName()) == stages.end())
+          stages.push_back(s->qualifiedName());
   stages.emplace_back("path_trace");
   std::ofstream csv(o.csv);
   if (!csv) throw InputError(o.csv, "", "cannot write");
@@ -310,7 +319,7 @@ int runStudy(const StudyOptions& o) {
       const auto it = results[k].stages.find(s);
       if (it != results[k].stages.end()) csv << it->second;
     }
-    const validation::ImageMetrics& m = metrics[k];
+    const reference::ImageMetrics& m = metrics[k];
     csv << "," << m.rmse << "," << m.relMse << "," << m.mare << "," << m.ssim << "," << 1.0 - m.ssim
         << "," << (front[k] ? 1 : 0) << "," << (techniqueFront[k] ? 1 : 0) << "\n";
   }

@@ -18,19 +18,31 @@
 #include "common/buffer_io.h"
 #include "common/error.h"
 #include "common/image_io.h"
+#include "common/pipeline.h"
 #include "common/scene_load.h"
 #include "common/vdb_io.h"
+#include "cpu/backend.h"
+#include "gpu/backend.h"
 #include "gpu/program.h"
 #include "tools/backend.h"
 #include "tools/bench.h"
 #include "tools/compare.h"
 #include "tools/study.h"
 #include "validation/diff.h"
-#include "validation/path_trace.h"
+#include "validation/reference/path_trace.h"
 #include "validation/report.h"
-#include "validation/stage_functions.h"
 
 namespace voxgi::tools {
+
+StageBackend& BackendChoice::stages() {
+  if (!runner) {
+    if (gpu)
+      runner = std::make_unique<gpu::GpuBackend>(*context);
+    else
+      runner = std::make_unique<cpu::CpuBackend>();
+  }
+  return *runner;
+}
 
 BackendChoice chooseBackend(const std::string& backend, gpu::GlPlatform platform) {
   BackendChoice choice;
@@ -60,8 +72,15 @@ namespace {
 
 using namespace voxgi;
 
+std::vector<std::string> techniqueList() {
+  std::vector<std::string> names;
+  for (const Technique& t : techniques()) names.emplace_back(t.name);
+  return names;
+}
+
 struct Common {
   std::string scene;
+  std::string technique = "vct";
   int resolution = 0;  // 0: the scene's
   int image = 0;       // image width; 0: the scene's
   std::string mode;    // empty: the settings' voxelize.mode
@@ -75,7 +94,7 @@ struct Common {
 Settings makeSettings(const Common& c, const Scene& scene) {
   std::vector<std::string> sets = c.sets;
   if (!c.mode.empty()) sets.insert(sets.begin(), "voxelize.mode=" + c.mode);
-  return resolveSettings(scene.settings, scene.file, c.preset, sets);
+  return resolveSettings(findTechnique(c.technique), scene.settings, scene.file, c.preset, sets);
 }
 
 Scene loadWithOverrides(const Common& c) {
@@ -85,58 +104,58 @@ Scene loadWithOverrides(const Common& c) {
   return scene;
 }
 
-std::vector<const Buffer*> buffersOf(const BufferSet& set, std::string_view stage, bool withSums) {
+// The buffers `stage` left in the set (with the fixed-point sums only when asked).
+std::vector<const Buffer*> buffersOf(const BufferSet& set, const StageSpec& stage, bool withSums) {
   std::vector<const Buffer*> out;
   for (const BufferSpec* spec : stageBuffers(stage)) {
-    const auto it = set.find(spec->name);
-    if (it == set.end()) continue;
-    if (!withSums && spec->type != ScalarType::f32) continue;
-    out.push_back(&it->second);
+    const Buffer* b = set.find(spec->id);
+    if (b == nullptr || (!withSums && spec->type != ScalarType::f32)) continue;
+    out.push_back(b);
   }
   return out;
 }
 
-// The stages up to `until` on the backend the options pick (saying why when auto falls back).
+// The stages up to `last` (all when null) on the backend the options pick (saying why when auto
+// falls back).
 struct StageRun {
   Scene scene;
   Settings settings;
   tools::BackendChoice backend;
   BufferSet buffers;
-  double seconds = 0.0;  // running the stages
+  std::vector<const StageSpec*> stages;  // those the plan ran
+  double seconds = 0.0;                  // running them
   std::string backendName() const {
     return backend.gpu ? "gpu: " + backend.context->renderer() : "cpu";
   }
 };
 
-StageRun runStages(const Common& c, std::string_view until) {
+StageRun runStages(const Common& c, const StageSpec* last) {
   // Input first: a bad scene or --set fails before any backend starts.
+  const Technique& technique = findTechnique(c.technique);
   Scene scene = loadWithOverrides(c);
   const Settings settings = makeSettings(c, scene);
   StageRun run{std::move(scene),
                settings,
                tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl)),
                {},
+               {},
                0.0};
   if (!run.backend.note.empty()) std::cerr << "voxgi: " << run.backend.note << "\n";
   const auto start = std::chrono::steady_clock::now();
   const VoxelTriangles triangles = prepareVoxelTriangles(run.scene, run.scene.grid);
-  const StageContext ctx{run.scene, run.settings, triangles};
-  for (const validation::StageFunctions& stage : validation::stageFunctions()) {
-    if (run.backend.gpu)
-      stage.gpu(*run.backend.context, ctx, run.buffers);
-    else
-      stage.cpu(ctx, run.buffers);
-    if (until == stage.name) break;
-  }
+  const StageContext ctx{technique, run.scene, run.settings, triangles};
+  runPipeline(run.backend.stages(), ctx, run.buffers, last,
+              [&](const StageSpec& stage, double) { run.stages.push_back(&stage); });
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }
 
 int cmdVoxelize(const Common& c, const std::string& out, bool sums) {
-  const StageRun run = runStages(c, "voxelize");
+  const StageSpec& voxelize = stageSpec(StageId::common_voxelize);
+  const StageRun run = runStages(c, &voxelize);
   size_t occupied = 0;
-  for (uint32_t w : run.buffers.at("weight_sum").words) occupied += w != 0u;
-  writeVdb(out, buffersOf(run.buffers, "voxelize", sums), run.scene.grid,
+  for (uint32_t w : run.buffers.at(BufferId::common_voxelize_weight_sum).words) occupied += w != 0u;
+  writeVdb(out, buffersOf(run.buffers, voxelize, sums), run.scene.grid,
            {{"voxgi_mode", voxelizeModeName(run.settings.voxelizeMode)},
             {"voxgi_backend", run.backend.gpu ? run.backend.context->renderer() : "cpu"}});
   std::cout << "voxelized " << run.scene.triangleCount() << " triangles into "
@@ -146,17 +165,26 @@ int cmdVoxelize(const Common& c, const std::string& out, bool sums) {
   return kExitOk;
 }
 
+// The stages --stage names: every step of the technique for "all", else the one it resolves to.
+std::vector<const StageSpec*> requestedStages(const Technique& technique,
+                                              const std::string& stage) {
+  if (stage == "all") return technique.steps();
+  return {&resolveStage(technique, stage)};
+}
+
 int cmdDiff(const Common& c, const std::string& stage, const std::string& json,
             const std::string& dumpDir) {
+  const Technique& technique = findTechnique(c.technique);
   Scene scene = loadWithOverrides(c);
   const Settings settings = makeSettings(c, scene);
-  std::vector<std::string> stages;
-  for (const StageSpec& s : stageSpecs())
-    if (stage == "all" || stage == s.name) stages.emplace_back(s.name);
-  if (stages.empty()) throw InputError("--stage", "", "unknown stage '" + stage + "'");
+  const std::vector<const StageSpec*> stages = requestedStages(technique, stage);
   auto context = gpu::GlContext::create(gpu::parseGlPlatform(c.gl));
   std::cerr << "voxgi: diff on " << context->renderer() << "\n";
-  const auto reports = validation::diffStages(scene, settings, *context, stages, dumpDir);
+  const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
+  const StageContext ctx{technique, scene, settings, triangles};
+  cpu::CpuBackend cpuBackend;
+  gpu::GpuBackend gpuBackend(*context);
+  const auto reports = validation::diffStages(ctx, cpuBackend, gpuBackend, stages, dumpDir);
   validation::printReport(std::cout, reports);
   if (!json.empty()) std::ofstream(json) << validation::toJson(reports).dump(2) << "\n";
   bool pass = true;
@@ -165,10 +193,11 @@ int cmdDiff(const Common& c, const std::string& stage, const std::string& json,
 }
 
 int cmdPlan(const Common& c) {
+  const Technique& technique = findTechnique(c.technique);
   const Scene scene = loadWithOverrides(c);
-  const EffectPlan plan = planEffects(scene, makeSettings(c, scene));
-  std::cout << "plan for " << scene.file << " (" << scene.grid.resolution << "^3 grid, "
-            << scene.camera.width << "x" << scene.camera.height << " image):\n";
+  const EffectPlan plan = technique.plan(scene, makeSettings(c, scene));
+  std::cout << technique.name << " plan for " << scene.file << " (" << scene.grid.resolution
+            << "^3 grid, " << scene.camera.width << "x" << scene.camera.height << " image):\n";
   for (const PlanItem& item : plan.items)
     std::cout << "  " << (item.in ? "in " : "out") << "  " << std::left << std::setw(20)
               << item.name << "  " << item.why << "\n";
@@ -176,33 +205,49 @@ int cmdPlan(const Common& c) {
 }
 
 int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
-  if (findStage(stage) == nullptr) throw InputError("--stage", "", "unknown stage '" + stage + "'");
-  const StageRun run = runStages(c, stage);
+  const Technique& technique = findTechnique(c.technique);
+  const std::vector<const StageSpec*> requested = requestedStages(technique, stage);
+  if (stage != "all") {
+    // A stage the plan skips has no buffers: say so instead of writing another stage's.
+    const Scene scene = loadWithOverrides(c);
+    const EffectPlan plan = technique.plan(scene, makeSettings(c, scene));
+    const StageSpec& s = *requested.front();
+    if (!plan.runs(s.id))
+      throw InputError("--stage", "",
+                       "the plan skips " + s.qualifiedName() + " (" + plan.whySkipped(s.id) +
+                           "), so it has no buffers to dump (voxgi plan shows why)");
+  }
+  const StageRun run = runStages(c, stage == "all" ? nullptr : requested.front());
   std::filesystem::create_directories(dir);
-  for (const std::string& path :
-       writeBuffers(dir + "/" + stage, buffersOf(run.buffers, stage, true), run.scene.grid))
-    std::cout << "wrote " << path << "\n";
+  for (const StageSpec* s : run.stages) {
+    if (stage != "all" && s != requested.front()) continue;
+    for (const std::string& path : writeBuffers(dir + "/" + std::string(s->name),
+                                                buffersOf(run.buffers, *s, true), run.scene.grid))
+      std::cout << "wrote " << path << "\n";
+  }
   return kExitOk;
 }
 
 std::atomic<bool> interrupted{false};
 
-// Voxel cone tracing: every stage up to compose on the chosen backend.
-int cmdRenderVct(const Common& c, const std::string& out, const std::string& png) {
-  const StageRun run = runStages(c, "compose");
-  const Image image = bufferImage(run.buffers.at("color"));
+// A technique of the registry: every stage it plans on the chosen backend, then its image.
+int cmdRenderTechnique(const Common& c, const std::string& out, const std::string& png) {
+  const StageRun run = runStages(c, nullptr);
+  const Technique& technique = findTechnique(c.technique);
+  const Image image = bufferImage(run.buffers.at(technique.image));
   writeExr(out, image);
   if (!png.empty()) writePng(png, image);
-  std::cout << "cone traced " << run.scene.camera.width << "x" << run.scene.camera.height << " at "
-            << run.scene.grid.resolution << "^3 (" << run.backendName() << ") in " << run.seconds
-            << " s -> " << out << "\n";
+  std::cout << technique.name << " rendered " << run.scene.camera.width << "x"
+            << run.scene.camera.height << " at " << run.scene.grid.resolution << "^3 ("
+            << run.backendName() << ") in " << run.seconds << " s -> " << out << "\n";
   return kExitOk;
 }
 
-int cmdRender(const Common& c, const validation::PathTraceOptions& base, const std::string& out,
-              const std::string& png) {
+// The reference path tracer (validation/reference/).
+int cmdRenderPath(const Common& c, const reference::PathTraceOptions& base, const std::string& out,
+                  const std::string& png) {
   const Scene scene = loadWithOverrides(c);
-  validation::PathTraceOptions options = base;
+  reference::PathTraceOptions options = base;
   options.cancel = &interrupted;
   std::signal(SIGINT, [](int) { interrupted = true; });
   const bool tty = isatty(STDERR_FILENO);
@@ -219,21 +264,21 @@ int cmdRender(const Common& c, const validation::PathTraceOptions& base, const s
       std::fprintf(stderr, "\rpath trace %5.1f%%  ETA %6.1f s ", 100.0 * fraction,
                    fraction > 0.0 ? elapsed * (1.0 - fraction) / fraction : 0.0);
     };
-  validation::PathTraceResult result;
+  reference::PathTraceResult result;
   try {
-    result = validation::pathTrace(scene, options);
-  } catch (const validation::Cancelled&) {
+    result = reference::pathTrace(scene, options);
+  } catch (const reference::Cancelled&) {
     std::cerr << (tty ? "\n" : "") << "voxgi: interrupted; nothing written\n";
     return 130;
   }
   if (tty) std::cerr << "\n";
   writeExr(out, result.image);
-  writeExr(validation::variancePath(out), result.variance);
+  writeExr(reference::variancePath(out), result.variance);
   if (!png.empty()) writePng(png, result.image);
   std::cout << "path traced " << scene.camera.width << "x" << scene.camera.height << " at "
             << options.spp << " spp in " << result.seconds << " s ("
             << double(result.rays) / result.seconds / 1e6 << " M rays/s) -> " << out << " and "
-            << validation::variancePath(out) << "\n";
+            << reference::variancePath(out) << "\n";
   return kExitOk;
 }
 
@@ -261,7 +306,7 @@ int main(int argc, char** argv) {
           ->check(CLI::IsMember({"cpu", "gpu", "auto"}));
     cmd->add_option("--threads", threads, "worker threads (default: all cores)")
         ->check(CLI::Range(1, 1024));
-    cmd->add_option("--preset", c.preset, "parameter preset: default, kahl2019, villegas2017");
+    cmd->add_option("--preset", c.preset, "parameter preset of the technique (render --help)");
     cmd->add_option("--set", c.sets,
                     "technique parameter key=value (repeatable; see render --help)");
   };
@@ -271,25 +316,36 @@ int main(int argc, char** argv) {
   addCommon(voxelize, true);
   voxelize->add_option("--out", out, "output .vdb")->required();
   voxelize->add_flag("--sums", sums, "also write the fixed-point sums");
+  const std::string techniqueHelp = "technique: " + techniqueNames();
+  const auto addTechnique = [&](CLI::App* cmd) {
+    cmd->add_option("--technique", c.technique, techniqueHelp)
+        ->check(CLI::IsMember(techniqueList()));
+  };
+  const std::string stageHelp = "stage (vct/trace_cones, or trace_cones within --technique)";
   auto* diff = app.add_subcommand("diff", "run stages on both backends and compare every buffer");
   addCommon(diff, false);
-  diff->add_option("--stage", stage, "stage name or all");
+  addTechnique(diff);
+  diff->add_option("--stage", stage, stageHelp + " or all");
   diff->add_option("--json", json, "write the report as JSON");
   diff->add_option("--dump", dumpDir, "write cpu, gpu and difference grids (.vdb) here");
-  auto* dump = app.add_subcommand("dump", "write every buffer of a stage as .vdb");
+  auto* dump = app.add_subcommand("dump", "write every buffer of a stage (or all) as .vdb/.exr");
   addCommon(dump, true);
-  dump->add_option("--stage", stage, "stage name")->required();
+  addTechnique(dump);
+  dump->add_option("--stage", stage, stageHelp + " or all")->required();
   dump->add_option("--out", out, "output folder")->required();
   auto* plan = app.add_subcommand(
       "plan", "print the stages and cones a scene needs, and why each is in or out");
   addCommon(plan, false);
+  addTechnique(plan);
   auto* render = app.add_subcommand(
       "render", "render an image: voxel cone tracing or the reference path tracer");
   addCommon(render, true);
-  std::string technique = "vct", png;
-  validation::PathTraceOptions pathOptions;
-  render->add_option("--technique", technique, "vct (voxel cone tracing) or path (reference)")
-      ->check(CLI::IsMember({"vct", "path"}));
+  std::string png;
+  reference::PathTraceOptions pathOptions;
+  std::vector<std::string> renderTechniques = techniqueList();
+  renderTechniques.push_back("path");
+  render->add_option("--technique", c.technique, techniqueHelp + ", or path (the reference)")
+      ->check(CLI::IsMember(renderTechniques));
   render->add_option("--spp", pathOptions.spp, "path: samples per pixel")
       ->check(CLI::Range(1, 1 << 20));
   render
@@ -300,7 +356,9 @@ int main(int argc, char** argv) {
   render->add_option("--out", out, "output EXR (linear); path also writes OUT.variance.exr")
       ->required();
   render->add_option("--png", png, "also write a tone-mapped sRGB preview");
-  render->footer(describeSettings());
+  std::string settingsHelp;
+  for (const Technique& t : techniques()) settingsHelp += describeSettings(t);
+  render->footer(settingsHelp);
   tools::CompareOptions compare;
   auto* compareCmd = app.add_subcommand(
       "compare", "RMSE, relative MSE, MARE and SSIM of an image against a reference");
@@ -336,7 +394,8 @@ int main(int argc, char** argv) {
   try {
     if (*voxelize) return cmdVoxelize(c, out, sums);
     if (*render)
-      return technique == "vct" ? cmdRenderVct(c, out, png) : cmdRender(c, pathOptions, out, png);
+      return c.technique == "path" ? cmdRenderPath(c, pathOptions, out, png)
+                                   : cmdRenderTechnique(c, out, png);
     if (*diff) return cmdDiff(c, stage, json, dumpDir);
     if (*dump) return cmdDump(c, stage, out);
     if (*plan) return cmdPlan(c);

@@ -1,34 +1,32 @@
 #include "validation/comparisons.h"
 
-#include <array>
 #include <sstream>
-#include <stdexcept>
 
 namespace voxgi::validation {
 namespace {
 
-#define VOXGI_COMPARISON(stage, buffer, kind, tolerance, reason) \
-  Comparison{#stage, #buffer, Metric::kind, tolerance, reason},
-constexpr std::array kComparisons{
+#define VOXGI_COMPARISON(owner, stage, buffer, kind, tolerance, reason) \
+  Comparison{BufferId::owner##_##stage##_##buffer, Metric::kind, tolerance, reason},
+constexpr Comparison kComparisons[] = {
 #include "validation/comparisons.inc"
 };
-#undef VOXGI_COMPARISON
 
-struct Name {
-  std::string_view stage, buffer;
-};
-#define VOXGI_BUFFER(stage, buffer, type, components, shape, need, meaning) Name{#stage, #buffer},
-constexpr std::array kBufferNames{
-#include "common/stages.inc"
-};
-#undef VOXGI_BUFFER
-
+// A comparison names a declared buffer or does not compile; this checks there is one for every
+// buffer, in declaration order, so comparisonFor can index.
 constexpr bool everyBufferHasItsComparison() {
-  if (kComparisons.size() != kBufferNames.size()) return false;
-  for (size_t i = 0; i < kComparisons.size(); ++i)
-    if (kComparisons[i].stage != kBufferNames[i].stage ||
-        kComparisons[i].buffer != kBufferNames[i].buffer)
-      return false;
+  constexpr size_t buffers = [] {
+    size_t n = 0;
+#define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
+#define VOXGI_EFFECT(owner, effect, meaning)
+#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STEP(technique, owner, stage)
+#define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning) ++n;
+#include "common/stages.inc"
+    return n;
+  }();
+  if (std::size(kComparisons) != buffers) return false;
+  for (size_t i = 0; i < std::size(kComparisons); ++i)
+    if (static_cast<size_t>(kComparisons[i].buffer) != i) return false;
   return true;
 }
 static_assert(everyBufferHasItsComparison(),
@@ -56,11 +54,8 @@ std::string Comparison::describe() const {
   return s.str();
 }
 
-const Comparison& comparisonFor(std::string_view stage, std::string_view buffer) {
-  for (const Comparison& c : kComparisons)
-    if (c.stage == stage && c.buffer == buffer) return c;
-  throw std::out_of_range("no comparison registered for " + std::string(stage) + "." +
-                          std::string(buffer));
+const Comparison& comparisonFor(BufferId buffer) {
+  return kComparisons[static_cast<size_t>(buffer)];
 }
 
 }  // namespace voxgi::validation

@@ -4,6 +4,8 @@
 #include <string>
 #include <string_view>
 
+#include "common/stage_list.h"
+
 namespace voxgi::validation {
 
 // max_rel: |gpu - cpu| <= tolerance * the largest |component| of the element on either backend,
@@ -11,15 +13,14 @@ namespace voxgi::validation {
 enum class Metric { exact, max_ulp, max_abs, max_rel };
 
 struct Comparison {
-  std::string_view stage;
-  std::string_view buffer;
+  BufferId buffer;
   Metric metric;
   double tolerance;
   std::string_view reason;
   std::string describe() const;  // "exact", "max 3 ULP", "max |gpu-cpu| 1e-06", "max rel 1e-05"
 };
 
-// The registered comparison of a buffer; throws std::out_of_range for an unknown one.
-const Comparison& comparisonFor(std::string_view stage, std::string_view buffer);
+// The registered comparison of a buffer (every declared buffer has one).
+const Comparison& comparisonFor(BufferId buffer);
 
 }  // namespace voxgi::validation

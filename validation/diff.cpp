@@ -9,7 +9,6 @@
 
 #include "common/buffer_io.h"
 #include "validation/comparisons.h"
-#include "validation/stage_functions.h"
 
 namespace voxgi::validation {
 namespace {
@@ -25,10 +24,11 @@ double ulpDistance(float a, float b) {
   return std::abs(static_cast<double>(ordered(a) - ordered(b)));
 }
 
-TieClassifier classifierFor(std::string_view stage, const StageContext& ctx, const BufferSet& cpu,
+// The stages whose backends may legitimately disagree near a decision boundary.
+TieClassifier classifierFor(StageId stage, const StageContext& ctx, const BufferSet& cpu,
                             const BufferSet& gpu) {
-  if (stage == "voxelize") return voxelizeTies(ctx);
-  if (stage == "gbuffer") return gbufferTies(cpu, gpu);
+  if (stage == StageId::common_voxelize) return voxelizeTies(ctx);
+  if (stage == StageId::common_gbuffer) return gbufferTies(cpu, gpu);
   return {};
 }
 
@@ -36,38 +36,37 @@ double seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-void dump(const std::string& dir, const StageReport& report, const BufferSet& cpu,
-          const BufferSet& gpu, const GridSpec& grid) {
+void dump(const std::string& dir, const StageSpec& stage, const StageReport& report,
+          const BufferSet& cpu, const BufferSet& gpu, const GridSpec& grid) {
   std::filesystem::create_directories(dir);
-  const std::string prefix = dir + "/" + report.stage;
+  const std::string prefix = dir + "/" + std::string(stage.name);
   std::vector<const Buffer*> cpuList, gpuList, diffList;
   // The difference grids reuse the buffer names but hold gpu - cpu as f32.
   std::vector<BufferSpec> diffSpecs;
-  for (const BufferSpec* spec : stageBuffers(report.stage))
-    diffSpecs.push_back({spec->stage, spec->name, ScalarType::f32, spec->components, spec->shape,
-                         spec->need, spec->meaning});
+  for (const BufferSpec* spec : stageBuffers(stage)) {
+    diffSpecs.push_back(*spec);
+    diffSpecs.back().type = ScalarType::f32;
+  }
   std::vector<Buffer> diffs;
   diffs.reserve(diffSpecs.size());
   for (const BufferSpec& spec : diffSpecs) {
-    const auto c = cpu.find(spec.name), g = gpu.find(spec.name);
-    if (c == cpu.end() || g == gpu.end() || c->second.extent != g->second.extent) continue;
-    cpuList.push_back(&c->second);
-    gpuList.push_back(&g->second);
-    Buffer d(spec, c->second.extent);
+    const Buffer *c = cpu.find(spec.id), *g = gpu.find(spec.id);
+    if (c == nullptr || g == nullptr || c->extent != g->extent) continue;
+    cpuList.push_back(c);
+    gpuList.push_back(g);
+    Buffer d(spec, c->extent);
     for (size_t e = 0; e < d.elementCount(); ++e)
       for (int k = 0; k < spec.components; ++k)
-        d.set(e, k, static_cast<float>(g->second.value(e, k) - c->second.value(e, k)));
+        d.set(e, k, static_cast<float>(g->value(e, k) - c->value(e, k)));
     diffs.push_back(std::move(d));
   }
   for (const Buffer& d : diffs) diffList.push_back(&d);
   // Per element of the stage (all its buffers share one shape and extent).
-  BufferSpec classSpec{"",
-                       "classification",
-                       ScalarType::i32,
-                       1,
-                       BufferShape::volume,
-                       BufferNeed::always,
-                       "0 agree, 1 tie, 2 not a tie"};
+  BufferSpec classSpec = *stageBuffers(stage).front();
+  classSpec.name = "classification";
+  classSpec.type = ScalarType::i32;
+  classSpec.components = 1;
+  classSpec.meaning = "0 agree, 1 tie, 2 not a tie";
   Buffer classes;
   if (!cpuList.empty()) {
     classSpec.shape = cpuList[0]->spec->shape;
@@ -83,40 +82,74 @@ void dump(const std::string& dir, const StageReport& report, const BufferSet& cp
 
 }  // namespace
 
-StageReport compareStage(std::string_view stage, const BufferSet& cpu, const BufferSet& gpu,
-                         const TieClassifier& classify) {
+// The report of a buffer that is not compared: `why`, failing unless `pass`.
+BufferReport uncompared(const BufferSpec& spec, std::string why, bool pass) {
+  const Comparison& cmp = comparisonFor(spec.id);
+  BufferReport r;
+  r.buffer = std::string(spec.name);
+  r.metric = cmp.describe();
+  r.tolerance = cmp.tolerance;
+  r.reason = std::string(cmp.reason);
+  r.status = std::move(why);
+  r.pass = pass;
+  return r;
+}
+
+// Failures of a stage that wrote another stage's buffers (runStage's unplanned list).
+void reportForeignWrites(StageReport& report, const StageSpec& stage, const StageOutputs& outputs,
+                         const std::string& backend) {
+  for (const BufferSpec* b : outputs.unplanned) {
+    if (b->stage == stage.id) continue;  // its own: compareStage reports those
+    report.buffers.push_back(uncompared(*b,
+                                        "written by " + stage.qualifiedName() + " on " + backend +
+                                            ", but " + b->qualifiedName() +
+                                            " belongs to another stage",
+                                        false));
+    report.pass = false;
+  }
+}
+
+StageReport compareStage(const StageSpec& stage, const EffectPlan& plan, const BufferSet& cpu,
+                         const BufferSet& gpu, const TieClassifier& classify) {
   StageReport report;
-  report.stage = std::string(stage);
+  report.stage = stage.qualifiedName();
   // Classifying is costly (it revisits nearby geometry): each element is classified once, for
   // all buffers, and at most kMaxClassified elements per stage.
   constexpr size_t kMaxClassified = 20000;
   size_t classified = 0;
   std::map<size_t, bool> decided;  // element -> tie (false also for unclassified)
   for (const BufferSpec* spec : stageBuffers(stage)) {
-    const Comparison& cmp = comparisonFor(stage, spec->name);
-    BufferReport r;
-    r.buffer = std::string(spec->name);
-    r.metric = cmp.describe();
-    r.tolerance = cmp.tolerance;
-    r.reason = std::string(cmp.reason);
-    const auto c = cpu.find(spec->name), g = gpu.find(spec->name);
-    if (c == cpu.end() && g == gpu.end()) {
-      r.status = "not produced by either backend (the scene does not need it)";
-      report.buffers.push_back(r);
+    const Comparison& cmp = comparisonFor(spec->id);
+    const Buffer *c = cpu.find(spec->id), *g = gpu.find(spec->id);
+    const bool planned = bufferNeeded(*spec, plan);
+    std::string problem;  // why the buffer fails without being compared
+    if (!planned && c == nullptr && g == nullptr) {
+      report.buffers.push_back(uncompared(
+          *spec,
+          "not planned: needs " + std::string(effectSpec(spec->need).name) + ", which is off",
+          true));
       continue;
     }
-    if (c == cpu.end() || g == gpu.end() || c->second.extent != g->second.extent) {
-      r.status = c == cpu.end()   ? "missing on cpu"
-                 : g == gpu.end() ? "missing on gpu"
-                                  : "extents differ";
-      r.pass = false;
+    if (!planned)
+      problem = std::string("not planned, but produced on ") + (c != nullptr && g != nullptr
+                                                                    ? "both backends"
+                                                                : c != nullptr ? "cpu"
+                                                                               : "gpu");
+    else if (c == nullptr || g == nullptr)
+      problem =
+          std::string("planned, but missing on ") + (c == nullptr && g == nullptr ? "both backends"
+                                                     : c == nullptr               ? "cpu"
+                                                                                  : "gpu");
+    else if (c->extent != g->extent)
+      problem = "extents differ";
+    if (!problem.empty()) {
+      report.buffers.push_back(uncompared(*spec, problem, false));
       report.pass = false;
-      report.buffers.push_back(r);
       continue;
     }
-    r.status = "compared";
-    const Buffer& a = c->second;
-    const Buffer& b = g->second;
+    BufferReport r = uncompared(*spec, "compared", true);
+    const Buffer& a = *c;
+    const Buffer& b = *g;
     r.elements = a.elementCount();
     double worst = -1.0;
     for (size_t e = 0; e < r.elements; ++e) {
@@ -169,29 +202,46 @@ StageReport compareStage(std::string_view stage, const BufferSet& cpu, const Buf
   return report;
 }
 
-std::vector<StageReport> diffStages(const Scene& scene, const Settings& settings,
-                                    gpu::GlContext& context, const std::vector<std::string>& stages,
+std::vector<StageReport> diffStages(const StageContext& ctx, StageBackend& cpu, StageBackend& gpu,
+                                    const std::vector<const StageSpec*>& stages,
                                     const std::string& dumpDir) {
-  const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
-  const StageContext ctx{scene, settings, triangles};
   std::vector<StageReport> reports;
+  const auto wanted = [&](const StageSpec* s) {
+    return std::find(stages.begin(), stages.end(), s) != stages.end();
+  };
+  // Requested stages the plan skips pass with the plan's reason (they produce nothing).
+  for (const StageSpec* s : stages)
+    if (!ctx.plan.runs(s->id)) {
+      StageReport skipped;
+      skipped.stage = s->qualifiedName();
+      skipped.skipped = "skipped by the plan: " + ctx.plan.whySkipped(s->id);
+      reports.push_back(std::move(skipped));
+    }
+  const StageSpec* last = nullptr;
+  for (const StageSpec* s : ctx.technique.steps())
+    if (wanted(s)) last = s;
   BufferSet inputs;  // the CPU's outputs of the stages run so far
-  for (const StageFunctions& stage : stageFunctions()) {
-    BufferSet cpuOut = inputs, gpuOut = inputs;
+  for (const StageSpec* stage : plannedStages(ctx, last)) {
+    BufferSet cpuOut = inputs;
     auto start = std::chrono::steady_clock::now();
-    stage.cpu(ctx, cpuOut);
+    const StageOutputs cpuOutputs = runStage(cpu, *stage, ctx, cpuOut);
     const double cpuSeconds = seconds(start);
-    const bool wanted = std::find(stages.begin(), stages.end(), stage.name) != stages.end();
-    if (wanted) {
+    if (wanted(stage)) {
+      BufferSet gpuOut = inputs;
       start = std::chrono::steady_clock::now();
-      stage.gpu(context, ctx, gpuOut);
+      const StageOutputs gpuOutputs = runStage(gpu, *stage, ctx, gpuOut);
       const double gpuSeconds = seconds(start);
-      const TieClassifier classify = classifierFor(stage.name, ctx, cpuOut, gpuOut);
-      StageReport report = compareStage(stage.name, cpuOut, gpuOut, classify);
+      const TieClassifier classify = classifierFor(stage->id, ctx, cpuOut, gpuOut);
+      StageReport report = compareStage(*stage, ctx.plan, cpuOut, gpuOut, classify);
+      reportForeignWrites(report, *stage, cpuOutputs, cpu.name());
+      reportForeignWrites(report, *stage, gpuOutputs, gpu.name());
       report.cpuSeconds = cpuSeconds;
       report.gpuSeconds = gpuSeconds;
-      if (!dumpDir.empty()) dump(dumpDir, report, cpuOut, gpuOut, scene.grid);
+      if (!dumpDir.empty()) dump(dumpDir, *stage, report, cpuOut, gpuOut, ctx.scene.grid);
       reports.push_back(std::move(report));
+    } else if (!cpuOutputs.ok()) {
+      // A later stage's inputs would be wrong: the CPU reference itself broke the plan.
+      throw std::logic_error(cpuOutputs.describe(*stage, cpu.name()));
     }
     inputs = std::move(cpuOut);
   }

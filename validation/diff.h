@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "common/buffer.h"
-#include "common/stage.h"
+#include "common/pipeline.h"
 #include "gpu/context.h"
 
 namespace voxgi::validation {
@@ -20,7 +20,7 @@ struct BufferReport {
   std::string metric;  // Comparison::describe()
   double tolerance = 0.0;
   std::string reason;
-  std::string status;  // "compared", or why it was skipped ("not produced: ...")
+  std::string status;  // "compared", why it was not ("not planned: ..."), or what went wrong
   size_t elements = 0;
   size_t differing = 0;   // elements outside the tolerance
   double fraction = 0.0;  // differing / elements
@@ -36,25 +36,30 @@ struct BufferReport {
 enum class ElementClass : uint8_t { tie = 1, not_a_tie = 2 };
 
 struct StageReport {
-  std::string stage;
+  std::string stage;  // StageSpec::qualifiedName
   std::vector<BufferReport> buffers;
   std::map<size_t, ElementClass> outside;  // element -> class; unclassified counts as not_a_tie
   double cpuSeconds = 0.0, gpuSeconds = 0.0;
+  std::string skipped;  // non-empty: the plan skips the stage (why); nothing was run
   bool pass = true;
 };
 
 // Classification of one element that differs: true for a tie. Built per stage from its context.
 using TieClassifier = std::function<bool(size_t element)>;
 
-// Compares two buffer sets on `stage`'s declared buffers. `classify` may be empty (no ties).
-StageReport compareStage(std::string_view stage, const BufferSet& cpu, const BufferSet& gpu,
-                         const TieClassifier& classify);
+// Compares two buffer sets on `stage`'s declared buffers against the plan: a buffer the plan
+// produces must be on both backends and within its comparison; one it does not must be on
+// neither. `classify` may be empty (no ties).
+StageReport compareStage(const StageSpec& stage, const EffectPlan& plan, const BufferSet& cpu,
+                         const BufferSet& gpu, const TieClassifier& classify);
 
-// Runs `stages` (in graph order) on both backends and compares them. With a non-empty `dumpDir`,
-// writes <dir>/<stage>_cpu.vdb, _gpu.vdb and _diff.vdb (gpu - cpu per buffer, plus a
-// `classification` grid: 0 agree, 1 tie, 2 not a tie).
-std::vector<StageReport> diffStages(const Scene& scene, const Settings& settings,
-                                    gpu::GlContext& context, const std::vector<std::string>& stages,
+// Runs the planned stages of ctx's technique up to the last of `stages` on the CPU, and each of
+// `stages` on both backends from the CPU's outputs of the stages before it, and compares them
+// (a requested stage the plan skips is reported as such). With a non-empty `dumpDir`, writes
+// <dir>/<stage>_cpu.vdb, _gpu.vdb and _diff.vdb (gpu - cpu per buffer, plus a `classification`
+// grid: 0 agree, 1 tie, 2 not a tie).
+std::vector<StageReport> diffStages(const StageContext& ctx, StageBackend& cpu, StageBackend& gpu,
+                                    const std::vector<const StageSpec*>& stages,
                                     const std::string& dumpDir);
 
 // The voxelize stage's tie classifier (validation/voxelize_ties.cpp).

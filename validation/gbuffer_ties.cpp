@@ -3,8 +3,8 @@
 namespace voxgi::validation {
 
 TieClassifier gbufferTies(const BufferSet& cpu, const BufferSet& gpu) {
-  const Buffer& c = cpu.at("primitive_id");
-  const Buffer& g = gpu.at("primitive_id");
+  const Buffer& c = cpu.at(BufferId::common_gbuffer_primitive_id);
+  const Buffer& g = gpu.at(BufferId::common_gbuffer_primitive_id);
   return [&c, &g](size_t e) {
     const uint32_t mine = c.words[e];
     if (mine == g.words[e]) return false;  // same triangle: the values themselves differ

@@ -29,6 +29,7 @@ nlohmann::json toJson(const std::vector<StageReport>& reports) {
                          {"worst_element", b.worstElement},
                          {"pass", b.pass}});
     stages.push_back({{"stage", s.stage},
+                      {"skipped", s.skipped},
                       {"cpu_seconds", s.cpuSeconds},
                       {"gpu_seconds", s.gpuSeconds},
                       {"pass", s.pass},
@@ -40,6 +41,10 @@ nlohmann::json toJson(const std::vector<StageReport>& reports) {
 
 void printReport(std::ostream& out, const std::vector<StageReport>& reports) {
   for (const StageReport& s : reports) {
+    if (!s.skipped.empty()) {
+      out << "stage " << s.stage << ": " << s.skipped << "\n";
+      continue;
+    }
     out << "stage " << s.stage << ": " << (s.pass ? "PASS" : "FAIL") << "  (cpu " << std::fixed
         << std::setprecision(3) << s.cpuSeconds << " s, gpu " << s.gpuSeconds << " s)\n";
     // Columns as wide as the longest buffer name and metric.

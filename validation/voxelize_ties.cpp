@@ -42,17 +42,15 @@ bool conservativeTie(const VoxelTriangle& t, const glm::ivec3& v, float satEpsil
 }
 
 bool antialiasedTie(const VoxelTriangle& t, const glm::ivec3& v) {
-  const int s = int(t.info.y);
-  for (int i = 0; i < s; ++i)
-    for (int j = 0; j < s - i; ++j)
-      for (int part = 0, parts = j == s - 1 - i ? 1 : 2; part < parts; ++part) {
-        const glm::vec3 p = shared::antialiasedSample(t, i, j, part == 0);
-        const glm::ivec3 base = shared::tentBase(p);
-        const glm::ivec3 d = v - base;
-        if (d.x < 0 || d.y < 0 || d.z < 0 || d.x > 1 || d.y > 1 || d.z > 1) continue;
-        const float w = shared::tentWeightValue(t, p, base, d.x + 2 * d.y + 4 * d.z);
-        if (contributionNearHalf(t, w)) return true;
-      }
+  for (int i = 0; i < int(t.info.y); ++i)
+    for (int k = 0; k < shared::antialiasedRowSamples(t, i); ++k) {
+      const glm::vec3 p = shared::antialiasedRowSample(t, i, k);
+      const glm::ivec3 base = shared::tentBase(p);
+      const glm::ivec3 d = v - base;
+      if (d.x < 0 || d.y < 0 || d.z < 0 || d.x > 1 || d.y > 1 || d.z > 1) continue;
+      const float w = shared::tentWeightValue(t, p, base, d.x + 2 * d.y + 4 * d.z);
+      if (contributionNearHalf(t, w)) return true;
+    }
   return false;
 }
 

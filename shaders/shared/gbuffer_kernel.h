@@ -7,6 +7,13 @@
 
 VOXGI_NAMESPACE_BEGIN
 
+// One triangle's surface (std430), indexed by gl_PrimitiveID on the GPU and by Embree's primitive
+// id on the CPU.
+struct SurfaceTriangle {
+  vec4 normal;  // xyz: unit normal (right-handed winding), 0 if degenerate
+  uvec4 info;   // x: object id (mesh index + 1), y: material index
+};
+
 // One material (std430).
 struct MaterialData {
   vec4 albedo;    // rgb

@@ -1,7 +1,7 @@
 // Analytic lights shared by light_voxels (per voxel) and compose (per pixel): the std430 light
 // record and the irradiance a light delivers at a point, with seed 000 §2.1.5's falloff models.
-// Same semantics as the path tracer (validation/path_trace.cpp): hard spot cut-off at half the
-// spot angle, falloff on world-space distance.
+// Same semantics as the path tracer (validation/reference/path_trace.cpp): hard spot cut-off at
+// half the spot angle, falloff on world-space distance.
 #ifndef VOXGI_LIGHTING_H
 #define VOXGI_LIGHTING_H
 #include "vector_math.h"
@@ -15,10 +15,12 @@ const uint kLightDirectional = 2u;
 // One light in voxel-local coordinates (common/lights.cpp builds them). 64 bytes, std430.
 struct LightData {
   vec4 position;   // xyz: voxel-local position (point, spot)
-  vec4 direction;  // xyz: unit direction the light travels (spot axis, directional); w: cos(half spot angle)
+  vec4 direction;  // xyz: unit direction the light travels (spot axis, directional); w: cos(half
+                   // spot angle)
   vec4 intensity;  // rgb: W/sr (point, spot) or irradiance (directional)
-  vec4 falloff;    // xyz: constant, linear, quadratic (world units); w: 1 polynomial, 0 inverse square
-  uvec4 info;      // x: kLight*; y: 1 if it casts shadows; zw: 0
+  vec4
+      falloff;  // xyz: constant, linear, quadratic (world units); w: 1 polynomial, 0 inverse square
+  uvec4 info;   // x: kLight*; y: 1 if it casts shadows; zw: 0
 };
 
 // Irradiance on a plane facing the light at p (voxel-local), without the cosine. `toLight` gets
@@ -38,7 +40,8 @@ VOXGI_FN vec3 lightIrradiance(LightData l, vec3 p, float voxelSize, OUT(vec3) to
     return vec3(0.0f);
   }
   toLight = d / distance;
-  if (l.info.x == kLightSpot && dot3(-toLight, vec3(l.direction)) < l.direction.w) return vec3(0.0f);
+  if (l.info.x == kLightSpot && dot3(-toLight, vec3(l.direction)) < l.direction.w)
+    return vec3(0.0f);
   precise float r = distance * voxelSize;
   precise float att = l.falloff.w == 0.0f
                           ? 1.0f / (r * r)

@@ -187,6 +187,16 @@ VOXGI_FN vec3 antialiasedSample(VoxelTriangle t, int i, int j, bool up) {
   return p;
 }
 
+// The samples of row i in splatting order, the one order every backend and the tie classifier
+// use: cell j's upward sub-triangle (k = 2j), then its downward one (k = 2j + 1); the last cell of
+// a row has only the upward half.
+VOXGI_FN int antialiasedRowSamples(VoxelTriangle t, int i) {
+  return 2 * (int(t.info.y) - i) - 1;
+}
+VOXGI_FN vec3 antialiasedRowSample(VoxelTriangle t, int i, int k) {
+  return antialiasedSample(t, i, k / 2, k % 2 == 0);
+}
+
 // The voxel whose centre is the lower corner of the trilinear tent cell holding p.
 VOXGI_FN ivec3 tentBase(vec3 p) {
   return ivec3(floor(p - vec3(0.5f)));

@@ -1,8 +1,9 @@
-// Loads a scene and voxelizes it with the installed voxgi libraries.
+// Loads a scene and voxelizes it with the installed voxgi libraries, through the stage runner.
 #include <iostream>
 
+#include <voxgi/common/pipeline.h>
 #include <voxgi/common/scene_load.h>
-#include <voxgi/cpu/stages.h>
+#include <voxgi/cpu/backend.h>
 
 int main(int argc, char** argv) {
   if (argc != 2) return 2;
@@ -10,10 +11,13 @@ int main(int argc, char** argv) {
   scene.grid.resolution = 16;
   const voxgi::Settings settings;
   const voxgi::VoxelTriangles triangles = voxgi::prepareVoxelTriangles(scene, scene.grid);
+  const voxgi::StageContext ctx{voxgi::findTechnique("vct"), scene, settings, triangles};
   voxgi::BufferSet buffers;
-  voxgi::cpu::voxelize({scene, settings, triangles}, buffers);
+  voxgi::cpu::CpuBackend cpu;
+  voxgi::runPipeline(cpu, ctx, buffers, &voxgi::stageSpec(voxgi::StageId::common_voxelize));
   size_t occupied = 0;
-  for (uint32_t w : buffers.at("weight_sum").words) occupied += w != 0u;
+  for (uint32_t w : buffers.at(voxgi::BufferId::common_voxelize_weight_sum).words)
+    occupied += w != 0u;
   std::cout << "consumer: " << occupied << " occupied voxels\n";
   return occupied > 0 ? 0 : 1;
 }

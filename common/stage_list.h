@@ -1,0 +1,97 @@
+// common/stages.inc as C++: the effects, stages, technique steps and buffers every part of voxgi
+// refers to, as constexpr tables and typed ids. A buffer is named in code by its BufferId
+// (BufferId::vct_light_voxels_radiance), so a misspelt or undeclared buffer does not compile.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace voxgi {
+
+enum class ScalarType { u32, i32, f32 };
+const char* scalarTypeName(ScalarType t);
+
+// How a buffer's elements are laid out (common/mips.h has the level offsets):
+// volume: N^3 voxels; mips: levels 1..log2(N) of an N^3 volume, level l is (N>>l)^3, one after
+// another; mips6: the same levels, each six (N>>l)^3 volumes side by side along x (faces +x, -x,
+// +y, -y, +z, -z), so level l is (6(N>>l)) x (N>>l) x (N>>l); image: the camera's pixels, row 0 at
+// the top.
+enum class BufferShape { volume, mips, mips6, image };
+
+// An effect of the plan (common/effect_plan.h) a buffer may depend on; `always` for none.
+#define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
+#define VOXGI_EFFECT(owner, effect, meaning) effect,
+#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STEP(technique, owner, stage)
+#define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
+enum class Effect : uint8_t {
+  always,
+#include "common/stages.inc"
+};
+
+// Every declared stage: StageId::<owner>_<stage>, in declaration order.
+#define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
+#define VOXGI_EFFECT(owner, effect, meaning)
+#define VOXGI_STAGE(owner, stage, summary) owner##_##stage,
+#define VOXGI_STEP(technique, owner, stage)
+#define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
+enum class StageId : uint16_t {
+#include "common/stages.inc"
+};
+
+// Every declared buffer: BufferId::<owner>_<stage>_<buffer>, in declaration order.
+#define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
+#define VOXGI_EFFECT(owner, effect, meaning)
+#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STEP(technique, owner, stage)
+#define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning) \
+  owner##_##stage##_##buffer,
+enum class BufferId : uint16_t {
+#include "common/stages.inc"
+};
+
+struct EffectSpec {
+  Effect effect;
+  std::string_view owner, name, meaning;
+};
+
+struct StageSpec {
+  StageId id;
+  std::string_view owner;  // the technique, or "common" for a stage several techniques run
+  std::string_view name;
+  std::string_view summary;
+  bool shared() const { return owner == "common"; }
+  // How commands and reports name it: "voxelize" for a shared stage, "vct/trace_cones" otherwise.
+  std::string qualifiedName() const;
+};
+
+struct BufferSpec {
+  BufferId id;
+  StageId stage;
+  std::string_view name;
+  ScalarType type;
+  int components;
+  BufferShape shape;
+  Effect need;
+  std::string_view meaning;
+  const StageSpec& stageSpec() const;
+  std::string qualifiedName() const;  // "voxelize.opacity", "vct/light_voxels.radiance"
+};
+
+std::span<const EffectSpec> effectSpecs();
+std::span<const StageSpec> stageSpecs();
+std::span<const BufferSpec> bufferSpecs();
+const StageSpec& stageSpec(StageId id);
+const BufferSpec& bufferSpec(BufferId id);
+const EffectSpec& effectSpec(Effect e);
+// The buffers a stage writes, in declaration order.
+std::vector<const BufferSpec*> stageBuffers(const StageSpec& stage);
+// The stage `owner`/`name` ("common" for shared stages); nullptr if there is none.
+const StageSpec* findStage(std::string_view owner, std::string_view name);
+// The stages `technique` runs, in graph order.
+std::vector<const StageSpec*> techniqueSteps(std::string_view technique);
+
+}  // namespace voxgi

@@ -1,0 +1,37 @@
+#include "common/technique.h"
+
+#include "common/error.h"
+
+namespace voxgi {
+
+std::span<const Technique> techniques() {
+#define VOXGI_TECHNIQUE(technique, image_stage, image, summary) \
+  Technique{#technique,                                         \
+            summary,                                            \
+            BufferId::technique##_##image_stage##_##image,      \
+            &technique::params,                                 \
+            &technique::presets,                                \
+            &technique::planEffects},
+#define VOXGI_EFFECT(owner, effect, meaning)
+#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STEP(technique, owner, stage)
+#define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
+  static const Technique table[] = {
+#include "common/stages.inc"
+  };
+  return table;
+}
+
+std::string techniqueNames() {
+  std::string names;
+  for (const Technique& t : techniques()) names += (names.empty() ? "" : "|") + std::string(t.name);
+  return names;
+}
+
+const Technique& findTechnique(std::string_view name, const std::string& source) {
+  for (const Technique& t : techniques())
+    if (t.name == name) return t;
+  throw InputError(source, "", "must be " + techniqueNames() + ", got '" + std::string(name) + "'");
+}
+
+}  // namespace voxgi

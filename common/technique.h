@@ -1,0 +1,48 @@
+// The technique registry: every technique `voxgi render --technique` runs, from common/stages.inc.
+// A technique declares, in its own folder (common/<technique>/): its stages and buffers
+// (stages.inc), its parameter table and presets (settings.cpp) and its effect planner (plan.cpp);
+// a technique without one of them does not link.
+#pragma once
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "common/effect_plan.h"
+#include "common/scene.h"
+#include "common/settings_table.h"
+#include "common/stage_list.h"
+
+namespace voxgi {
+
+struct Technique {
+  std::string_view name;
+  std::string_view summary;
+  BufferId image;                           // the rendered image (linear RGB)
+  const std::vector<Param>& (*params)();    // its own keys (the shared ones: sharedParams())
+  const std::vector<Preset>& (*presets)();  // "default" first
+  // Which of its stages, buffers and effects the scene needs, and why (common/effect_plan.h).
+  EffectPlan (*plan)(const Scene& scene, const Settings& settings);
+  std::vector<const StageSpec*> steps() const { return techniqueSteps(name); }
+};
+
+std::span<const Technique> techniques();
+// The technique named `name`; throws InputError naming `source` (e.g. "--technique") otherwise.
+const Technique& findTechnique(std::string_view name, const std::string& source = "--technique");
+// "vct|lpv|...", for help texts and errors.
+std::string techniqueNames();
+
+// The per-technique entry points the registry links against (common/<technique>/).
+#define VOXGI_TECHNIQUE(technique, image_stage, image, summary)         \
+  namespace technique {                                                 \
+  const std::vector<Param>& params();                                   \
+  const std::vector<Preset>& presets();                                 \
+  EffectPlan planEffects(const Scene& scene, const Settings& settings); \
+  }
+#define VOXGI_EFFECT(owner, effect, meaning)
+#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STEP(technique, owner, stage)
+#define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
+#include "common/stages.inc"
+
+}  // namespace voxgi

@@ -1,0 +1,83 @@
+#include "common/vct/kernel_params.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "common/camera_geometry.h"
+#include "common/vct/cone_sets.h"
+#include "common/lights.h"
+#include "common/mips.h"
+
+namespace voxgi {
+namespace {
+
+shared::ConeTraceParams coneTraceParams(const StageContext& ctx, int lightCount, int coneCount,
+                                        glm::vec3 cameraPosition) {
+  const VctSettings& s = ctx.settings.vct;
+  const int n = ctx.scene.grid.resolution;
+  // Every cone leaves the grid within its diagonal; 2N leaves room for the start offset.
+  const float maxDistance = 2.0f * float(n);
+  // Cone diameters are at least one voxel, so steps are at least beta; the bound keeps the loop
+  // count under llvmpipe's and any driver's limits at large N and small beta.
+  constexpr int kMaxSteps = 60000;
+  const float minStep = std::max(s.coneStep, maxDistance / float(kMaxSteps - 2));
+  const int steps = std::min(kMaxSteps, int(std::ceil(maxDistance / minStep)) + 2);
+  const double halfShadow = 0.5 * double(s.shadowAperture) * std::numbers::pi / 180.0;
+  return {glm::ivec4(n, mipLevelCount(n), s.mip == MipMode::anisotropic ? 1 : 0, coneCount),
+          glm::ivec4(lightCount, s.diffuseCones == DiffuseCones::first_hit ? 1 : 0,
+                     s.shadowFalloff == ShadowFalloff::kahl2019 ? 1 : 0,
+                     s.specularBrdf == SpecularBrdf::light_angle ? 1 : 0),
+          glm::ivec4(ctx.plan.on(Effect::ambient_occlusion) ? 1 : 0, steps, 0, 0),
+          glm::vec4(s.coneStep, s.coneOffset, minStep, maxDistance),
+          glm::vec4(float(std::tan(halfShadow)), s.shadowStrength, s.ambientLambda,
+                    float(ctx.scene.grid.voxelSize())),
+          glm::vec4(s.specularFalloff, 0.008f * std::numbers::pi_v<float>, 0.0f, 0.0f),
+          glm::vec4(ctx.scene.background, 0.0f),
+          glm::vec4(cameraPosition, 0.0f)};
+}
+
+// docs/stages/vct/trace_cones.md: the specular cone holds half the Phong lobe's energy.
+std::vector<shared::ObjectData> objectData(const Scene& scene, bool everyObject) {
+  std::vector<shared::ObjectData> out(scene.meshes.size() + 1, {glm::vec4(0.0f)});
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const Material& mat = scene.materials.at(scene.meshes[m].material);
+    if (!mat.glossy() && !everyObject) continue;
+    // P(cos alpha > c) = 1 - c^(n+1) for a Phong lobe cos^n: half the energy within c =
+    // 2^(-1/(n+1)).
+    const double c = std::pow(2.0, -1.0 / (double(mat.shininess) + 1.0));
+    out[m + 1].specular = glm::vec4(float(std::sqrt(1.0 - c * c) / c), mat.shininess, 0.0f, 0.0f);
+  }
+  return out;
+}
+
+}  // namespace
+
+shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount,
+                                            bool emissive) {
+  const VctSettings& s = ctx.settings.vct;
+  return {glm::ivec4(ctx.scene.grid.resolution, lightCount,
+                     s.attenuation == LightAttenuation::normal_weighted ? 1 : 0,
+                     static_cast<int>(s.voxelShadow)),
+          glm::vec4(static_cast<float>(ctx.scene.grid.voxelSize()), s.voxelShadowKappa,
+                    s.voxelShadowOffset, emissive ? 1.0f : 0.0f)};
+}
+
+ConeTraceSetup prepareConeTrace(const StageContext& ctx) {
+  ConeTraceSetup s{voxelLights(ctx.scene),
+                   coneData(diffuseCones(ctx.settings.vct.cones)),
+                   objectData(ctx.scene, ctx.plan.full),
+                   {}};
+  s.params =
+      coneTraceParams(ctx, int(s.lights.size()), int(s.cones.size()), cameraRays(ctx.scene).origin);
+  return s;
+}
+
+ConeTraceSetup prepareBounce(const StageContext& ctx) {
+  ConeTraceSetup s{{}, coneData(diffuseCones(ctx.settings.vct.cones)), {}, {}};
+  s.params = coneTraceParams(ctx, 0, int(s.cones.size()), glm::vec3(0.0f));
+  s.params.limits.x = 0;  // no ambient occlusion
+  return s;
+}
+
+}  // namespace voxgi

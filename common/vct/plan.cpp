@@ -1,0 +1,90 @@
+// Voxel cone tracing's effect planner (docs/effect-plan.md).
+#include <sstream>
+
+#include "common/technique.h"
+#include "common/vct/cone_sets.h"
+
+namespace voxgi::vct {
+namespace {
+
+// Names of the meshes whose material passes `test`, and whether one of them is in view.
+struct MeshesWith {
+  std::string names;
+  bool inView = false;
+};
+template <class Test>
+MeshesWith meshesWith(const Scene& scene, Test test) {
+  MeshesWith r;
+  for (const Mesh& m : scene.meshes) {
+    const Material& mat = scene.materials.at(m.material);
+    if (m.triangles.empty() || !test(mat)) continue;
+    if (!r.names.empty()) r.names += ", ";
+    r.names += "'" + mat.name + "'";
+    r.inView = r.inView || meshInView(scene, m);
+  }
+  return r;
+}
+
+}  // namespace
+
+EffectPlan planEffects(const Scene& scene, const Settings& settings) {
+  const VctSettings& s = settings.vct;
+  EffectPlan p;
+  p.full = settings.planMode == PlanMode::full;
+  const std::string full = "plan.mode=full computes it anyway";
+
+  p.stage(StageId::common_voxelize, true,
+          "surfaces -> albedo, normal, opacity volumes; the geometry is static, so one "
+          "voxelization serves every frame and any relighting");
+  const MeshesWith emitters = meshesWith(scene, [](const Material& m) { return m.emissive(); });
+  p.effect("emission volume", Effect::emission, p.full || !emitters.names.empty(),
+           !emitters.names.empty() ? "emissive material " + emitters.names
+           : p.full                ? "no emissive material; " + full
+                                   : "no emissive material");
+
+  int shadowLights = 0;
+  for (const Light& l : scene.lights) shadowLights += l.castsShadows ? 1 : 0;
+  std::ostringstream lights;
+  lights << scene.lights.size() << " analytic light(s)"
+         << (emitters.names.empty() ? "" : " and emissive surfaces") << " -> radiance per voxel";
+  p.stage(StageId::vct_light_voxels, true, lights.str());
+  p.stage(StageId::vct_mip, true, settingValue(settings, "mip.mode") + " pyramid (mip.mode)");
+  p.set(Effect::isotropic, s.mip == MipMode::isotropic);
+  p.set(Effect::anisotropic, s.mip == MipMode::anisotropic);
+  std::ostringstream bounce;
+  bounce << "bounce.count=" << s.bounceCount
+         << (s.bounceCount > 0
+                 ? ": diffuse cones from every voxel, then the pyramid again, per bounce"
+                 : ": the first bounce only (the pixels' diffuse cones)");
+  p.stage(StageId::vct_bounce, s.bounceCount > 0, bounce.str());
+  p.stage(StageId::common_gbuffer, true, "the surface each pixel sees");
+
+  p.stage(StageId::vct_trace_cones, true, "per pixel");
+  std::ostringstream diffuse;
+  diffuse << diffuseCones(s.cones).size() << " diffuse cones ("
+          << settingValue(settings, "cones.set") << ", " << settingValue(settings, "cones.diffuse")
+          << ")";
+  p.note("diffuse cones", true, diffuse.str());
+  std::ostringstream shadow;
+  if (scene.lights.empty())
+    shadow << "no analytic lights";
+  else
+    shadow << shadowLights << " of " << scene.lights.size()
+           << " light(s) cast shadows: one cone each";
+  p.note("shadow cones", shadowLights > 0, shadow.str());
+  const MeshesWith glossy = meshesWith(scene, [](const Material& m) { return m.glossy(); });
+  p.effect("specular cone", Effect::specular, p.full || glossy.inView,
+           glossy.inView          ? "glossy material " + glossy.names + " in view"
+           : p.full               ? "no glossy material in view; " + full
+           : glossy.names.empty() ? "no glossy material"
+                                  : "glossy material " + glossy.names + " outside the view");
+  const bool askedAo = s.ambientOcclusion == AmbientOcclusion::on;
+  p.effect("ambient occlusion", Effect::ambient_occlusion, p.full || askedAo,
+           askedAo  ? "ao.mode=on"
+           : p.full ? "ao.mode=off, so not applied; " + full
+                    : "ao.mode=off");
+  p.stage(StageId::vct_compose, true, "material x light terms + emission");
+  return p;
+}
+
+}  // namespace voxgi::vct

@@ -1,0 +1,50 @@
+// CPU compose stage: the shared kernel (shaders/shared/vct/compose_kernel.h) per pixel.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "cpu/stages.h"
+#include "shaders/shared/vct/compose_kernel.h"
+
+namespace voxgi::cpu {
+namespace {
+
+// A pixel's rgb, or 0 where the scene does not produce the buffer (no glossy or emissive material).
+glm::vec3 rgbOr0(const Buffer* b, size_t e) {
+  return b == nullptr ? glm::vec3(0.0f) : b->vec3At(e);
+}
+
+}  // namespace
+
+void vct::compose(const StageContext& ctx, BufferSet& buffers) {
+  checkStageMemory(ctx, StageId::vct_compose);
+  using enum BufferId;
+  const Buffer& objectId = buffers.at(common_gbuffer_object_id);
+  // AO is applied only when asked (plan.mode=full computes it anyway).
+  const Buffer* ambient = ctx.settings.vct.ambientOcclusion == AmbientOcclusion::on
+                              ? buffers.find(vct_trace_cones_ambient_occlusion)
+                              : nullptr;
+  const Buffer *albedo = buffers.find(common_gbuffer_pixel_albedo),
+               *specular = buffers.find(common_gbuffer_pixel_specular),
+               *emission = buffers.find(common_gbuffer_pixel_emission),
+               *directDiffuse = buffers.find(vct_trace_cones_direct_diffuse),
+               *directSpecular = buffers.find(vct_trace_cones_direct_specular),
+               *indirectDiffuse = buffers.find(vct_trace_cones_indirect_diffuse),
+               *indirectSpecular = buffers.find(vct_trace_cones_indirect_specular);
+  Buffer color(BufferId::vct_compose_color, objectId.extent);
+  const int width = objectId.extent.x;
+  tbb::parallel_for(tbb::blocked_range<int>(0, objectId.extent.y), [&](const auto& rows) {
+    for (int y = rows.begin(); y != rows.end(); ++y)
+      for (int x = 0; x < width; ++x) {
+        const size_t e = size_t(y) * size_t(width) + size_t(x);
+        const glm::vec3 c = shared::composePixel(
+            objectId.get<uint32_t>(e, 0), rgbOr0(albedo, e), rgbOr0(specular, e),
+            rgbOr0(emission, e), rgbOr0(directDiffuse, e), rgbOr0(directSpecular, e),
+            rgbOr0(indirectDiffuse, e), rgbOr0(indirectSpecular, e),
+            ambient == nullptr ? 0.0f : ambient->get<float>(e, 0), ctx.scene.background);
+        color.setVec3(e, c);
+      }
+  });
+  buffers.put(std::move(color));
+}
+
+}  // namespace voxgi::cpu

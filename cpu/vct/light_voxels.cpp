@@ -1,0 +1,59 @@
+// CPU light_voxels stage: the shared kernel (shaders/shared/vct/light_voxels_kernel.h) per voxel.
+// Each voxel is written by exactly one task, so the result does not depend on the thread count.
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "common/vct/kernel_params.h"
+#include "common/lights.h"
+#include "cpu/stages.h"
+
+namespace voxgi::cpu {
+namespace {
+
+// The volumes the kernel reads (FETCH in the shared code).
+struct LightVoxelsVolumes {
+  const Buffer& opacity;
+  const Buffer& albedo;
+  const Buffer& normal;
+  const Buffer* emission;
+  const std::vector<shared::LightData>& lights;
+  const GridSpec& grid;
+
+  size_t index(glm::ivec3 v) const { return grid.index(v); }
+  float opacityAt(glm::ivec3 v) const { return opacity.get<float>(index(v), 0); }
+  glm::vec3 albedoAt(glm::ivec3 v) const { return albedo.vec3At(index(v)); }
+  glm::vec3 normalAt(glm::ivec3 v) const { return normal.vec3At(index(v)); }
+  glm::vec3 emissionAt(glm::ivec3 v) const { return emission->vec3At(index(v)); }
+  shared::LightData lightAt(int i) const { return lights[size_t(i)]; }
+};
+
+}  // namespace
+
+void vct::light_voxels(const StageContext& ctx, BufferSet& buffers) {
+  checkStageMemory(ctx, StageId::vct_light_voxels);
+  const int n = ctx.scene.grid.resolution;
+  const auto lights = voxelLights(ctx.scene);
+  const Buffer* emission = buffers.find(BufferId::common_voxelize_emission);
+  const bool emissive = emission != nullptr;
+  const LightVoxelsVolumes volumes{buffers.at(BufferId::common_voxelize_opacity),
+                                   buffers.at(BufferId::common_voxelize_albedo),
+                                   buffers.at(BufferId::common_voxelize_normal),
+                                   emission,
+                                   lights,
+                                   ctx.scene.grid};
+  const shared::LightVoxelsParams params =
+      lightVoxelsParams(ctx, static_cast<int>(lights.size()), emissive);
+  Buffer radiance(BufferId::vct_light_voxels_radiance, glm::ivec3(n));
+  tbb::parallel_for(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
+    for (int row = rows.begin(); row != rows.end(); ++row)
+      for (int x = 0; x < n; ++x) {
+        const glm::ivec3 v(x, row % n, row / n);
+        const glm::vec4 r = shared::lightVoxel(volumes, v, params);
+        const size_t e = volumes.index(v);
+        for (int c = 0; c < 4; ++c) radiance.set(e, c, r[c]);
+      }
+  });
+  buffers.put(std::move(radiance));
+}
+
+}  // namespace voxgi::cpu

@@ -1,0 +1,46 @@
+// GPU light_voxels stage: shaders/vct/light_voxels.comp runs the shared kernel per voxel on the
+// voxelize buffers uploaded as textures; the radiance volume is read back.
+#include "common/vct/kernel_params.h"
+#include "common/lights.h"
+#include "gpu/program.h"
+#include "gpu/stages.h"
+#include "gpu/volumes.h"
+
+namespace voxgi::gpu {
+
+void vct::light_voxels(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+  const Gl& gl = beginStage(context, ctx, StageId::vct_light_voxels);
+  const int n = ctx.scene.grid.resolution;
+  const auto lights = voxelLights(ctx.scene);
+  const Buffer* emission = buffers.find(BufferId::common_voxelize_emission);
+  const bool emissive = emission != nullptr;
+  const shared::LightVoxelsParams params =
+      lightVoxelsParams(ctx, static_cast<int>(lights.size()), emissive);
+
+  GlBuffer lightBlock(gl, createBlock(gl, params, lights));
+  GlTexture opacity(gl, uploadVolume(gl, buffers.at(BufferId::common_voxelize_opacity)));
+  GlTexture albedo(gl, uploadVolume(gl, buffers.at(BufferId::common_voxelize_albedo)));
+  GlTexture normal(gl, uploadVolume(gl, buffers.at(BufferId::common_voxelize_normal)));
+  GlTexture emissionTexture(gl, emissive ? uploadVolume(gl, *emission) : 0);
+  GlTexture radiance(gl, createVolume(gl, 4, glm::ivec3(n)));
+
+  Program program(gl, {&shaders::vct_light_voxels_comp});
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, lightBlock.get());
+  gl.BindTextureUnit(0, opacity.get());
+  gl.BindTextureUnit(1, albedo.get());
+  gl.BindTextureUnit(2, normal.get());
+  gl.BindTextureUnit(3, emissionTexture.get());
+  gl.BindImageTexture(0, radiance.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  program.use();
+  const auto groups = static_cast<GLuint>((n + 3) / 4);
+  gl.DispatchCompute(groups, groups, groups);
+  gl.MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  gl.check("light_voxels: dispatch");
+
+  Buffer out(BufferId::vct_light_voxels_radiance, glm::ivec3(n));
+  readVolume(gl, radiance.get(), 0, glm::ivec3(n), out);
+  gl.check("light_voxels: reading back");
+  buffers.put(std::move(out));
+}
+
+}  // namespace voxgi::gpu

@@ -1,0 +1,335 @@
+#include "validation/reference/path_trace.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+#include <vector>
+
+#include <tbb/parallel_for.h>
+
+#include "common/ray_scene.h"
+
+namespace voxgi::reference {
+namespace {
+
+using glm::dvec3;
+using glm::vec3;
+constexpr float kPi = std::numbers::pi_v<float>;
+
+// splitmix64 finaliser: the counter-based hash behind every random number.
+uint64_t mix(uint64_t z) {
+  z += 0x9e3779b97f4a7c15ull;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+  return z ^ (z >> 31);
+}
+
+// Random numbers of one (pixel, sample): dimension d is the d-th output of SplitMix64 seeded with
+// key = hash(seed, pixel, sample), independent of threads. One finaliser per number.
+struct Sampler {
+  uint64_t key;
+  uint64_t dimension = 0;
+  float next() { return float(mix(key + 0x9e3779b97f4a7c15ull * ++dimension) >> 40) * 0x1p-24f; }
+};
+
+float luminance(vec3 c) {
+  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
+float maxComponent(vec3 c) {
+  return std::max({c.x, c.y, c.z});
+}
+
+// An orthonormal basis around n (Duff et al. 2017).
+void basis(vec3 n, vec3& t, vec3& b) {
+  const float s = std::copysign(1.0f, n.z);
+  const float a = -1.0f / (s + n.z);
+  const float c = n.x * n.y * a;
+  t = vec3(1.0f + s * n.x * n.x * a, s * c, -s * n.x);
+  b = vec3(c, s + n.y * n.y * a, -n.y);
+}
+
+vec3 around(vec3 n, float cosTheta, float phi) {
+  vec3 t, b;
+  basis(n, t, b);
+  const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
+  return sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b + cosTheta * n;
+}
+
+struct Emitter {
+  vec3 p0, e1, e2, normal, emission;
+  float area;
+};
+
+struct Setup {
+  RayScene rays{RayScene::BuildQuality::high};  // built once, traced millions of times
+  std::vector<std::vector<vec3>> normals;       // per mesh, per triangle: unit right-hand normal
+  std::vector<Emitter> emitters;
+  std::vector<float> emitterCdf;  // by area * luminance
+  float emitterWeight = 0.0f;     // sum of area * luminance
+  float sceneScale = 1.0f;        // bounds diagonal, for the ray offset
+
+  explicit Setup(const Scene& scene) {
+    const auto [lo, hi] = scene.bounds();
+    if (lo.x <= hi.x) sceneScale = float(glm::length(hi - lo));
+    normals.resize(scene.meshes.size());
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+      const Mesh& mesh = scene.meshes[m];
+      const std::vector<vec3> vertices(mesh.positions.begin(), mesh.positions.end());
+      rays.addMesh(unsigned(m), vertices, mesh.triangles);
+      const Material& material = scene.materials[mesh.material];
+      for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const glm::uvec3& tri = mesh.triangles[t];
+        const dvec3 a = mesh.positions[tri.x], b = mesh.positions[tri.y], c = mesh.positions[tri.z];
+        const dvec3 n = glm::cross(b - a, c - a);
+        const double len = glm::length(n);
+        normals[m].push_back(len > 0.0 ? vec3(n / len) : vec3(0.0f));
+        if (material.emissive() && len > 0.0) {
+          emitters.push_back({vec3(a), vec3(b - a), vec3(c - a), vec3(n / len), material.emission,
+                              float(0.5 * len)});
+          emitterWeight += emitters.back().area * luminance(material.emission);
+          emitterCdf.push_back(emitterWeight);
+        }
+      }
+    }
+    rays.commit();
+  }
+};
+
+class Tracer {
+ public:
+  Tracer(const Scene& scene, const Setup& setup, int bounces)
+      : scene_(scene), s_(setup), bounces_(bounces) {}
+
+  uint64_t rays = 0;
+
+  RayScene::Hit intersect(vec3 o, vec3 d) {
+    ++rays;
+    return s_.rays.intersect(o, d);
+  }
+
+  bool visible(vec3 o, vec3 d, float distance) {
+    ++rays;
+    return !s_.rays.occluded(o, d, distance);
+  }
+
+  // Radiance arriving at the camera along (o, d).
+  vec3 radiance(vec3 o, vec3 d, Sampler& rng) {
+    vec3 result(0.0f), throughput(1.0f);
+    RayScene::Hit hit = intersect(o, d);
+    if (!hit.found) return scene_.background;
+    bool countEmission = true;  // the camera ray sees emitters directly
+    float lastPdf = 0.0f;       // solid-angle pdf of the BSDF sample that found `hit`
+    vec3 lastPoint = o;
+    for (int depth = 0;; ++depth) {
+      const Material& m = scene_.materials[scene_.meshes[hit.geometry].material];
+      const vec3 x = o + hit.t * d;
+      const vec3 ng = s_.normals[hit.geometry][hit.primitive];
+      if (m.emissive() && glm::dot(ng, -d) > 0.0f) {  // emitters are one-sided (front face)
+        if (countEmission) {
+          result += throughput * m.emission;
+        } else {  // found by BSDF sampling: weigh against light sampling (power heuristic)
+          const float d2 = glm::dot(x - lastPoint, x - lastPoint);
+          const float lightPdf = luminance(m.emission) / s_.emitterWeight * d2 / glm::dot(ng, -d);
+          result += throughput * m.emission * powerWeight(lastPdf, lightPdf);
+        }
+      }
+      if (bounces_ >= 0 && depth > bounces_) break;  // only the emission of the last hit counted
+      const vec3 n = glm::dot(ng, d) < 0.0f ? ng : -ng;  // two-sided reflection
+      const vec3 wo = -d;
+      const vec3 origin = x + epsilon(x) * n;
+      result += throughput * directLight(origin, n, wo, m, rng);
+
+      // Continue by sampling the BSDF.
+      vec3 wi;
+      float pdf;
+      const vec3 f = sampleBsdf(m, n, wo, rng, wi, pdf);
+      if (pdf <= 0.0f || maxComponent(f) <= 0.0f) break;
+      throughput *= f * glm::dot(n, wi) / pdf;
+      if (bounces_ < 0 && depth >= 3) {  // Russian roulette for unlimited bounces
+        const float q = std::min(0.95f, maxComponent(throughput));
+        if (rng.next() >= q) break;
+        throughput /= q;
+      }
+      const RayScene::Hit next = intersect(origin, wi);
+      if (!next.found) {
+        result += throughput * scene_.background;  // the background is not light-sampled
+        break;
+      }
+      o = origin;
+      d = wi;
+      hit = next;
+      countEmission = false;
+      lastPdf = pdf;
+      lastPoint = origin;
+      // With a bounce limit, the emission found by the last allowed BSDF ray is still direct
+      // light of the vertex before it; the loop head counts it and stops.
+    }
+    return result;
+  }
+
+ private:
+  static float powerWeight(float a, float b) { return a * a / (a * a + b * b); }
+
+  vec3 evalBsdf(const Material& m, vec3 n, vec3 wo, vec3 wi) const {
+    if (glm::dot(n, wi) <= 0.0f) return vec3(0.0f);
+    vec3 f = m.albedo / kPi;
+    if (m.shininess > 0.0f && maxComponent(m.specular) > 0.0f) {
+      const vec3 r = 2.0f * glm::dot(n, wo) * n - wo;
+      const float c = std::max(0.0f, glm::dot(r, wi));
+      f += m.specular * (m.shininess + 2.0f) / (2.0f * kPi) * std::pow(c, m.shininess);
+    }
+    return f;
+  }
+
+  float bsdfPdf(const Material& m, vec3 n, vec3 wo, vec3 wi) const {
+    const float cosTheta = glm::dot(n, wi);
+    if (cosTheta <= 0.0f) return 0.0f;
+    const float ps = specularProbability(m);
+    float pdf = (1.0f - ps) * cosTheta / kPi;
+    if (ps > 0.0f) {
+      const vec3 r = 2.0f * glm::dot(n, wo) * n - wo;
+      const float c = std::max(0.0f, glm::dot(r, wi));
+      pdf += ps * (m.shininess + 1.0f) / (2.0f * kPi) * std::pow(c, m.shininess);
+    }
+    return pdf;
+  }
+
+  static float specularProbability(const Material& m) {
+    if (m.shininess <= 0.0f) return 0.0f;
+    const float s = luminance(m.specular), d = luminance(m.albedo);
+    return s + d > 0.0f ? s / (s + d) : 0.0f;
+  }
+
+  vec3 sampleBsdf(const Material& m, vec3 n, vec3 wo, Sampler& rng, vec3& wi, float& pdf) const {
+    const float choice = rng.next(), u1 = rng.next(), u2 = rng.next();
+    if (choice < specularProbability(m)) {  // Phong lobe around the mirror direction
+      const vec3 r = 2.0f * glm::dot(n, wo) * n - wo;
+      wi = around(r, std::pow(u1, 1.0f / (m.shininess + 1.0f)), 2.0f * kPi * u2);
+    } else {  // cosine-weighted hemisphere
+      wi = around(n, std::sqrt(u1), 2.0f * kPi * u2);
+    }
+    pdf = bsdfPdf(m, n, wo, wi);
+    return evalBsdf(m, n, wo, wi);
+  }
+
+  float falloff(const Light& l, float distance) const {
+    if (l.falloff.kind == Falloff::Kind::inverse_square) return 1.0f / (distance * distance);
+    return 1.0f / (l.falloff.constant + l.falloff.linear * distance +
+                   l.falloff.quadratic * distance * distance);
+  }
+
+  // Next-event estimation: one sample of the emissive triangles (MIS-weighted) plus every
+  // point, spot and directional light.
+  vec3 directLight(vec3 x, vec3 n, vec3 wo, const Material& m, Sampler& rng) {
+    vec3 sum(0.0f);
+    const float pick = rng.next(), u1 = rng.next(), u2 = rng.next();
+    if (!s_.emitters.empty()) {
+      const float target = pick * s_.emitterWeight;
+      const size_t i =
+          std::min(size_t(std::upper_bound(s_.emitterCdf.begin(), s_.emitterCdf.end(), target) -
+                          s_.emitterCdf.begin()),
+                   s_.emitters.size() - 1);
+      const Emitter& e = s_.emitters[i];
+      const float su = std::sqrt(u1);
+      const vec3 p = e.p0 + su * (1.0f - u2) * e.e1 + su * u2 * e.e2;  // uniform on the triangle
+      vec3 toLight = p - x;
+      const float d2 = glm::dot(toLight, toLight);
+      const float dist = std::sqrt(d2);
+      toLight /= dist;
+      const float cosLight = glm::dot(e.normal, -toLight);
+      const vec3 f = evalBsdf(m, n, wo, toLight);
+      if (cosLight > 0.0f && maxComponent(f) > 0.0f && visible(x, toLight, dist * (1.0f - 1e-4f))) {
+        const float lightPdf = luminance(e.emission) / s_.emitterWeight * d2 / cosLight;
+        const float w = powerWeight(lightPdf, bsdfPdf(m, n, wo, toLight));
+        sum += f * e.emission * glm::dot(n, toLight) * w / lightPdf;
+      }
+    }
+    for (const Light& l : scene_.lights) {
+      vec3 wi;
+      float dist = INFINITY;
+      vec3 irradiance = l.intensity;
+      if (l.type == Light::Type::directional) {
+        wi = -vec3(l.direction);
+      } else {
+        wi = vec3(l.position) - x;
+        dist = glm::length(wi);
+        wi /= dist;
+        irradiance *= falloff(l, dist);
+        if (l.type == Light::Type::spot &&
+            glm::dot(-wi, vec3(l.direction)) < std::cos(glm::radians(0.5f * l.spotAngleDeg)))
+          continue;
+      }
+      const vec3 f = evalBsdf(m, n, wo, wi);
+      if (maxComponent(f) <= 0.0f) continue;
+      if (l.castsShadows && !visible(x, wi, dist)) continue;
+      sum += f * irradiance * glm::dot(n, wi);
+    }
+    return sum;
+  }
+
+  const Scene& scene_;
+  // Offset for rays leaving x: float rounding of x grows with |x|; the small scene-relative
+  // term covers hits near the origin of a large scene.
+  float epsilon(vec3 x) const {
+    return 1e-5f * std::max({std::abs(x.x), std::abs(x.y), std::abs(x.z)}) + 1e-7f * s_.sceneScale;
+  }
+
+  const Setup& s_;
+  int bounces_;
+};
+
+}  // namespace
+
+PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  const Setup setup(scene);
+  const Camera& cam = scene.camera;
+  const int w = cam.width, h = cam.height;
+  PathTraceResult result;
+  result.image = Image(w, h);
+  result.variance = Image(w, h);
+  const vec3 forward = glm::normalize(vec3(cam.lookAt - cam.position));
+  const vec3 right = glm::normalize(glm::cross(forward, vec3(cam.up)));
+  const vec3 up = glm::cross(right, forward);
+  const float tanHalf = std::tan(glm::radians(float(cam.fovYDeg)) * 0.5f);
+  const float aspect = float(w) / float(h);
+  std::atomic<uint64_t> rays{0};
+  std::atomic<int> rowsDone{0};
+  tbb::parallel_for(0, h, [&](int y) {
+    if (options.cancel && options.cancel->load()) return;
+    Tracer tracer(scene, setup, options.bounces);
+    for (int x = 0; x < w; ++x) {
+      const uint64_t pixel = uint64_t(y) * uint64_t(w) + uint64_t(x);
+      glm::dvec3 sum(0.0), sum2(0.0);
+      for (int s = 0; s < options.spp; ++s) {
+        Sampler rng{mix(options.seed ^ mix(pixel ^ mix(uint64_t(s) + 0x632be59bd9b4e019ull)))};
+        const float px = (2.0f * (float(x) + rng.next()) / float(w) - 1.0f) * tanHalf * aspect;
+        const float py = (1.0f - 2.0f * (float(y) + rng.next()) / float(h)) * tanHalf;
+        const vec3 dir = glm::normalize(forward + px * right + py * up);
+        const glm::dvec3 l(tracer.radiance(vec3(cam.position), dir, rng));
+        sum += l;
+        sum2 += l * l;
+      }
+      const double n = options.spp;
+      result.image.at(x, y) = vec3(sum / n);
+      result.variance.at(x, y) =
+          n > 1 ? vec3(glm::max(sum2 - sum * sum / n, 0.0) / (n - 1.0) / n) : vec3(0.0f);
+    }
+    rays += tracer.rays;
+    const int done = ++rowsDone;
+    if (options.progress) options.progress(double(done) / h);
+  });
+  if (options.cancel && options.cancel->load()) throw Cancelled();
+  result.rays = rays;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+std::string variancePath(const std::string& image) {
+  const std::filesystem::path p(image);
+  return (p.parent_path() / (p.stem().string() + ".variance" + p.extension().string())).string();
+}
+
+}  // namespace voxgi::reference
