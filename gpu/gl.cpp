@@ -10,7 +10,6 @@ void Gl::load(ProcLoader getProcAddress) {
   name = reinterpret_cast<type>(getProcAddress("gl" #name)); \
   if (name == nullptr) throw GlUnavailable("GL context lacks gl" #name);
 #include "gpu/gl_functions.inc"
-#undef VOXGI_GL
 }
 
 void Gl::check(const char* what) const {

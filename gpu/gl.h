@@ -15,7 +15,6 @@ namespace voxgi::gpu {
 struct Gl {
 #define VOXGI_GL(type, name) type name = nullptr;
 #include "gpu/gl_functions.inc"
-#undef VOXGI_GL
 
   using ProcLoader = void (*(*)(const char*))();
   // Fills every entry; throws GlUnavailable naming the first one the context lacks.

@@ -35,7 +35,7 @@ GLuint compileShader(const Gl& gl, const ShaderSource& source, std::string_view 
                     mapShaderLog(source, log.data()));
 }
 
-Program::Program(const Gl& gl, std::initializer_list<const ShaderSource*> stages) : gl_(gl) {
+Program::Program(const Gl& gl, std::span<const ShaderSource* const> stages) : gl_(gl) {
   id_ = gl.CreateProgram();
   std::vector<GLuint> shaders;
   try {

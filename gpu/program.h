@@ -3,6 +3,7 @@
 #pragma once
 
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -22,7 +23,9 @@ class Program {
  public:
   // `stages`: embedded shaders (shaders/embedded.h); the stage type comes from the file's
   // extension (.vert .geom .frag .comp).
-  Program(const Gl& gl, std::initializer_list<const ShaderSource*> stages);
+  Program(const Gl& gl, std::span<const ShaderSource* const> stages);
+  Program(const Gl& gl, std::initializer_list<const ShaderSource*> stages)
+      : Program(gl, std::span<const ShaderSource* const>(stages.begin(), stages.size())) {}
   Program(const Program&) = delete;
   Program& operator=(const Program&) = delete;
   ~Program();

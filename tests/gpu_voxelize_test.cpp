@@ -1,8 +1,6 @@
 // GPU voxelize against the CPU reference on both GL platforms: the bundled scenes and the hard
 // cases, every buffer compared with its registered comparison.
-#include <map>
 #include <sstream>
-#include <memory>
 
 #include <gtest/gtest.h>
 
@@ -17,14 +15,6 @@
 #include "validation/report.h"
 
 namespace voxgi::test {
-
-gpu::GlContext& glContext(gpu::GlPlatform platform) {
-  static std::map<gpu::GlPlatform, std::unique_ptr<gpu::GlContext>> contexts;
-  auto& c = contexts[platform];
-  if (!c) c = gpu::GlContext::create(platform);
-  return *c;
-}
-
 namespace {
 
 const char* name(gpu::GlPlatform p) {

@@ -1,51 +1,13 @@
-// The embedded shaders: they compile and link on both platforms, the std430 layout of the shared
-// VoxelTriangle matches the C++ struct, and compile errors point at file:line.
-#include <cstddef>
-
+// Compile errors of the embedded shaders point at file:line (tests/layout_test.cpp links every
+// program and checks the std430 layouts).
 #include <gtest/gtest.h>
 
 #include "gpu/program.h"
 #include "shaders/shader_source.h"
-#include "shaders/shared/voxelize_layout.h"
 #include "tests/gl_contexts.h"
 
 namespace voxgi::test {
 namespace {
-
-TEST(Shaders, EveryProgramLinksOnBothPlatforms) {
-  for (gpu::GlPlatform p : {gpu::GlPlatform::osmesa, gpu::GlPlatform::egl}) {
-    gpu::GlContext& context = glContext(p);
-    context.makeCurrent();
-    EXPECT_NO_THROW(gpu::Program(
-        context.gl(), {&shaders::voxelize_vert, &shaders::voxelize_geom, &shaders::voxelize_frag}));
-    EXPECT_NO_THROW(gpu::Program(context.gl(), {&shaders::voxelize_antialiased_comp}));
-    EXPECT_NO_THROW(gpu::Program(context.gl(), {&shaders::voxelize_resolve_comp}));
-  }
-}
-
-TEST(Shaders, VoxelTriangleLayoutMatchesCpp) {
-  gpu::GlContext& context = glContext(gpu::GlPlatform::egl);
-  context.makeCurrent();
-  const gpu::Gl& gl = context.gl();
-  const gpu::Program program(gl, {&shaders::voxelize_antialiased_comp});
-  auto query = [&](const char* variable, GLenum property) {
-    const GLuint index = gl.GetProgramResourceIndex(program.id(), GL_BUFFER_VARIABLE, variable);
-    EXPECT_NE(index, GL_INVALID_INDEX) << variable;
-    GLint value = -1;
-    gl.GetProgramResourceiv(program.id(), GL_BUFFER_VARIABLE, index, 1, &property, 1, nullptr,
-                            &value);
-    return value;
-  };
-  using shared::VoxelTriangle;
-  EXPECT_EQ(query("triangles[0].v0", GL_TOP_LEVEL_ARRAY_STRIDE), GLint(sizeof(VoxelTriangle)));
-  EXPECT_EQ(query("triangles[0].v0", GL_OFFSET), GLint(offsetof(VoxelTriangle, v0)));
-  EXPECT_EQ(query("triangles[0].v1", GL_OFFSET), GLint(offsetof(VoxelTriangle, v1)));
-  EXPECT_EQ(query("triangles[0].v2", GL_OFFSET), GLint(offsetof(VoxelTriangle, v2)));
-  EXPECT_EQ(query("triangles[0].albedo", GL_OFFSET), GLint(offsetof(VoxelTriangle, albedo)));
-  EXPECT_EQ(query("triangles[0].normal", GL_OFFSET), GLint(offsetof(VoxelTriangle, normal)));
-  EXPECT_EQ(query("triangles[0].emission", GL_OFFSET), GLint(offsetof(VoxelTriangle, emission)));
-  EXPECT_EQ(query("triangles[0].info", GL_OFFSET), GLint(offsetof(VoxelTriangle, info)));
-}
 
 TEST(Shaders, CompileErrorsNameTheFileAndLine) {
   gpu::GlContext& context = glContext(gpu::GlPlatform::egl);

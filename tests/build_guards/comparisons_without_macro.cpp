@@ -1,0 +1,2 @@
+// Must not compile (tests/CMakeLists.txt): the comparison list without VOXGI_COMPARISON.
+#include "validation/comparisons.inc"

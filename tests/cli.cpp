@@ -1,0 +1,19 @@
+#include "tests/cli.h"
+
+#include <array>
+#include <cstdio>
+#include <sys/wait.h>
+
+namespace voxgi::test {
+
+CommandResult voxgi(const std::string& args) {
+  const std::string command = std::string(VOXGI_BINARY) + " " + args + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  std::string out;
+  std::array<char, 4096> buffer;
+  while (pipe && fgets(buffer.data(), buffer.size(), pipe)) out += buffer.data();
+  const int status = pipe ? pclose(pipe) : -1;
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+}  // namespace voxgi::test

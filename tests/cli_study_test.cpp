@@ -1,0 +1,71 @@
+// voxgi study end to end: every combination of the sweeps, the CSV and the plot (slow: it path
+// traces and cone traces on both backends).
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/cli.h"
+#include "tests/test_scenes.h"
+
+namespace voxgi::test {
+namespace {
+
+TEST(Cli, StudyWritesEveryCombinationAndThePlot) {
+  const std::string dir = testTempDir(), scene = sourcePath("scenes/cornell_box.json");
+  ASSERT_EQ(voxgi("render " + scene + " --technique path --spp 4 --bounces 1 --image 32 --out " +
+                  dir + "ref.exr")
+                .code,
+            0);
+  // Both backends (llvmpipe through OSMesa): the same image, so the same error.
+  const CommandResult r =
+      voxgi("study " + scene + " --technique vct,path --sweep backend=cpu,gpu --gl osmesa" +
+            " --sweep resolution=16 --sweep spp=1,2 --sweep bounces=1 --image 32 --repeat 1" +
+            " --reference " + dir + "ref.exr --csv " + dir + "s.csv --plot " + dir + "s.png");
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream csv(dir + "s.csv");
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(csv, line);) {
+    lines.push_back(line);
+    std::istringstream fields(line);
+    rows.emplace_back();
+    for (std::string f; std::getline(fields, f, ',');) rows.back().push_back(f);
+  }
+  ASSERT_EQ(lines.size(), 5u);
+  EXPECT_EQ(lines[0].rfind("technique,backend,resolution,spp,bounces,label,seconds,", 0), 0u)
+      << lines[0];
+  EXPECT_EQ(lines[1].rfind("vct,cpu,16,,,backend=cpu resolution=16,", 0), 0u) << lines[1];
+  EXPECT_EQ(lines[2].rfind("vct,gpu,16,,,backend=gpu resolution=16,", 0), 0u) << lines[2];
+  EXPECT_EQ(lines[4].rfind("path,,,2,1,spp=2 bounces=1,", 0), 0u) << lines[4];
+  const auto rmse = std::find(rows[0].begin(), rows[0].end(), "rmse") - rows[0].begin();
+  ASSERT_LT(size_t(rmse), rows[1].size());
+  EXPECT_GT(std::stod(rows[1][size_t(rmse)]), 0.0);
+  EXPECT_NEAR(std::stod(rows[1][size_t(rmse)]), std::stod(rows[2][size_t(rmse)]), 1e-6);
+  int front = 0;
+  for (size_t k = 1; k < lines.size(); ++k) front += lines[k].back() == '1';
+  EXPECT_GE(front, 2);  // pareto_technique, the last column: each technique has a front
+  // The plot is a PNG that matplotlib drew.
+  std::ifstream png(dir + "s.png", std::ios::binary);
+  std::string magic(8, '\0');
+  png.read(magic.data(), 8);
+  EXPECT_EQ(magic, "\x89PNG\r\n\x1a\n");
+  EXPECT_GT(std::filesystem::file_size(dir + "s.png"), 10000u);
+
+  for (const char* bad : {"--sweep cones.step=abc", "--sweep spp=4", "--sweep nokey=1",
+                          "--sweep resolution=100", "--sweep backend=tpu"}) {
+    const CommandResult b = voxgi("study " + scene + " --technique vct --reference " + dir +
+                                  "ref.exr --image 32 --csv " + dir + "x.csv " + bad);
+    EXPECT_EQ(b.code, 2) << bad << "\n" << b.output;
+    EXPECT_EQ(std::count(b.output.begin(), b.output.end(), '\n'), 1) << bad << "\n" << b.output;
+  }
+  const CommandResult size = voxgi("study " + scene + " --reference " + dir + "ref.exr --csv " +
+                                   dir + "x.csv --sweep resolution=16");
+  EXPECT_EQ(size.code, 2) << size.output;
+}
+
+}  // namespace
+}  // namespace voxgi::test

@@ -1,0 +1,114 @@
+// The stage runner (common/pipeline.h): which stages run, what a stage must leave behind, buffers
+// kept apart by stage, and --stage names.
+#include <gtest/gtest.h>
+
+#include "common/error.h"
+#include "common/pipeline.h"
+#include "common/scene_load.h"
+#include "cpu/backend.h"
+#include "tests/test_scenes.h"
+
+namespace voxgi::test {
+namespace {
+
+// A backend whose stages write nothing, or a wrong buffer.
+class BrokenBackend : public StageBackend {
+ public:
+  enum class Fault { nothing, foreign_buffer, unplanned_buffer };
+  explicit BrokenBackend(Fault f) : fault_(f) {}
+  std::string name() const override { return "broken"; }
+  void run(StageId stage, const StageContext& ctx, BufferSet& buffers) override {
+    cpu_.run(stage, ctx, buffers);
+    const glm::ivec3 n(ctx.scene.grid.resolution);
+    if (fault_ == Fault::nothing)
+      for (const BufferSpec* b : stageBuffers(stageSpec(stage))) buffers.take(b->id);
+    if (fault_ == Fault::foreign_buffer) buffers.put(Buffer(BufferId::vct_bounce_radiance, n));
+    if (fault_ == Fault::unplanned_buffer)
+      buffers.put(Buffer(BufferId::common_voxelize_emission, n));
+  }
+
+ private:
+  Fault fault_;
+  cpu::CpuBackend cpu_;
+};
+
+Scene smallScene() {
+  return makeScene(quad(2, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16));
+}
+
+TEST(Pipeline, AStageMustWriteExactlyItsPlannedBuffers) {
+  const Scene scene = smallScene();
+  const Settings settings;
+  const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
+  const StageContext ctx{vct(), scene, settings, tris};
+  const StageSpec& voxelize = stageSpec(StageId::common_voxelize);
+  {
+    BrokenBackend nothing(BrokenBackend::Fault::nothing);
+    BufferSet buffers;
+    const StageOutputs out = runStage(nothing, voxelize, ctx, buffers);
+    EXPECT_EQ(out.missing.size(), 6u);  // all but the emission buffers, which the plan leaves out
+    EXPECT_TRUE(out.unplanned.empty());
+    EXPECT_THROW(runPipeline(nothing, ctx, buffers, &voxelize), std::logic_error);
+  }
+  for (const auto fault :
+       {BrokenBackend::Fault::foreign_buffer, BrokenBackend::Fault::unplanned_buffer}) {
+    BrokenBackend broken(fault);
+    BufferSet buffers;
+    const StageOutputs out = runStage(broken, voxelize, ctx, buffers);
+    EXPECT_TRUE(out.missing.empty());
+    ASSERT_EQ(out.unplanned.size(), 1u);
+    EXPECT_NE(out.describe(voxelize, "broken").find("wrote unplanned"), std::string::npos);
+  }
+  cpu::CpuBackend cpu;
+  BufferSet buffers;
+  EXPECT_TRUE(runStage(cpu, voxelize, ctx, buffers).ok());
+}
+
+// bounce writes its own radiance and pyramid: light_voxels' and mip's stay as they were, and a
+// stage that reads "the radiance" names which one.
+TEST(Pipeline, BuffersAreKeptApartByStage) {
+  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
+  scene.grid.resolution = 16;
+  scene.camera.width = scene.camera.height = 16;
+  Settings settings;
+  settings.vct.bounceCount = 1;
+  const BufferSet all = runCpuUntil(scene, settings, "compose");
+  const BufferSet direct = runCpuUntil(scene, settings, "mip");
+  EXPECT_EQ(all.at(BufferId::vct_light_voxels_radiance).words,
+            direct.at(BufferId::vct_light_voxels_radiance).words);
+  EXPECT_EQ(all.at(BufferId::vct_mip_radiance_mips6).words,
+            direct.at(BufferId::vct_mip_radiance_mips6).words);
+  EXPECT_NE(all.at(BufferId::vct_bounce_radiance).words,
+            all.at(BufferId::vct_light_voxels_radiance).words);
+  for (const auto& [id, b] : all) EXPECT_TRUE(b.spec->id == id) << b.spec->qualifiedName();
+  EXPECT_THROW(direct.at(BufferId::vct_bounce_radiance), std::logic_error);
+}
+
+TEST(Pipeline, RunsWhatThePlanSaysInGraphOrder) {
+  const Scene scene = smallScene();
+  Settings settings;
+  const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
+  std::vector<std::string> names;
+  for (const StageSpec* s : plannedStages(StageContext{vct(), scene, settings, tris}))
+    names.push_back(s->qualifiedName());
+  EXPECT_EQ(names, (std::vector<std::string>{"voxelize", "vct/light_voxels", "vct/mip", "gbuffer",
+                                             "vct/trace_cones", "vct/compose"}));
+  settings.vct.bounceCount = 1;
+  const StageContext bounced{vct(), scene, settings, tris};
+  const auto withBounce = plannedStages(bounced, &stageSpec(StageId::vct_bounce));
+  ASSERT_EQ(withBounce.size(), 4u);
+  EXPECT_EQ(withBounce.back()->id, StageId::vct_bounce);
+}
+
+TEST(Pipeline, StageNamesResolveWithinTheTechnique) {
+  EXPECT_EQ(resolveStage(vct(), "trace_cones").id, StageId::vct_trace_cones);
+  EXPECT_EQ(resolveStage(vct(), "vct/trace_cones").id, StageId::vct_trace_cones);
+  EXPECT_EQ(resolveStage(vct(), "gbuffer").id, StageId::common_gbuffer);
+  EXPECT_EQ(resolveStage(vct(), "vct/gbuffer").id, StageId::common_gbuffer);
+  EXPECT_THROW(resolveStage(vct(), "lpv/trace_cones"), InputError);
+  EXPECT_THROW(resolveStage(vct(), "nonexistent"), InputError);
+  EXPECT_THROW(findTechnique("nonexistent"), InputError);
+}
+
+}  // namespace
+}  // namespace voxgi::test
