@@ -14,7 +14,7 @@ class InputError : public std::runtime_error {
       : std::runtime_error(file + ": " + (field.empty() ? "" : field + ": ") + reason) {}
 };
 
-// Exit codes of the voxgi command (DESIGN.md CLI contract).
+// Exit codes of the voxgi command (docs/architecture.md, "Command line").
 enum ExitCode : int { kExitOk = 0, kExitInternal = 1, kExitBadInput = 2 };
 
 }  // namespace voxgi

@@ -1,6 +1,7 @@
-// The voxel grid convention shared by every stage (DESIGN.md): an axis-aligned cube with `min`
-// corner and edge `size`, N^3 voxels; voxel (i,j,k) covers min + [i,i+1)*h ... with h = size/N;
-// voxel centres at min + (i+0.5)*h. Buffers store voxels x-fastest: index = i + N*(j + N*k).
+// The voxel grid convention shared by every stage (docs/architecture.md, "Conventions"): an
+// axis-aligned cube with `min` corner and edge `size`, N^3 voxels; voxel (i,j,k) covers min +
+// [i,i+1)*h ... with h = size/N; voxel centres at min + (i+0.5)*h. Buffers store voxels x-fastest:
+// index = i + N*(j + N*k).
 #pragma once
 
 #include <cstdint>

@@ -34,7 +34,7 @@ struct Mesh {
   uint32_t material = 0;
 };
 
-// Light falloff: inverse square (physical default) or seed 000's constant-linear-quadratic.
+// Light falloff: inverse square (physical default) or [Kahl 2019]'s constant-linear-quadratic.
 struct Falloff {
   enum class Kind { inverse_square, polynomial } kind = Kind::inverse_square;
   float constant = 1.0f, linear = 0.0f, quadratic = 0.0f;

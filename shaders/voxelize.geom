@@ -1,5 +1,5 @@
 #version 450 core
-// Conservative voxelization, geometry stage (seed 000 §4.4.2 plus conservative expansion):
+// Conservative voxelization, geometry stage ([Kahl 2019, §4.4.2] plus conservative expansion):
 // project the triangle along its dominant axis onto the N x N viewport (one pixel = one voxel
 // column) and push each edge outward by half a pixel's extent along the edge normal
 // (Hasselgren et al., GPU Gems 2 ch. 42), so every column whose closed square the triangle's

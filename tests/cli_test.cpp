@@ -22,7 +22,6 @@
 namespace voxgi::test {
 namespace {
 
-
 TEST(Cli, VoxelizeWritesAlignedGrids) {
   const std::string out = testTempDir() + "cornell.vdb";
   const CommandResult r = voxgi("voxelize " + sourcePath("scenes/cornell_box.json") +
@@ -176,6 +175,46 @@ TEST(Cli, DumpWritesPyramidsAsVdbAndImagesAsExr) {
       voxgi("dump " + scene + " --stage gbuffer --resolution 16 --backend cpu --out " + dir);
   ASSERT_EQ(g.code, 0) << g.output;
   EXPECT_TRUE(std::filesystem::exists(dir + "/gbuffer.pixel_normal.exr"));
+}
+
+// The plan decides what dump writes: a stage it skips is refused (naming why), and --stage all
+// writes each stage it runs under the stage's own name with the stage's own buffers; render's
+// image is compose's colour.
+TEST(Cli, DumpAndRenderFollowThePlan) {
+  const std::string dir = testTempDir(), scene = sourcePath("scenes/bunny.json");
+  const std::string common = " --resolution 16 --image 32 --backend cpu";
+  const CommandResult skipped = voxgi("dump " + scene + " --stage bounce --out " + dir + common);
+  EXPECT_EQ(skipped.code, 2) << skipped.output;
+  EXPECT_EQ(std::count(skipped.output.begin(), skipped.output.end(), '\n'), 1) << skipped.output;
+  EXPECT_NE(skipped.output.find("the plan skips vct/bounce (bounce.count=0"), std::string::npos)
+      << skipped.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "bounce.vdb"));
+
+  const CommandResult all = voxgi("dump " + scene + " --stage all --out " + dir + common);
+  ASSERT_EQ(all.code, 0) << all.output;
+  for (const char* file : {"voxelize.vdb", "light_voxels.vdb", "mip.vdb", "gbuffer.object_id.exr",
+                           "trace_cones.indirect_diffuse.exr", "compose.color.exr"})
+    EXPECT_TRUE(std::filesystem::exists(dir + file)) << file << "\n" << all.output;
+  EXPECT_FALSE(std::filesystem::exists(dir + "bounce.vdb"));
+  openvdb::initialize();
+  openvdb::io::File file(dir + "light_voxels.vdb");
+  file.open();
+  const auto radiance = file.readGrid("radiance");
+  EXPECT_EQ(radiance->metaValue<std::string>("voxgi_stage"), "vct/light_voxels");
+
+  const CommandResult render =
+      voxgi("render " + scene + " --technique vct --out " + dir + "render.exr" + common);
+  ASSERT_EQ(render.code, 0) << render.output;
+  const Image rendered = readExr(dir + "render.exr"), composed = readExr(dir + "compose.color.exr");
+  EXPECT_EQ(rendered.pixels, composed.pixels);
+
+  const CommandResult qualified =
+      voxgi("dump " + scene + " --stage vct/trace_cones --out " + dir + "q" + common);
+  EXPECT_EQ(qualified.code, 0) << qualified.output;
+  const CommandResult unknown = voxgi("dump " + scene + " --stage lpv/propagate --out " + dir);
+  EXPECT_EQ(unknown.code, 2) << unknown.output;
+  EXPECT_NE(unknown.output.find("no stage 'lpv/propagate' in vct"), std::string::npos)
+      << unknown.output;
 }
 
 }  // namespace

@@ -3,6 +3,11 @@
 #include <map>
 #include <memory>
 
+#include "common/pipeline.h"
+#include "cpu/backend.h"
+#include "gpu/backend.h"
+#include "tests/test_scenes.h"
+
 namespace voxgi::test {
 
 gpu::GlContext& glContext(gpu::GlPlatform platform) {
@@ -10,6 +15,17 @@ gpu::GlContext& glContext(gpu::GlPlatform platform) {
   auto& c = contexts[platform];
   if (!c) c = gpu::GlContext::create(platform);
   return *c;
+}
+
+std::vector<validation::StageReport> diffVct(const Scene& scene, const Settings& settings,
+                                             gpu::GlContext& context,
+                                             const std::vector<std::string>& stages) {
+  const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
+  std::vector<const StageSpec*> specs;
+  for (const std::string& s : stages) specs.push_back(&resolveStage(vct(), s));
+  cpu::CpuBackend cpu;
+  gpu::GpuBackend gpu(context);
+  return validation::diffStages(StageContext{vct(), scene, settings, tris}, cpu, gpu, specs, "");
 }
 
 }  // namespace voxgi::test

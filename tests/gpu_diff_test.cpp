@@ -23,7 +23,8 @@ class FaultyBackend : public StageBackend {
     if (drop)
       for (const BufferSpec* b : stageBuffers(stageSpec(stage))) buffers.take(b->id);
     if (extra)
-      buffers.put(Buffer(BufferId::common_voxelize_emission, glm::ivec3(ctx.scene.grid.resolution)));
+      buffers.put(
+          Buffer(BufferId::common_voxelize_emission, glm::ivec3(ctx.scene.grid.resolution)));
   }
 
  private:
@@ -73,13 +74,13 @@ TEST(GpuDiff, TheRealBackendsPassAndSkippedStagesSaySo) {
   const auto r = diffVoxelize(cpu, gpu);
   EXPECT_TRUE(r[0].pass);
   for (const auto& b : r[0].buffers)
-    if (b.buffer.starts_with("emission")) EXPECT_NE(b.status.find("not planned"), std::string::npos);
+    if (b.buffer.starts_with("emission"))
+      EXPECT_NE(b.status.find("not planned"), std::string::npos);
   const Scene scene = makeScene(quad(2, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16));
   const Settings settings;  // bounce.count=0
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
-  const auto skipped =
-      validation::diffStages(StageContext{vct(), scene, settings, tris}, cpu, gpu,
-                             {&stageSpec(StageId::vct_bounce)}, "");
+  const auto skipped = validation::diffStages(StageContext{vct(), scene, settings, tris}, cpu, gpu,
+                                              {&stageSpec(StageId::vct_bounce)}, "");
   ASSERT_EQ(skipped.size(), 1u);
   EXPECT_NE(skipped[0].skipped.find("bounce.count=0"), std::string::npos) << skipped[0].skipped;
 }

@@ -42,7 +42,10 @@ struct Field {
   const char* name;
   size_t offset;  // offsetof in the C++ struct
 };
-#define VOXGI_FIELD(type, member) Field{#member, offsetof(type, member)}
+#define VOXGI_FIELD(type, member)   \
+  Field {                           \
+#member, offsetof(type, member) \
+  }
 
 // A struct as a block member: `variable` is its GLSL name ("params", or "lights[0]" for an array
 // whose first element starts at `base` bytes into the block and strides sizeof(type)).

@@ -1,4 +1,5 @@
-// Every CPU stage is bit-identical for any thread count and run (DESIGN.md determinism policy).
+// Every CPU stage is bit-identical for any thread count and run (docs/architecture.md,
+// "Determinism").
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>

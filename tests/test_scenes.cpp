@@ -7,7 +7,6 @@
 #include "common/pipeline.h"
 #include "common/voxel_triangles.h"
 #include "cpu/backend.h"
-#include "gpu/backend.h"
 
 namespace voxgi::test {
 
@@ -70,17 +69,6 @@ BufferSet runCpuUntil(const Scene& scene, const Settings& settings, std::string_
 
 const Technique& vct() {
   return findTechnique("vct");
-}
-
-std::vector<validation::StageReport> diffVct(const Scene& scene, const Settings& settings,
-                                             gpu::GlContext& context,
-                                             const std::vector<std::string>& stages) {
-  const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
-  std::vector<const StageSpec*> specs;
-  for (const std::string& s : stages) specs.push_back(&resolveStage(vct(), s));
-  cpu::CpuBackend cpu;
-  gpu::GpuBackend gpu(context);
-  return validation::diffStages(StageContext{vct(), scene, settings, tris}, cpu, gpu, specs, "");
 }
 
 glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v) {

@@ -8,8 +8,6 @@
 #include "common/buffer.h"
 #include "common/scene.h"
 #include "common/stage.h"
-#include "gpu/context.h"
-#include "validation/diff.h"
 
 namespace voxgi::test {
 
@@ -30,11 +28,6 @@ BufferSet runCpu(const Scene& scene, VoxelizeMode mode);
 BufferSet runCpuUntil(const Scene& scene, const Settings& settings, std::string_view last);
 // The voxel cone tracing technique.
 const Technique& vct();
-// `voxgi diff` of vct's stages named in `stages` (each resolved as --stage is), CPU against the
-// GPU backend on `context`.
-std::vector<validation::StageReport> diffVct(const Scene& scene, const Settings& settings,
-                                             gpu::GlContext& context,
-                                             const std::vector<std::string>& stages);
 // Voxel v's components of a volume buffer.
 glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v);
 // FNV-1a over every buffer's qualified name and words.

@@ -1,5 +1,5 @@
-// The voxgi command line (DESIGN.md "CLI contract"). Exit codes: 0 ok, 1 internal failure or a
-// failed diff, 2 bad input (one line naming the file and field).
+// The voxgi command line (docs/architecture.md, "Command line"). Exit codes: 0 ok, 1 internal
+// failure or a failed diff, 2 bad input (one line naming the file and field).
 #include <atomic>
 #include <chrono>
 #include <csignal>

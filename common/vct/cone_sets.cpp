@@ -28,8 +28,8 @@ std::vector<Cone> equal7() {
   return cones;
 }
 
-// Seed 001: 60-degree cones, one along the normal (weight pi/4 of pi) and five at 60 degrees from
-// it, 72 degrees apart (3 pi / 20 each).
+// [Villegas 2017]: 60-degree cones, one along the normal (weight pi/4 of pi) and five at 60 degrees
+// from it, 72 degrees apart (3 pi / 20 each).
 std::vector<Cone> villegas6() {
   const double aperture = kPi / 3.0;
   std::vector<Cone> cones{cone(0.0, 0.0, aperture, 0.25)};
@@ -37,7 +37,7 @@ std::vector<Cone> villegas6() {
   return cones;
 }
 
-// Seed 000 §5.4.4: 0.55 rad cones, front and four intermediate at 45 degrees (kahl5), plus four
+// [Kahl 2019, §5.4.4]: 0.55 rad cones, front and four intermediate at 45 degrees (kahl5), plus four
 // side cones in the tangent plane between them (kahl9). The seed sums the cones unweighted; equal
 // weights 1/count keep that shape and a white environment's value.
 std::vector<Cone> kahl(bool sides) {

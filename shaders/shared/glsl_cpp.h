@@ -33,7 +33,9 @@
 // them VOLUME_FN with VOLUMES_IN as the first parameter, passes VOLUMES on, and reads with
 // FETCH(name)(args).
 #ifdef __cplusplus
-#define VOLUME_FN template <class Volumes> inline
+#define VOLUME_FN          \
+  template <class Volumes> \
+  inline
 #define VOLUMES_IN const Volumes &volumes,
 #define VOLUMES volumes,
 #define FETCH(fn) volumes.fn

@@ -1,5 +1,5 @@
 // Analytic lights shared by light_voxels (per voxel) and compose (per pixel): the std430 light
-// record and the irradiance a light delivers at a point, with seed 000 §2.1.5's falloff models.
+// record and the irradiance a light delivers at a point, with [Kahl 2019, §2.1.5]'s falloff models.
 // Same semantics as the path tracer (validation/reference/path_trace.cpp): hard spot cut-off at
 // half the spot angle, falloff on world-space distance.
 #ifndef VOXGI_LIGHTING_H
@@ -50,9 +50,9 @@ VOXGI_FN vec3 lightIrradiance(LightData l, vec3 p, float voxelSize, OUT(vec3) to
   return e;
 }
 
-// Villegas' normal-weighted attenuation (seed 001 §2.1): per-face cosines D = (l.x, l.y, l.z),
-// each taken on the side the normal points to, weighted by W = n^2. Equals max(n.l, 0) when n is
-// an axis; is positive wherever a face of the voxel the normal leans toward sees the light.
+// Villegas' normal-weighted attenuation ([Villegas 2017, §2.1]): per-face cosines D = (l.x, l.y,
+// l.z), each taken on the side the normal points to, weighted by W = n^2. Equals max(n.l, 0) when n
+// is an axis; is positive wherever a face of the voxel the normal leans toward sees the light.
 VOXGI_FN float normalWeightedAttenuation(vec3 n, vec3 l) {
   precise vec3 w = n * n;
   precise vec3 d = vec3(n.x > 0.0f ? max(l.x, 0.0f) : max(-l.x, 0.0f),

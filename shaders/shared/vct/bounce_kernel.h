@@ -1,8 +1,8 @@
-// One diffuse bounce per voxel (seed 001 "Voxel Global Illumination", seed 003 §4.4.3), shared by
-// cpu/vct/bounce.cpp and shaders/vct/bounce.comp: the diffuse cone set from the voxel's centre over
-// its normal hemisphere gathers E / pi from the pyramid of the previous bounce, which times the
-// albedo is added to light_voxels' radiance. Reads FETCH(directAt|albedoAt|normalAt) besides the
-// cone tracer's FETCH(pyramidAt|coneAt).
+// One diffuse bounce per voxel ([Villegas 2017, "Voxel Global Illumination"], [Salm 2015, §4.4.3]),
+// shared by cpu/vct/bounce.cpp and shaders/vct/bounce.comp: the diffuse cone set from the voxel's
+// centre over its normal hemisphere gathers E / pi from the pyramid of the previous bounce, which
+// times the albedo is added to light_voxels' radiance. Reads FETCH(directAt|albedoAt|normalAt)
+// besides the cone tracer's FETCH(pyramidAt|coneAt).
 #ifndef VOXGI_BOUNCE_KERNEL_H
 #define VOXGI_BOUNCE_KERNEL_H
 #include "cone_kernel.h"

@@ -1,5 +1,5 @@
-// Voxel cone tracing (seed 001 §4, seed 000 §4.3.2 and §5.4.4), shared by the trace_cones and
-// bounce stages on both backends. A cone marches from the surface, sampling the
+// Voxel cone tracing ([Villegas 2017, §4], [Kahl 2019, §4.3.2 and §5.4.4]), shared by the
+// trace_cones and bounce stages on both backends. A cone marches from the surface, sampling the
 // radiance pyramid at the level whose voxels match its diameter (quadrilinear: trilinear in two
 // levels, blended), and composites premultiplied samples front to back. Volumes are read with
 // FETCH(pyramidAt) (level 0: the radiance volume), FETCH(cellEmpty) and FETCH(coneAt).
@@ -18,8 +18,8 @@ struct ConeHit {
 };
 
 const int kMarchRadiance = 0;
-const int kMarchFirstHit = 1;    // seed 000 §5.4.4: stop at the first sample with opacity > 1/100
-const int kMarchShadow = 2;      // opacity only
+const int kMarchFirstHit = 1;  // [Kahl 2019, §5.4.4]: stop at the first sample with opacity > 1/100
+const int kMarchShadow = 2;    // opacity only
 const int kMarchShadowKahl = 3;  // opacity times smoothstep(0, max distance, sqrt(t) strength)
 
 VOXGI_FN vec4 lerp4(vec4 a, vec4 b, float t) {
@@ -136,7 +136,7 @@ VOLUME_FN ConeHit marchCone(VOLUMES_IN vec3 origin, vec3 dir, float tanHalf, flo
     vec4 s = sampleCone(VOLUMES q, diameter, dir, params);
     float a = min(s.a, 1.0f);
     if (a > 0.0f) {
-      // Kahl's shadow falloff replaces the step correction (seed 000 §5.4.4).
+      // Kahl's shadow falloff replaces the step correction ([Kahl 2019, §5.4.4]).
       precise float corrected = kind == kMarchShadowKahl
                                     ? a * smoothstep01(sqrt(t) * params.shadow.y / maxDistance)
                                 : beta == 1.0f || a >= 1.0f ? a

@@ -39,7 +39,7 @@ struct PixelLight {
   vec3 directSpecular;     // sum over lights of E cos V (n+2)/(2 pi) max(r.l, 0)^n
   vec3 indirectDiffuse;    // cone-traced E / pi
   vec3 indirectSpecular;   // cone-traced radiance around the mirror direction
-  float ambientOcclusion;  // delta of seed 001 §4.2, weighted over the diffuse cones
+  float ambientOcclusion;  // delta of [Villegas 2017, §4.2], weighted over the diffuse cones
 };
 
 // What shaders/vct/trace_cones.comp writes per pixel (std430, 80 bytes; PixelLight's vec3s would

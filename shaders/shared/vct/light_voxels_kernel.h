@@ -1,8 +1,8 @@
-// Direct light per voxel (seed 001 §2): outgoing diffuse radiance from every analytic light,
-// attenuated by the plain cosine or Villegas' normal-weighted form, times the voxel's visibility
-// toward the light found by marching the opacity volume (hard or soft, §2.2), plus emission (§2.3).
-// Shared by cpu/vct/light_voxels.cpp and shaders/vct/light_voxels.comp. Volumes are read through
-// FETCH(opacityAt|albedoAt|normalAt|emissionAt|lightAt) (glsl_cpp.h).
+// Direct light per voxel ([Villegas 2017, §2]): outgoing diffuse radiance from every analytic
+// light, attenuated by the plain cosine or Villegas' normal-weighted form, times the voxel's
+// visibility toward the light found by marching the opacity volume (hard or soft, §2.2), plus
+// emission (§2.3). Shared by cpu/vct/light_voxels.cpp and shaders/vct/light_voxels.comp. Volumes
+// are read through FETCH(opacityAt|albedoAt|normalAt|emissionAt|lightAt) (glsl_cpp.h).
 #ifndef VOXGI_LIGHT_VOXELS_KERNEL_H
 #define VOXGI_LIGHT_VOXELS_KERNEL_H
 #include "../lighting.h"
@@ -44,7 +44,8 @@ VOLUME_FN float voxelVisibility(VOLUMES_IN vec3 p, vec3 n, vec3 toLight, float d
     if (mode == kVoxelShadowHard) {
       if (a >= 0.5f) return 0.0f;
     } else {
-      // Seed 001 §2.2.1: nu += (1 - nu) kappa / t per collision, scaled by the voxel's opacity.
+      // [Villegas 2017, §2.2.1]: nu += (1 - nu) kappa / t per collision, scaled by the voxel's
+      // opacity.
       precise float hit = min(params.values.y * a / (t + offset), 1.0f);
       precise float next = occlusion + (1.0f - occlusion) * hit;
       occlusion = next;

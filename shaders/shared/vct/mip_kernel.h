@@ -3,10 +3,10 @@
 // below (the radiance volume for level 1, where `face` is ignored).
 //
 // Isotropic: the mean of the 8 children.
-// Anisotropic (seed 003 §4.4.2, seed 001 §3): face f holds the voxel as seen by a cone travelling
-// along f (+x, -x, +y, -y, +z, -z). Each of the 4 child pairs along f's axis is composited front
-// to back — front = the child the cone reaches first (lower coordinate for a + face) — and the 4
-// results are averaged: c = front + (1 - front.a) * back.
+// Anisotropic ([Salm 2015, §4.4.2], [Villegas 2017, §3]): face f holds the voxel as seen by a cone
+// travelling along f (+x, -x, +y, -y, +z, -z). Each of the 4 child pairs along f's axis is
+// composited front to back — front = the child the cone reaches first (lower coordinate for a +
+// face) — and the 4 results are averaged: c = front + (1 - front.a) * back.
 #ifndef VOXGI_MIP_KERNEL_H
 #define VOXGI_MIP_KERNEL_H
 #include "../glsl_cpp.h"

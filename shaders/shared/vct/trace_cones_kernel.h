@@ -49,7 +49,7 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
       precise float lobe = (shininess + 2.0f) * (0.5f * kInvPi) * powApprox(rl, shininess);
       r.directSpecular = r.directSpecular + arriving * lobe;
       if (params.modes.w == 1) {
-        // Seed 000 eq. 5.6: (1 - max(0, angle - grace) / pi)^q with grace = 0.008 pi shininess.
+        // [Kahl 2019, eq. 5.6]: (1 - max(0, angle - grace) / pi)^q with grace = 0.008 pi shininess.
         precise float late = max(acosApprox(rl) - params.specular.y * shininess, 0.0f);
         lightAngle = lightAngle + powApprox(1.0f - late * kInvPi, params.specular.x);
       }
@@ -57,7 +57,7 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
   }
   int diffuseKind = params.modes.y == 1 ? kMarchFirstHit : kMarchRadiance;
   r.indirectDiffuse = gatherDiffuse(VOLUMES origin, n, diffuseKind, params, r.ambientOcclusion);
-  // Seed 000 eq. 5.9 darkens first-hit diffuse light by the smallest shadow-cone visibility.
+  // [Kahl 2019, eq. 5.9] darkens first-hit diffuse light by the smallest shadow-cone visibility.
   if (params.modes.y == 1) r.indirectDiffuse = r.indirectDiffuse * minVisibility;
   if (specular) {
     ConeHit h =
