@@ -1,9 +1,8 @@
+#include "common/parallel.h"
 #include "common/voxel_triangles.h"
 
 #include <algorithm>
 #include <cmath>
-
-#include <tbb/parallel_for.h>
 
 #include "shaders/shared/voxelize_kernel.h"
 
@@ -99,7 +98,7 @@ VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid) {
     for (size_t b = 0; b < scene.meshes[mi].triangles.size(); b += chunkSize)
       chunks.push_back({mi, b, std::min(b + chunkSize, scene.meshes[mi].triangles.size()), {}, {}});
   const double lo = -1.0, hi = grid.resolution + 1.0;
-  tbb::parallel_for(size_t(0), chunks.size(), [&](size_t ci) {
+  parallelFor(size_t(0), chunks.size(), [&](size_t ci) {
     Chunk& chunk = chunks[ci];
     const Mesh& mesh = scene.meshes[chunk.mesh];
     const Material& material = scene.materials[mesh.material];

@@ -1,7 +1,7 @@
 // CPU gbuffer stage: one Embree ray through every pixel centre; the nearest hit's position,
 // facing normal and material go to the pixel buffers. Rows are independent tasks.
-#include <tbb/parallel_for.h>
 
+#include "common/parallel.h"
 #include "common/camera_geometry.h"
 #include "common/ray_scene.h"
 #include "cpu/stages.h"
@@ -29,7 +29,7 @@ void common::gbuffer(const StageContext& ctx, BufferSet& buffers) {
   Buffer emission = emissive ? Buffer(BufferId::common_gbuffer_pixel_emission, extent) : Buffer();
   Buffer objectId(BufferId::common_gbuffer_object_id, extent);
   Buffer primitiveId(BufferId::common_gbuffer_primitive_id, extent);
-  tbb::parallel_for(0, cam.height, [&](int y) {
+  parallelFor(0, cam.height, [&](int y) {
     for (int x = 0; x < cam.width; ++x) {
       const glm::vec3 d = cam.pixelDirection(x, y);
       const RayScene::Hit hit = rays.intersect(cam.origin, d);

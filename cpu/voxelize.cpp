@@ -4,8 +4,8 @@
 #include <limits>
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
+#include "common/parallel.h"
 #include "common/error.h"
 #include "cpu/stages.h"
 #include "shaders/shared/voxelize_kernel.h"
@@ -98,7 +98,7 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
   Accumulator acc{grid, weight, albedoSum, normalSum, emissive ? &emissionSum : nullptr};
 
   const auto& tris = ctx.triangles.triangles;
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, tris.size(), 64), [&](const auto& range) {
+  parallelFor(tbb::blocked_range<size_t>(0, tris.size(), 64), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
       if (antialiased)
         antialiasedTriangle(tris[i], n, acc);
@@ -112,28 +112,27 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
   Buffer normal(BufferId::common_voxelize_normal, extent);
   Buffer emission = emissive ? Buffer(BufferId::common_voxelize_emission, extent) : Buffer();
   std::atomic<bool> tooHeavy{false};
-  tbb::parallel_for(
-      tbb::blocked_range<size_t>(0, weight.elementCount(), 4096), [&](const auto& range) {
-        for (size_t e = range.begin(); e != range.end(); ++e) {
-          const uint32_t w = weight.words[e];
-          if (w > shared::kMaxWeightSum) tooHeavy = true;
-          opacity.set(e, 0, shared::resolveOpacity(w, antialiased));
-          auto sum3 = [&](const Buffer& b) {
-            return glm::uvec3(b.words[3 * e], b.words[3 * e + 1], b.words[3 * e + 2]);
-          };
-          const glm::vec3 a = shared::resolveAverage(sum3(albedoSum), w);
-          const glm::vec3 nm = shared::resolveNormal(glm::ivec3(sum3(normalSum)), w);
-          for (int c = 0; c < 3; ++c) {
-            albedo.set(e, c, a[c]);
-            normal.set(e, c, nm[c]);
-          }
-          if (emissive) {
-            const glm::vec3 em =
-                shared::resolveEmission(sum3(emissionSum), w, ctx.triangles.emissionScale);
-            for (int c = 0; c < 3; ++c) emission.set(e, c, em[c]);
-          }
-        }
-      });
+  parallelFor(tbb::blocked_range<size_t>(0, weight.elementCount(), 4096), [&](const auto& range) {
+    for (size_t e = range.begin(); e != range.end(); ++e) {
+      const uint32_t w = weight.words[e];
+      if (w > shared::kMaxWeightSum) tooHeavy = true;
+      opacity.set(e, 0, shared::resolveOpacity(w, antialiased));
+      auto sum3 = [&](const Buffer& b) {
+        return glm::uvec3(b.words[3 * e], b.words[3 * e + 1], b.words[3 * e + 2]);
+      };
+      const glm::vec3 a = shared::resolveAverage(sum3(albedoSum), w);
+      const glm::vec3 nm = shared::resolveNormal(glm::ivec3(sum3(normalSum)), w);
+      for (int c = 0; c < 3; ++c) {
+        albedo.set(e, c, a[c]);
+        normal.set(e, c, nm[c]);
+      }
+      if (emissive) {
+        const glm::vec3 em =
+            shared::resolveEmission(sum3(emissionSum), w, ctx.triangles.emissionScale);
+        for (int c = 0; c < 3; ++c) emission.set(e, c, em[c]);
+      }
+    }
+  });
   if (acc.overflow || tooHeavy)
     throw InputError(ctx.scene.file, "meshes",
                      "more than 32768 voxel faces of surface fall into one voxel (fixed-point "

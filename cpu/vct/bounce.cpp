@@ -2,8 +2,8 @@
 // pyramid again, bounce.count times. Each voxel is written by one task, so any thread count gives
 // the same bits.
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
+#include "common/parallel.h"
 #include "common/vct/kernel_params.h"
 #include "common/vct/radiance_buffers.h"
 #include "cpu/vct/cone_volumes.h"
@@ -55,7 +55,7 @@ void vct::bounce(const StageContext& ctx, BufferSet& buffers) {
                                  setup.lights, setup.cones);
       const BounceVolumes volumes{previous, direct, buffers.at(BufferId::common_voxelize_albedo),
                                   buffers.at(BufferId::common_voxelize_normal), ctx.scene.grid};
-      tbb::parallel_for(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
+      parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
         for (int row = rows.begin(); row != rows.end(); ++row)
           for (int x = 0; x < n; ++x) {
             const glm::ivec3 v(x, row % n, row / n);

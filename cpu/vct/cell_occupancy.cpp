@@ -1,9 +1,9 @@
+#include "common/parallel.h"
 #include "cpu/vct/cell_occupancy.h"
 
 #include <algorithm>
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 namespace voxgi::cpu {
 
@@ -14,7 +14,7 @@ CellOccupancy::CellOccupancy(const uint32_t* voxels, int s, int wordsPerVoxel)
   // by one towards +1 along x, then y, then z. Each task owns whole slices, so the result does
   // not depend on the thread count.
   std::vector<uint8_t> alongX(side * n * n), alongXY(side * side * n);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n * n), [&](const auto& rows) {
+  parallelFor(tbb::blocked_range<size_t>(0, n * n), [&](const auto& rows) {
     for (size_t row = rows.begin(); row != rows.end(); ++row) {
       uint8_t previous = 0;
       for (size_t c = 0; c < side; ++c) {
@@ -28,7 +28,7 @@ CellOccupancy::CellOccupancy(const uint32_t* voxels, int s, int wordsPerVoxel)
       }
     }
   });
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, n), [&](const auto& slices) {
+  parallelFor(tbb::blocked_range<size_t>(0, n), [&](const auto& slices) {
     for (size_t z = slices.begin(); z != slices.end(); ++z)
       for (size_t y = 0; y < side; ++y)
         for (size_t c = 0; c < side; ++c)
@@ -38,7 +38,7 @@ CellOccupancy::CellOccupancy(const uint32_t* voxels, int s, int wordsPerVoxel)
   // 64 consecutive cells per word; a word may straddle slices, so words, not slices, are tasks.
   const size_t cells = side * side * side;
   bits_.assign((cells + 63) / 64, 0u);
-  tbb::parallel_for(tbb::blocked_range<size_t>(0, bits_.size()), [&](const auto& range) {
+  parallelFor(tbb::blocked_range<size_t>(0, bits_.size()), [&](const auto& range) {
     for (size_t w = range.begin(); w != range.end(); ++w)
       for (size_t c = w * 64; c < std::min(cells, w * 64 + 64); ++c) {
         const size_t z = c / (side * side), plane = c % (side * side);

@@ -1,7 +1,7 @@
 // CPU compose stage: the shared kernel (shaders/shared/vct/compose_kernel.h) per pixel.
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
+#include "common/parallel.h"
 #include "cpu/stages.h"
 #include "shaders/shared/vct/compose_kernel.h"
 
@@ -32,7 +32,7 @@ void vct::compose(const StageContext& ctx, BufferSet& buffers) {
                *indirectSpecular = buffers.find(vct_trace_cones_indirect_specular);
   Buffer color(BufferId::vct_compose_color, objectId.extent);
   const int width = objectId.extent.x;
-  tbb::parallel_for(tbb::blocked_range<int>(0, objectId.extent.y), [&](const auto& rows) {
+  parallelFor(tbb::blocked_range<int>(0, objectId.extent.y), [&](const auto& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y)
       for (int x = 0; x < width; ++x) {
         const size_t e = size_t(y) * size_t(width) + size_t(x);

@@ -1,8 +1,8 @@
 // CPU light_voxels stage: the shared kernel (shaders/shared/vct/light_voxels_kernel.h) per voxel.
 // Each voxel is written by exactly one task, so the result does not depend on the thread count.
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
+#include "common/parallel.h"
 #include "common/vct/kernel_params.h"
 #include "common/lights.h"
 #include "cpu/stages.h"
@@ -44,7 +44,7 @@ void vct::light_voxels(const StageContext& ctx, BufferSet& buffers) {
   const shared::LightVoxelsParams params =
       lightVoxelsParams(ctx, static_cast<int>(lights.size()), emissive);
   Buffer radiance(BufferId::vct_light_voxels_radiance, glm::ivec3(n));
-  tbb::parallel_for(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
+  parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
     for (int row = rows.begin(); row != rows.end(); ++row)
       for (int x = 0; x < n; ++x) {
         const glm::ivec3 v(x, row % n, row / n);

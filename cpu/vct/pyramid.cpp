@@ -1,10 +1,10 @@
 // Pyramids on the CPU (cpu/vct/pyramid.h): the isotropic shared kernel per voxel, the directional
 // one unrolled over rows. Every voxel is written by one task, so any thread count gives the same
 // bits.
+#include "common/parallel.h"
 #include "cpu/vct/pyramid.h"
 
 #include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include "common/mips.h"
 #include "shaders/shared/vct/mip_kernel.h"
@@ -67,7 +67,7 @@ inline void compositeFace(const float (&children)[8][4], uint32_t* out) {
 void anisotropicLevel(const uint32_t* src, int srcSize, bool fromBase, uint32_t* dst, int s) {
   const size_t srcWidth = size_t(srcSize) * (fromBase ? 1 : shared::kFaces);
   const size_t dstWidth = size_t(s) * shared::kFaces;
-  tbb::parallel_for(tbb::blocked_range<int>(0, s * s), [&](const auto& rows) {
+  parallelFor(tbb::blocked_range<int>(0, s * s), [&](const auto& rows) {
     for (int row = rows.begin(); row != rows.end(); ++row) {
       const size_t y = size_t(row % s), z = size_t(row / s);
       // Child rows (dy, dz) of this parent row; face f's children lie f * srcSize voxels on.
@@ -118,7 +118,7 @@ void buildPyramid(const BufferSpec& spec, const Buffer& radiance, int n, Buffer&
     const Children children{
         level == 1 ? radiance.words.data() : out.words.data() + 4 * mipLevelOffset(n, level - 1, 1),
         2 * s};
-    tbb::parallel_for(tbb::blocked_range<int>(0, s * s), [&](const auto& rows) {
+    parallelFor(tbb::blocked_range<int>(0, s * s), [&](const auto& rows) {
       for (int row = rows.begin(); row != rows.end(); ++row)
         for (int x = 0; x < s; ++x) {
           const glm::vec4 r = shared::mipIsotropic(children, glm::ivec3(x, row % s, row / s));

@@ -1,8 +1,8 @@
 // CPU trace_cones stage: the shared kernel (shaders/shared/vct/trace_cones_kernel.h) per pixel.
 // Each pixel is written by one task, so the image does not depend on the thread count.
 #include <tbb/blocked_range2d.h>
-#include <tbb/parallel_for.h>
 
+#include "common/parallel.h"
 #include "common/vct/kernel_params.h"
 #include "common/vct/radiance_buffers.h"
 #include "cpu/vct/cone_volumes.h"
@@ -36,7 +36,7 @@ void vct::trace_cones(const StageContext& ctx, BufferSet& buffers) {
   // 8x8 tiles: neighbouring pixels' cones read the same voxels (cache), and small tasks balance
   // pixels of very different cost (background, early-terminating cones).
   const tbb::blocked_range2d<int> tiles(0, extent.y, 8, 0, extent.x, 8);
-  tbb::parallel_for(tiles, [&](const tbb::blocked_range2d<int>& tile) {
+  parallelFor(tiles, [&](const tbb::blocked_range2d<int>& tile) {
     for (int y = tile.rows().begin(); y != tile.rows().end(); ++y)
       for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) {
         const size_t e = size_t(y) * size_t(extent.x) + size_t(x);

@@ -1,3 +1,4 @@
+#include "common/parallel.h"
 #include "validation/reference/path_trace.h"
 
 #include <algorithm>
@@ -6,8 +7,6 @@
 #include <filesystem>
 #include <numbers>
 #include <vector>
-
-#include <tbb/parallel_for.h>
 
 #include "common/ray_scene.h"
 
@@ -297,7 +296,7 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
   const float aspect = float(w) / float(h);
   std::atomic<uint64_t> rays{0};
   std::atomic<int> rowsDone{0};
-  tbb::parallel_for(0, h, [&](int y) {
+  parallelFor(0, h, [&](int y) {
     if (options.cancel && options.cancel->load()) return;
     Tracer tracer(scene, setup, options.bounces);
     for (int x = 0; x < w; ++x) {
