@@ -22,10 +22,18 @@ namespace parallel_detail {
 struct ForkJoin {
 #if defined(__SANITIZE_THREAD__)
   char forked = 0, joined = 0;
-  void fork() { __tsan_release(&forked); }
-  void taskBegins() { __tsan_acquire(&forked); }
-  void taskEnds() { __tsan_release(&joined); }
-  ~ForkJoin() { __tsan_acquire(&joined); }
+  void fork() {
+    __tsan_release(&forked);
+  }
+  void taskBegins() {
+    __tsan_acquire(&forked);
+  }
+  void taskEnds() {
+    __tsan_release(&joined);
+  }
+  ~ForkJoin() {
+    __tsan_acquire(&joined);
+  }
 #else
   void fork() {}
   void taskBegins() {}

@@ -11,7 +11,7 @@ namespace {
 
 std::string names(const std::vector<const BufferSpec*>& specs) {
   std::string out;
-  for (const BufferSpec* b : specs) out += (out.empty() ? "" : ", ") + b->qualifiedName();
+  for (const BufferSpec* b : specs) out.append(out.empty() ? "" : ", ").append(b->qualifiedName());
   return out;
 }
 
@@ -78,7 +78,7 @@ const StageSpec& resolveStage(const Technique& technique, const std::string& tex
   const std::string name = slash == std::string::npos ? text : text.substr(slash + 1);
   std::string known;
   for (const StageSpec* s : technique.steps()) {
-    known += (known.empty() ? "" : ", ") + s->qualifiedName();
+    known.append(known.empty() ? "" : ", ").append(s->qualifiedName());
     if (s->name != name) continue;
     if (owner.empty() || owner == s->owner || (owner == technique.name && s->shared())) return *s;
   }

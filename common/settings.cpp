@@ -78,7 +78,7 @@ void applyPreset(Settings& settings, const Technique& technique, const std::stri
         applySetting(settings, a, "preset " + std::string(technique.name) + "/" + p.name);
       return;
     }
-    names += (names.empty() ? "" : "|") + p.name;
+    names.append(names.empty() ? "" : "|").append(p.name);
   }
   throw InputError("--preset", "",
                    "must be one of " + std::string(technique.name) + "'s presets " + names +

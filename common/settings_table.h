@@ -79,7 +79,7 @@ Param number(std::string key, T S::*member, T lo, T hi, std::string meaning) {
 template <auto Section = nullptr, class E, class S>
 Param choice(std::string key, E S::*member, std::vector<std::string> names, std::string meaning) {
   std::string range;
-  for (const auto& n : names) range += (range.empty() ? "" : "|") + n;
+  for (const auto& n : names) range.append(range.empty() ? "" : "|").append(n);
   return {std::move(key), range, std::move(meaning),
           [member, names](const Settings& s) {
             return names[static_cast<size_t>(settings_table::field<Section>(s, member))];

@@ -24,7 +24,8 @@ std::span<const Technique> techniques() {
 
 std::string techniqueNames() {
   std::string names;
-  for (const Technique& t : techniques()) names += (names.empty() ? "" : "|") + std::string(t.name);
+  for (const Technique& t : techniques())
+    names.append(names.empty() ? "" : "|").append(std::string(t.name));
   return names;
 }
 

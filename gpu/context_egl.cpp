@@ -2,7 +2,11 @@
 // surfaceless platform (llvmpipe). No surface: voxgi renders into framebuffer objects.
 #include <EGL/egl.h>
 #include <EGL/eglext.h>
+#include <dlfcn.h>
+#include <link.h>
 
+#include <cstring>
+#include <string>
 #include <vector>
 
 #include "gpu/context.h"
@@ -13,6 +17,22 @@ namespace {
 #ifndef EGL_PLATFORM_SURFACELESS_MESA
 #define EGL_PLATFORM_SURFACELESS_MESA 0x31DD
 #endif
+
+// Keeps the DRI drivers EGL loaded (Mesa's llvmpipe, and LLVM with it) mapped until the process
+// ends, as libOSMesa stays (gpu/context_osmesa.cpp): eglTerminate would unload the driver while
+// its threads may still wind down, and code that is gone cannot be named in a crash or a leak
+// report (LeakSanitizer, tests/sanitizers/lsan.supp).
+void keepDriversLoaded() {
+  std::vector<std::string> drivers;
+  dl_iterate_phdr(
+      [](dl_phdr_info* info, size_t, void* out) {
+        if (info->dlpi_name != nullptr && std::strstr(info->dlpi_name, "/dri/") != nullptr)
+          static_cast<std::vector<std::string>*>(out)->emplace_back(info->dlpi_name);
+        return 0;
+      },
+      &drivers);
+  for (const std::string& d : drivers) dlopen(d.c_str(), RTLD_NOW | RTLD_NOLOAD | RTLD_NODELETE);
+}
 
 class EglContext : public GlContext {
  public:
@@ -29,6 +49,7 @@ class EglContext : public GlContext {
   bool open(EGLDisplay display) {
     EGLint major = 0, minor = 0;
     if (display == EGL_NO_DISPLAY || !eglInitialize(display, &major, &minor)) return false;
+    keepDriversLoaded();
     display_ = display;
     const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
     EGLConfig config = nullptr;

@@ -73,9 +73,11 @@ TEST(GpuDiff, TheRealBackendsPassAndSkippedStagesSaySo) {
   gpu::GpuBackend gpu(glContext(gpu::GlPlatform::egl));
   const auto r = diffVoxelize(cpu, gpu);
   EXPECT_TRUE(r[0].pass);
-  for (const auto& b : r[0].buffers)
-    if (b.buffer.starts_with("emission"))
+  for (const auto& b : r[0].buffers) {
+    if (b.buffer.starts_with("emission")) {
       EXPECT_NE(b.status.find("not planned"), std::string::npos);
+    }
+  }
   const Scene scene = makeScene(quad(2, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16));
   const Settings settings;  // bounce.count=0
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);

@@ -170,9 +170,10 @@ TEST(Layout, EveryHostSharedStd430BlockMatchesCpp) {
         if (offset < 0) continue;
         active = true;
         EXPECT_EQ(size_t(offset), use.base + f.offset) << layout.type << " " << variable;
-        if (use.array)
+        if (use.array) {
           EXPECT_EQ(size_t(query(use.program, variable, GL_TOP_LEVEL_ARRAY_STRIDE)), layout.size)
               << layout.type << " " << variable;
+        }
       }
       EXPECT_TRUE(active) << layout.type << "." << f.name << " is active in no program";
     }

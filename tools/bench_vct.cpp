@@ -117,7 +117,7 @@ int runBenchVct(const BenchVctOptions& o) {
   if (o.gpu) context = gpu::GlContext::create(gpu::GlPlatform::osmesa);
   nlohmann::json rows = nlohmann::json::array();
   std::cout << std::left << std::setw(14) << "scene" << std::setw(6) << "grid" << std::setw(7)
-            << "image" << std::setw(14) << "backend" << std::setw(14) << "stage" << std::right
+            << "image" << std::setw(14) << "backend" << std::setw(18) << "stage" << std::right
             << std::setw(10) << "seconds\n";
   for (const std::string& file : o.scenes)
     for (int n : o.resolutions)
@@ -146,7 +146,7 @@ int runBenchVct(const BenchVctOptions& o) {
         for (const auto& [backend, stages] : runs)
           for (const auto& [stage, seconds] : stages) {
             std::cout << std::left << std::setw(14) << name << std::setw(6) << n << std::setw(7)
-                      << image << std::setw(14) << backend << std::setw(14) << stage << std::right
+                      << image << std::setw(14) << backend << std::setw(18) << stage << std::right
                       << std::setw(10) << std::fixed << std::setprecision(4) << seconds << "\n";
             rows.push_back({{"scene", name},
                             {"grid", n},
