@@ -9,6 +9,7 @@
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
+#include <ImfStdIO.h>
 #include <Iex.h>
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -17,17 +18,9 @@
 #include <stb/stb_image_write.h>
 
 #include "common/error.h"
+#include "common/output_file.h"
 
 namespace voxgi {
-namespace {
-
-void commit(const std::string& tmp, const std::string& path) {
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw InputError(path, "", "cannot write: " + ec.message());
-}
-
-}  // namespace
 
 float linearToSrgb(float linear) {
   const float x = std::clamp(linear, 0.0f, 1.0f);
@@ -40,11 +33,12 @@ float srgbToLinear(float encoded) {
 }
 
 void writeExr(const std::string& path, const Image& image) {
-  const std::string tmp = path + ".tmp";
+  checkOutputPath(path);
+  Imf::StdOSStream bytes;  // encoded in memory, then written atomically
   try {
     Imf::Header header(image.width, image.height);
     for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
-    Imf::OutputFile file(tmp.c_str(), header);
+    Imf::OutputFile file(bytes, header);
     Imf::FrameBuffer fb;
     auto* base = reinterpret_cast<char*>(const_cast<glm::vec3*>(image.pixels.data()));
     const size_t xs = sizeof(glm::vec3), ys = xs * size_t(image.width);
@@ -56,10 +50,9 @@ void writeExr(const std::string& path, const Image& image) {
     file.setFrameBuffer(fb);
     file.writePixels(image.height);
   } catch (const std::exception& e) {
-    std::filesystem::remove(tmp);
-    throw InputError(path, "", std::string("cannot write EXR: ") + e.what());
+    throw InputError(path, "", std::string("cannot encode EXR: ") + e.what());
   }
-  commit(tmp, path);
+  writeFileAtomically(path, bytes.str());
 }
 
 Image readExr(const std::string& path) {
@@ -100,10 +93,14 @@ Image readImage(const std::string& path) {
 
 void writeRgb8Png(const std::string& path, int width, int height,
                   const std::vector<unsigned char>& rgb) {
-  const std::string tmp = path + ".tmp";
-  if (!stbi_write_png(tmp.c_str(), width, height, 3, rgb.data(), width * 3))
-    throw InputError(path, "", "cannot write PNG");
-  commit(tmp, path);
+  checkOutputPath(path);
+  std::string bytes;  // encoded in memory, then written atomically
+  const auto append = [](void* out, void* data, int size) {
+    static_cast<std::string*>(out)->append(static_cast<const char*>(data), size_t(size));
+  };
+  if (!stbi_write_png_to_func(append, &bytes, width, height, 3, rgb.data(), width * 3))
+    throw InputError(path, "", "cannot encode PNG");
+  writeFileAtomically(path, bytes);
 }
 
 void writePng(const std::string& path, const Image& image, float exposure) {

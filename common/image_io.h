@@ -18,7 +18,7 @@ struct Image {
   const glm::vec3& at(int x, int y) const { return pixels[size_t(y) * size_t(width) + size_t(x)]; }
 };
 
-// Writes to a temporary next to `path` and renames, so no half-written file is left behind.
+// Writes through common/output_file.h: complete or not at all, the previous file kept on failure.
 // Throws InputError naming the file.
 void writeExr(const std::string& path, const Image& image);
 Image readExr(const std::string& path);

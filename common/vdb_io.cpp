@@ -1,9 +1,13 @@
 #include "common/vdb_io.h"
 
+#include <sstream>
+
+#include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 
 #include "common/error.h"
 #include "common/mips.h"
+#include "common/output_file.h"
 
 namespace voxgi {
 namespace {
@@ -127,13 +131,14 @@ void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers
         grids.push_back(g);
       }
   }
+  // Encoded in memory (OpenVDB's stream format, which io::File reads), then written atomically.
+  std::ostringstream bytes(std::ios::binary);
   try {
-    openvdb::io::File file(path);
-    file.write(grids);
-    file.close();
+    openvdb::io::Stream(bytes).write(grids);
   } catch (const openvdb::Exception& e) {
-    throw InputError(path, "", std::string("cannot write: ") + e.what());
+    throw InputError(path, "", std::string("cannot encode VDB: ") + e.what());
   }
+  writeFileAtomically(path, bytes.str());
 }
 
 BufferSet readVdb(const std::string& path, GridSpec& grid,

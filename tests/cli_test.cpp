@@ -217,5 +217,29 @@ TEST(Cli, DumpAndRenderFollowThePlan) {
       << unknown.output;
 }
 
+// Every output is checked before the work starts, and a bad one is one line and exit 2 that leaves
+// nothing behind: a device, a missing folder, a symbolic link.
+TEST(Cli, OutputsAreCheckedBeforeTheWork) {
+  const std::string dir = testTempDir(), scene = sourcePath("scenes/cornell_box.json");
+  const std::string small = " --resolution 16 --image 16 --backend cpu";
+  for (const std::string& out : {std::string("--out /dev/null"), "--out " + dir + "no/x.exr",
+                                 "--out " + dir + "x.exr --png " + dir + "no/x.png"}) {
+    const CommandResult r = voxgi("render " + scene + small + " " + out);
+    EXPECT_EQ(r.code, 2) << out << "\n" << r.output;
+    EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir + "x.exr"))
+      << "the EXR is not written before --png fails";
+  std::filesystem::create_symlink("/dev/null", dir + "link.vdb");
+  const CommandResult link = voxgi("voxelize " + scene + small + " --out " + dir + "link.vdb");
+  EXPECT_EQ(link.code, 2) << link.output;
+  EXPECT_NE(link.output.find("symbolic link"), std::string::npos) << link.output;
+  const CommandResult json =
+      voxgi("diff " + scene + " --stage voxelize --resolution 16 --json " + dir + "no/r.json");
+  EXPECT_EQ(json.code, 2) << json.output;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    EXPECT_EQ(e.path().filename().string().find(".voxgi-"), std::string::npos) << e.path();
+}
+
 }  // namespace
 }  // namespace voxgi::test

@@ -15,6 +15,7 @@
 #include <tbb/task_arena.h>
 
 #include "common/pipeline.h"
+#include "common/output_file.h"
 #include "common/scene_load.h"
 #include "common/voxel_triangles.h"
 #include "cpu/backend.h"
@@ -170,7 +171,7 @@ int runBenchVct(const BenchVctOptions& o) {
                      {"memcpy_seconds", memcpySeconds}});
     }
   if (!o.json.empty())
-    std::ofstream(o.json) << nlohmann::json{{"stages", rows}, {"mip", mip}}.dump(2);
+    writeFileAtomically(o.json, nlohmann::json{{"stages", rows}, {"mip", mip}}.dump(2) + "\n");
   return 0;
 }
 

@@ -13,6 +13,7 @@
 #include <tbb/global_control.h>
 
 #include "common/pipeline.h"
+#include "common/output_file.h"
 #include "common/scene_load.h"
 #include "cpu/backend.h"
 #include "gpu/backend.h"
@@ -154,7 +155,7 @@ int runBenchVoxelize(const BenchOptions& o) {
            {"mesh_to_volume_band1_s", peer1}});
     }
   }
-  if (!o.json.empty()) std::ofstream(o.json) << rows.dump(2) << "\n";
+  if (!o.json.empty()) writeFileAtomically(o.json, rows.dump(2) + "\n");
   return 0;
 }
 

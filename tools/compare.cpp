@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
+#include "common/image_io.h"
+#include "common/output_file.h"
 #include "validation/reference/image_metrics.h"
 #include "validation/reference/path_trace.h"
 
@@ -70,6 +71,12 @@ Image readReference(const std::string& path) {
 }
 
 int runCompare(const CompareOptions& o) {
+  const std::filesystem::path t(o.test);
+  const std::string errorPng = o.errorPng.empty()
+                                   ? (t.parent_path() / (t.stem().string() + ".error.png")).string()
+                                   : o.errorPng;
+  checkOutputPath(errorPng);
+  if (!o.json.empty()) checkOutputPath(o.json);
   const Image reference = readReference(o.reference);
   const Image test = readImage(o.test);
   checkSameSize(test.width, test.height, o.test, reference);
@@ -94,15 +101,11 @@ int runCompare(const CompareOptions& o) {
               << "): RMSE " << floor->rmse << ", relMSE " << floor->relMse << "\n";
     out["noise_floor"] = {{"rmse", floor->rmse}, {"rel_mse", floor->relMse}};
   }
-  const std::filesystem::path t(o.test);
-  const std::string errorPng = o.errorPng.empty()
-                                   ? (t.parent_path() / (t.stem().string() + ".error.png")).string()
-                                   : o.errorPng;
   writeRgb8Png(errorPng, reference.width, reference.height,
                reference::errorColours(test, reference, mask));
   std::cout << "  error map (|t - r| / (|r| + 0.01), log scale 1e-3 black .. 1 white) -> "
             << errorPng << "\n";
-  if (!o.json.empty()) std::ofstream(o.json) << out.dump(2) << "\n";
+  if (!o.json.empty()) writeFileAtomically(o.json, out.dump(2) + "\n");
   return kExitOk;
 }
 

@@ -16,6 +16,7 @@
 
 #include "common/buffer_io.h"
 #include "common/error.h"
+#include "common/output_file.h"
 #include "common/pipeline.h"
 #include "common/scene_load.h"
 #include "common/settings.h"
@@ -196,8 +197,11 @@ void plot(const std::string& csv, const std::string& png, const std::string& met
                                                   {"rel_mse", "relative MSE"},
                                                   {"mare", "mean absolute relative error"},
                                                   {"ssim_loss", "1 - SSIM"}};
+  // The plot goes to a private temporary first, then to `png` like every other output.
+  const std::filesystem::path drawn = std::filesystem::temp_directory_path() /
+                                      ("voxgi_plot_study_" + std::to_string(getpid()) + ".png");
   std::vector<std::string> args{
-      "/usr/bin/python3", script.string(), csv, png, metric, labels.at(metric), title};
+      "/usr/bin/python3", script.string(), csv, drawn.string(), metric, labels.at(metric), title};
   if (!noiseFloor.empty()) args.push_back(noiseFloor);
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
@@ -207,11 +211,17 @@ void plot(const std::string& csv, const std::string& png, const std::string& met
   const int spawned = posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ);
   if (spawned == 0) waitpid(pid, &status, 0);
   std::filesystem::remove(script);
-  if (spawned != 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  if (spawned != 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::filesystem::remove(drawn);
     throw std::runtime_error(
         "plotting with /usr/bin/python3 failed; it needs python3-matplotlib (scripts/setup "
         "installs it). The CSV is written: " +
         csv);
+  }
+  std::ifstream in(drawn, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(drawn);
+  writeFileAtomically(png, bytes);
 }
 
 }  // namespace
@@ -243,6 +253,8 @@ void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
 }
 
 int runStudy(const StudyOptions& o) {
+  checkOutputPath(o.csv);
+  if (!o.plot.empty()) checkOutputPath(o.plot);
   std::vector<Sweep> sweeps;
   for (const std::string& s : o.sweeps) sweeps.push_back(parseSweep(s));
   const Image reference = readReference(o.reference);
@@ -298,8 +310,7 @@ int runStudy(const StudyOptions& o) {
         if (std::find(stages.begin(), stages.end(), s->qualifiedName()) == stages.end())
           stages.push_back(s->qualifiedName());
   stages.emplace_back("path_trace");
-  std::ofstream csv(o.csv);
-  if (!csv) throw InputError(o.csv, "", "cannot write");
+  std::ostringstream csv;
   csv << "technique";
   for (const Sweep& s : sweeps) csv << "," << s.key;
   csv << ",label,seconds";
@@ -323,7 +334,7 @@ int runStudy(const StudyOptions& o) {
     csv << "," << m.rmse << "," << m.relMse << "," << m.mare << "," << m.ssim << "," << 1.0 - m.ssim
         << "," << (front[k] ? 1 : 0) << "," << (techniqueFront[k] ? 1 : 0) << "\n";
   }
-  csv.close();
+  writeFileAtomically(o.csv, csv.str());
   std::cout << "wrote " << o.csv << " (" << jobs.size() << " rows)\n";
   if (o.plot.empty()) return kExitOk;
 

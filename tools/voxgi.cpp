@@ -18,6 +18,7 @@
 #include "common/buffer_io.h"
 #include "common/error.h"
 #include "common/image_io.h"
+#include "common/output_file.h"
 #include "common/pipeline.h"
 #include "common/scene_load.h"
 #include "common/vdb_io.h"
@@ -151,6 +152,7 @@ StageRun runStages(const Common& c, const StageSpec* last) {
 }
 
 int cmdVoxelize(const Common& c, const std::string& out, bool sums) {
+  checkOutputPath(out);
   const StageSpec& voxelize = stageSpec(StageId::common_voxelize);
   const StageRun run = runStages(c, &voxelize);
   size_t occupied = 0;
@@ -178,6 +180,8 @@ int cmdDiff(const Common& c, const std::string& stage, const std::string& json,
   Scene scene = loadWithOverrides(c);
   const Settings settings = makeSettings(c, scene);
   const std::vector<const StageSpec*> stages = requestedStages(technique, stage);
+  if (!json.empty()) checkOutputPath(json);
+  if (!dumpDir.empty()) prepareOutputFolder(dumpDir);
   auto context = gpu::GlContext::create(gpu::parseGlPlatform(c.gl));
   std::cerr << "voxgi: diff on " << context->renderer() << "\n";
   const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
@@ -186,7 +190,7 @@ int cmdDiff(const Common& c, const std::string& stage, const std::string& json,
   gpu::GpuBackend gpuBackend(*context);
   const auto reports = validation::diffStages(ctx, cpuBackend, gpuBackend, stages, dumpDir);
   validation::printReport(std::cout, reports);
-  if (!json.empty()) std::ofstream(json) << validation::toJson(reports).dump(2) << "\n";
+  if (!json.empty()) writeFileAtomically(json, validation::toJson(reports).dump(2) + "\n");
   bool pass = true;
   for (const auto& r : reports) pass &= r.pass;
   return pass ? kExitOk : kExitInternal;
@@ -217,8 +221,8 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
                        "the plan skips " + s.qualifiedName() + " (" + plan.whySkipped(s.id) +
                            "), so it has no buffers to dump (voxgi plan shows why)");
   }
+  prepareOutputFolder(dir);
   const StageRun run = runStages(c, stage == "all" ? nullptr : requested.front());
-  std::filesystem::create_directories(dir);
   for (const StageSpec* s : run.stages) {
     if (stage != "all" && s != requested.front()) continue;
     for (const std::string& path : writeBuffers(dir + "/" + std::string(s->name),
@@ -232,6 +236,8 @@ std::atomic<bool> interrupted{false};
 
 // A technique of the registry: every stage it plans on the chosen backend, then its image.
 int cmdRenderTechnique(const Common& c, const std::string& out, const std::string& png) {
+  checkOutputPath(out);
+  if (!png.empty()) checkOutputPath(png);
   const StageRun run = runStages(c, nullptr);
   const Technique& technique = findTechnique(c.technique);
   const Image image = bufferImage(run.buffers.at(technique.image));
@@ -246,6 +252,9 @@ int cmdRenderTechnique(const Common& c, const std::string& out, const std::strin
 // The reference path tracer (validation/reference/).
 int cmdRenderPath(const Common& c, const reference::PathTraceOptions& base, const std::string& out,
                   const std::string& png) {
+  checkOutputPath(out);
+  checkOutputPath(reference::variancePath(out));
+  if (!png.empty()) checkOutputPath(png);
   const Scene scene = loadWithOverrides(c);
   reference::PathTraceOptions options = base;
   options.cancel = &interrupted;

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "common/buffer_io.h"
+#include "common/output_file.h"
 #include "validation/comparisons.h"
 
 namespace voxgi::validation {
@@ -38,7 +39,7 @@ double seconds(std::chrono::steady_clock::time_point since) {
 
 void dump(const std::string& dir, const StageSpec& stage, const StageReport& report,
           const BufferSet& cpu, const BufferSet& gpu, const GridSpec& grid) {
-  std::filesystem::create_directories(dir);
+  prepareOutputFolder(dir);
   const std::string prefix = dir + "/" + std::string(stage.name);
   std::vector<const Buffer*> cpuList, gpuList, diffList;
   // The difference grids reuse the buffer names but hold gpu - cpu as f32.
