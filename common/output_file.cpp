@@ -141,8 +141,9 @@ void prepareOutputFolder(const std::string& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
-    throw InputError(dir, "", "cannot create the output folder: " +
-                                  (ec ? ec.message() : std::string("not a folder")));
+    throw InputError(
+        dir, "",
+        "cannot create the output folder: " + (ec ? ec.message() : std::string("not a folder")));
   if (access(dir.c_str(), W_OK | X_OK) != 0)
     throw InputError(dir, "", "cannot write into the output folder: " + reason(errno));
 }

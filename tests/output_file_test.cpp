@@ -81,8 +81,9 @@ TEST(OutputFile, RefusesLinksFoldersDevicesAndMissingFolders) {
             std::string::npos);
   EXPECT_NE(errorOf([&] { checkOutputPath("/dev/null"); }).find("not a regular file"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] { writeFileAtomically(dir + "missing/out.txt", "x"); })
-                .find("missing/out.txt: cannot write: folder"),
+  EXPECT_NE(errorOf([&] {
+              writeFileAtomically(dir + "missing/out.txt", "x");
+            }).find("missing/out.txt: cannot write: folder"),
             std::string::npos);
   expectOnly(dir, {"real.txt", "link.txt", "folder"});
 }

@@ -96,6 +96,12 @@ std::string testTempDir() {
   const auto* info = testing::UnitTest::GetInstance()->current_test_info();
   const std::string dir =
       testing::TempDir() + "voxgi_" + info->test_suite_name() + "." + info->name() + "/";
+  // Emptied the first time a test asks, so nothing is left from an earlier run of it.
+  static std::string emptied;
+  if (emptied != dir) {
+    std::filesystem::remove_all(dir);
+    emptied = dir;
+  }
   std::filesystem::create_directories(dir);
   return dir;
 }

@@ -33,7 +33,8 @@ glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v);
 // FNV-1a over every buffer's qualified name and words.
 uint64_t hashBuffers(const BufferSet& buffers);
 std::string sourcePath(const std::string& relative);  // relative to the project root
-// A folder of the running test's own (ctest runs tests as parallel processes), ending in '/'.
+// A folder of the running test's own (ctest runs tests as parallel processes), emptied when first
+// asked for in a run, ending in '/'.
 std::string testTempDir();
 
 }  // namespace voxgi::test
