@@ -18,6 +18,7 @@
 #include <stb/stb_image_write.h>
 
 #include "common/error.h"
+#include "common/input_file.h"
 #include "common/output_file.h"
 
 namespace voxgi {
@@ -56,6 +57,7 @@ void writeExr(const std::string& path, const Image& image) {
 }
 
 Image readExr(const std::string& path) {
+  requireInputFile(path, "", "EXR image");
   try {
     Imf::InputFile file(path.c_str());
     const Imath::Box2i dw = file.header().dataWindow();
@@ -79,6 +81,7 @@ Image readExr(const std::string& path) {
 
 Image readImage(const std::string& path) {
   if (std::filesystem::path(path).extension() != ".png") return readExr(path);
+  requireInputFile(path, "", "PNG image");
   int w = 0, h = 0, channels = 0;
   unsigned char* bytes = stbi_load(path.c_str(), &w, &h, &channels, 3);
   if (bytes == nullptr)

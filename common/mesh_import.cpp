@@ -1,5 +1,7 @@
 // Mesh files through Assimp: triangles of every node, in world space, with their materials.
+#include <cctype>
 #include <filesystem>
+#include <fstream>
 
 #include <assimp/Importer.hpp>
 #include <assimp/material.h>
@@ -7,6 +9,8 @@
 #include <assimp/scene.h>
 
 #include "common/error.h"
+#include "common/input_file.h"
+#include "common/ply_check.h"
 #include "common/scene_load.h"
 
 namespace voxgi {
@@ -46,17 +50,47 @@ glm::dmat4 toGlm(const aiMatrix4x4& m) {
   return out;
 }
 
+// Assimp picks an importer by content whatever the extension, so a file must be what its name says
+// before Assimp sees it; a PLY is checked whole (common/ply_check.h).
+void checkMeshFileContent(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  std::ifstream in(path, std::ios::binary);
+  char head[4] = {};
+  in.read(head, 4);
+  const std::string magic(head, size_t(in.gcount()));
+  if (ext == ".ply") {
+    checkPly(path);
+  } else if (ext == ".glb") {
+    if (magic != "glTF") throw InputError(path, "", "not a binary glTF file (no 'glTF' magic)");
+  } else if (ext == ".gltf") {
+    char c = ' ';
+    in.seekg(0);
+    while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
+    }
+    if (c != '{') throw InputError(path, "", "not a glTF file (JSON starting with '{')");
+  } else if (ext != ".obj") {
+    throw InputError(path, "", "unknown mesh format '" + ext + "' (OBJ, glTF, GLB or PLY)");
+  }
+}
+
 }  // namespace
 
 void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& transform,
                     const std::optional<uint32_t>& materialOverride) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path, "", "no such mesh file");
+  requireInputFile(path, "", "mesh file");
+  checkMeshFileContent(path);
   Assimp::Importer importer;
   // No degenerate-triangle removal here: the voxelizer handles them (and tests that it does).
-  const aiScene* ai = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_JoinIdenticalVertices);
+  // ValidateDataStructure: Assimp's own check of indices, counts and references before voxgi
+  // reads them; voxgi still checks what it uses (a root node, the material index).
+  const aiScene* ai =
+      importer.ReadFile(path, aiProcess_ValidateDataStructure | aiProcess_Triangulate |
+                                  aiProcess_SortByPType | aiProcess_JoinIdenticalVertices);
   if (ai == nullptr)
     throw InputError(path, "", std::string("cannot import: ") + importer.GetErrorString());
+  if (ai->mRootNode == nullptr) throw InputError(path, "", "cannot import: no scene graph");
+  const size_t meshesBefore = scene.meshes.size();
   std::vector<uint32_t> materialOf(ai->mNumMaterials);
   for (unsigned i = 0; i < ai->mNumMaterials; ++i)
     materialOf[i] = materialOverride ? *materialOverride
@@ -78,6 +112,8 @@ void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& tra
       if (!(am.mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;  // points and lines
       Mesh mesh;
       mesh.name = path + ": mesh '" + am.mName.C_Str() + "'";
+      if (!materialOf.empty() && am.mMaterialIndex >= materialOf.size())
+        throw InputError(mesh.name, "material", "index out of range");
       mesh.material = materialOf.empty() ? 0 : materialOf[am.mMaterialIndex];
       mesh.positions.reserve(am.mNumVertices);
       for (unsigned v = 0; v < am.mNumVertices; ++v) {
@@ -96,6 +132,10 @@ void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& tra
       scene.meshes.push_back(std::move(mesh));
     }
   }
+  size_t triangles = 0;
+  for (size_t m = meshesBefore; m < scene.meshes.size(); ++m)
+    triangles += scene.meshes[m].triangles.size();
+  if (triangles == 0) throw InputError(path, "", "no triangles (only points or lines, or nothing)");
 }
 
 }  // namespace voxgi

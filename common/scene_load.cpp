@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
+#include "common/input_file.h"
 #include "common/settings.h"
 
 namespace voxgi {
@@ -29,8 +30,13 @@ struct Field {
 
   [[noreturn]] void fail(const std::string& reason) const { throw InputError(file, path, reason); }
 
+  // The member `key`; a missing one is an error naming it (required fields are read with at()).
   Field at(const std::string& key) const {
-    return {file, value.at(key), path.empty() ? key : path + "." + key};
+    const std::string child = path.empty() ? key : path + "." + key;
+    if (!value.is_object()) fail("must be an object");
+    const auto it = value.find(key);
+    if (it == value.end()) throw InputError(file, child, "missing (this field is required)");
+    return {file, *it, child};
   }
   Field at(size_t i) const { return {file, value.at(i), path + "[" + std::to_string(i) + "]"}; }
   bool has(const std::string& key) const { return value.contains(key); }
@@ -194,6 +200,19 @@ int readResolution(const std::string& file, const std::string& field, int64_t n)
   return static_cast<int>(n);
 }
 
+void checkGrid(const Scene& scene, const std::string& source) {
+  const GridSpec& g = scene.grid;
+  const double h = g.voxelSize();
+  if (!(h >= kMinVoxelSize && h <= kMaxVoxelSize))
+    throw InputError(source, "grid.size",
+                     "gives voxels of " + Field::fmt(h) +
+                         " (size / resolution); they must be in [" + Field::fmt(kMinVoxelSize) +
+                         ", " + Field::fmt(kMaxVoxelSize) + "] scene units");
+  for (int c = 0; c < 3; ++c)
+    if (!(std::abs(g.min[c]) <= 1e15))
+      throw InputError(source, "grid.min", "must lie within 1e15 of the origin");
+}
+
 void validateGeometry(const Scene& scene) {
   // Materials from mesh files are checked here; JSON ones were checked field by field.
   for (const Material& m : scene.materials)
@@ -227,9 +246,11 @@ Scene loadScene(const std::string& path) {
   scene.file = path;
   const std::string ext = fs::path(path).extension().string();
   if (ext != ".json") {
+    requireInputFile(path, "", "mesh file");
     importMeshFile(scene, path, glm::dmat4(1.0), std::nullopt);
     validateGeometry(scene);
     scene.grid = fitGrid(scene.bounds(), 64);
+    checkGrid(scene, path);
     const auto [lo, hi] = scene.bounds();
     if (lo.x <= hi.x) {  // look at the mesh from +z
       scene.camera.lookAt = 0.5 * (lo + hi);
@@ -237,12 +258,13 @@ Scene loadScene(const std::string& path) {
     }
     return scene;
   }
+  requireInputFile(path, "", "scene file");
   std::ifstream in(path);
   if (!in) throw InputError(path, "", "cannot open scene file");
   json doc;
   try {
     doc = json::parse(in);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // syntax errors, numbers beyond double (1e400)
     throw InputError(path, "", std::string("malformed JSON: ") + e.what());
   }
   const Field root{path, doc, ""};
@@ -266,7 +288,11 @@ Scene loadScene(const std::string& path) {
     m.allowKeys({"file", "material", "transform"});
     const Field file = m.at("file");
     const fs::path meshPath = fs::path(path).parent_path() / file.string();
-    if (!fs::is_regular_file(meshPath)) file.fail("no such file '" + meshPath.string() + "'");
+    try {
+      requireInputFile(meshPath.string(), "", "mesh file");
+    } catch (const InputError& e) {
+      file.fail(e.what());  // the scene file and field, then the mesh file and what is wrong
+    }
     std::optional<uint32_t> material;
     if (m.has("material")) {
       const std::string name = m.at("material").string();
@@ -306,12 +332,14 @@ Scene loadScene(const std::string& path) {
     if (g.has("min") != g.has("size")) g.fail("give both min and size, or neither");
     if (g.has("min")) {
       scene.grid.min = g.at("min").vec3();
-      scene.grid.size = g.at("size").number(1e-30, 1e30);
+      scene.grid.size = g.at("size").number();
       scene.grid.resolution = resolution;
+      checkGrid(scene, path);
       return scene;
     }
   }
   scene.grid = fitGrid(scene.bounds(), resolution);
+  checkGrid(scene, path);
   return scene;
 }
 

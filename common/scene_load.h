@@ -17,6 +17,17 @@ Scene loadScene(const std::string& path);
 // Checks a grid resolution (power of two in [1, kMaxResolution]); throws InputError(file, field).
 int readResolution(const std::string& file, const std::string& field, int64_t n);
 
+// The smallest and largest voxel edge voxgi accepts, in scene units: OpenVDB's transforms (the
+// dumps) need a scale well above 1e-7, and float world coordinates (the path tracer) must hold a
+// few voxels past the grid.
+constexpr double kMinVoxelSize = 1e-6;
+constexpr double kMaxVoxelSize = 1e15;
+
+// Checks the scene's grid (voxel size in [kMinVoxelSize, kMaxVoxelSize], the corner within
+// 1e15 of the origin); throws InputError naming `source` and grid.size or grid.min. loadScene calls
+// it; a command that changes the resolution calls it again.
+void checkGrid(const Scene& scene, const std::string& source);
+
 // Renders `width` pixels wide (1..16384, else InputError naming `source`), the height keeping the
 // camera's aspect ratio.
 void setImageWidth(Scene& scene, int width, const std::string& source);

@@ -6,6 +6,7 @@
 #include <openvdb/openvdb.h>
 
 #include "common/error.h"
+#include "common/input_file.h"
 #include "common/mips.h"
 #include "common/output_file.h"
 
@@ -143,6 +144,7 @@ void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers
 
 BufferSet readVdb(const std::string& path, GridSpec& grid,
                   const std::vector<const BufferSpec*>& specs) {
+  requireInputFile(path, "", "VDB file");
   openvdb::initialize();
   openvdb::GridPtrVecPtr grids;
   try {

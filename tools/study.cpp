@@ -160,10 +160,11 @@ std::vector<Job> makeJobs(const StudyOptions& o, const std::vector<Sweep>& sweep
         const std::string& value = s->values[rest % s->values.size()];
         rest /= s->values.size();
         job.values.emplace_back(s->key, value);
-        if (s->key == "resolution")
+        if (s->key == "resolution") {
           job.scene.grid.resolution =
               readResolution("--sweep", "resolution", parseInt(s->key, value));
-        else if (s->key == "backend") {
+          checkGrid(job.scene, "--sweep resolution=" + value);
+        } else if (s->key == "backend") {
           if (value != "cpu" && value != "gpu")
             throw InputError("--sweep", "backend", "expected cpu or gpu, got '" + value + "'");
           job.gpu = value == "gpu";

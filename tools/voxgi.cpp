@@ -100,7 +100,10 @@ Settings makeSettings(const Common& c, const Scene& scene) {
 
 Scene loadWithOverrides(const Common& c) {
   Scene scene = loadScene(c.scene);
-  if (c.resolution != 0) scene.grid.resolution = readResolution("--resolution", "", c.resolution);
+  if (c.resolution != 0) {
+    scene.grid.resolution = readResolution("--resolution", "", c.resolution);
+    checkGrid(scene, "--resolution " + std::to_string(c.resolution));
+  }
   if (c.image != 0) setImageWidth(scene, c.image, "--image");
   return scene;
 }
@@ -302,8 +305,11 @@ int main(int argc, char** argv) {
   Common c;
   auto addCommon = [&](CLI::App* cmd, bool backend) {
     cmd->add_option("scene", c.scene, "scene .json or mesh file (OBJ, glTF, PLY)")->required();
-    cmd->add_option("--resolution", c.resolution, "voxel grid resolution (power of two)");
-    cmd->add_option("--image", c.image, "image width in pixels (the height keeps the aspect)");
+    // Given explicitly, 0 is an error, not "the scene's" (which is what leaving them out means).
+    cmd->add_option("--resolution", c.resolution, "voxel grid resolution (power of two)")
+        ->check(CLI::Range(1, kMaxResolution));
+    cmd->add_option("--image", c.image, "image width in pixels (the height keeps the aspect)")
+        ->check(CLI::Range(1, 16384));
     cmd->add_option("--mode", c.mode,
                     "voxelization: conservative or antialiased (default: voxelize.mode)")
         ->check(CLI::IsMember({"conservative", "antialiased"}));

@@ -1,0 +1,307 @@
+#include "common/ply_check.h"
+
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+
+#include "common/error.h"
+#include "common/input_file.h"
+
+namespace voxgi {
+namespace {
+
+using Type = PlyProperty::Type;
+
+constexpr size_t kMaxHeaderBytes = 64 * 1024;
+
+size_t typeSize(Type t) {
+  switch (t) {
+    case Type::int8:
+    case Type::uint8:
+      return 1;
+    case Type::int16:
+    case Type::uint16:
+      return 2;
+    case Type::int32:
+    case Type::uint32:
+    case Type::float32:
+      return 4;
+    case Type::float64:
+      return 8;
+  }
+  return 0;
+}
+
+bool integral(Type t) {
+  return t != Type::float32 && t != Type::float64;
+}
+
+bool parseType(const std::string& s, Type& t) {
+  static const std::pair<const char*, Type> names[] = {
+      {"char", Type::int8},      {"int8", Type::int8},       {"uchar", Type::uint8},
+      {"uint8", Type::uint8},    {"short", Type::int16},     {"int16", Type::int16},
+      {"ushort", Type::uint16},  {"uint16", Type::uint16},   {"int", Type::int32},
+      {"int32", Type::int32},    {"uint", Type::uint32},     {"uint32", Type::uint32},
+      {"float", Type::float32},  {"float32", Type::float32}, {"double", Type::float64},
+      {"float64", Type::float64}};
+  for (const auto& [name, type] : names)
+    if (s == name) {
+      t = type;
+      return true;
+    }
+  return false;
+}
+
+// Splits a line into whitespace-separated words.
+std::vector<std::string_view> words(std::string_view line) {
+  std::vector<std::string_view> out;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r')) ++i;
+    const size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r') ++i;
+    if (i > start) out.push_back(line.substr(start, i - start));
+  }
+  return out;
+}
+
+// The faces' vertex index list, the one property whose values must index the vertices.
+bool isVertexIndices(const PlyElement& e, const PlyProperty& p) {
+  return e.name == "face" && p.list && (p.name == "vertex_indices" || p.name == "vertex_index");
+}
+
+// Reads one value of `type` from a binary body; false at the end of the data.
+struct BinaryReader {
+  const std::string& bytes;
+  size_t at;
+  bool bigEndian;
+
+  bool read(Type type, double& value) {
+    const size_t n = typeSize(type);
+    if (bytes.size() - at < n) return false;
+    unsigned char b[8];
+    std::memcpy(b, bytes.data() + at, n);
+    at += n;
+    if (bigEndian != (std::endian::native == std::endian::big))
+      for (size_t i = 0; i < n / 2; ++i) std::swap(b[i], b[n - 1 - i]);
+    switch (type) {
+      case Type::int8:
+        value = double(std::bit_cast<int8_t>(b[0]));
+        break;
+      case Type::uint8:
+        value = double(b[0]);
+        break;
+      case Type::int16: {
+        int16_t v;
+        std::memcpy(&v, b, 2);
+        value = v;
+        break;
+      }
+      case Type::uint16: {
+        uint16_t v;
+        std::memcpy(&v, b, 2);
+        value = v;
+        break;
+      }
+      case Type::int32: {
+        int32_t v;
+        std::memcpy(&v, b, 4);
+        value = v;
+        break;
+      }
+      case Type::uint32: {
+        uint32_t v;
+        std::memcpy(&v, b, 4);
+        value = v;
+        break;
+      }
+      case Type::float32: {
+        float v;
+        std::memcpy(&v, b, 4);
+        value = v;
+        break;
+      }
+      case Type::float64:
+        std::memcpy(&value, b, 8);
+        break;
+    }
+    return true;
+  }
+};
+
+// Parses an ASCII value of `type`: an integer for integer types, any number for floats.
+bool parseAscii(std::string_view word, Type type, double& value) {
+  const char* end = word.data() + word.size();
+  if (integral(type)) {
+    int64_t v = 0;
+    const auto [ptr, ec] = std::from_chars(word.data(), end, v);
+    if (ec != std::errc() || ptr != end) return false;
+    value = double(v);
+    return true;
+  }
+  const auto [ptr, ec] = std::from_chars(word.data(), end, value);
+  return ec == std::errc() && ptr == end;
+}
+
+}  // namespace
+
+PlyHeader readPlyHeader(const std::string& path, const std::string& bytes) {
+  PlyHeader h;
+  size_t at = 0;
+  int lineNumber = 0;
+  bool sawFormat = false, ended = false;
+  while (!ended) {
+    const size_t eol = bytes.find('\n', at);
+    if (eol == std::string::npos || eol >= kMaxHeaderBytes)
+      throw InputError(
+          path, "header",
+          "no end_header line within the first " + std::to_string(kMaxHeaderBytes / 1024) + " KiB");
+    const std::string_view line(bytes.data() + at, eol - at);
+    at = eol + 1;
+    ++lineNumber;
+    const auto w = words(line);
+    const std::string where = "header line " + std::to_string(lineNumber);
+    if (lineNumber == 1) {
+      if (w.size() != 1 || w[0] != "ply")
+        throw InputError(path, where, "not a PLY file (no 'ply')");
+      continue;
+    }
+    if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
+    if (w[0] == "format") {
+      if (w.size() != 3 || w[2] != "1.0")
+        throw InputError(path, where,
+                         "expected 'format ascii|binary_little_endian|"
+                         "binary_big_endian 1.0'");
+      if (w[1] == "ascii")
+        h.format = PlyHeader::Format::ascii;
+      else if (w[1] == "binary_little_endian")
+        h.format = PlyHeader::Format::binary_little_endian;
+      else if (w[1] == "binary_big_endian")
+        h.format = PlyHeader::Format::binary_big_endian;
+      else
+        throw InputError(path, where, "unknown format '" + std::string(w[1]) + "'");
+      sawFormat = true;
+    } else if (w[0] == "element") {
+      uint64_t count = 0;
+      if (w.size() != 3 ||
+          std::from_chars(w[2].data(), w[2].data() + w[2].size(), count).ec != std::errc())
+        throw InputError(path, where, "expected 'element NAME COUNT'");
+      h.elements.push_back({std::string(w[1]), count, {}});
+    } else if (w[0] == "property") {
+      if (h.elements.empty()) throw InputError(path, where, "property before any element");
+      PlyProperty p;
+      const bool ok = w.size() == 5 && w[1] == "list"
+                          ? parseType(std::string(w[2]), p.countType) &&
+                                parseType(std::string(w[3]), p.type) && integral(p.countType)
+                          : w.size() == 3 && parseType(std::string(w[1]), p.type);
+      if (!ok)
+        throw InputError(path, where,
+                         "expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME' "
+                         "with an integer count type");
+      p.list = w.size() == 5;
+      p.name = std::string(w.back());
+      h.elements.back().properties.push_back(p);
+    } else if (w[0] == "end_header" && w.size() == 1) {
+      ended = true;
+    } else {
+      throw InputError(path, where, "unexpected '" + std::string(w[0]) + "'");
+    }
+  }
+  if (!sawFormat) throw InputError(path, "header", "no format line");
+  h.bodyOffset = at;
+  // The least the declared elements can take, checked before anything is read or allocated.
+  const uint64_t body = bytes.size() - at;
+  long double least = 0.0L;
+  for (const PlyElement& e : h.elements) {
+    uint64_t perItem = 0;
+    for (const PlyProperty& p : e.properties)
+      perItem += h.format == PlyHeader::Format::ascii ? 2 : typeSize(p.list ? p.countType : p.type);
+    least += static_cast<long double>(e.count) * static_cast<long double>(perItem);
+  }
+  if (least > static_cast<long double>(body))
+    throw InputError(path, "header",
+                     "the declared elements need at least " +
+                         std::to_string(uint64_t(std::min<long double>(least, 1.8e19L))) +
+                         " bytes, the file has " + std::to_string(body) + " after the header");
+  return h;
+}
+
+PlyHeader checkPly(const std::string& path) {
+  requireInputFile(path, "", "PLY file");
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const PlyHeader h = readPlyHeader(path, bytes);
+  uint64_t vertices = 0;
+  bool haveVertices = false;
+  for (const PlyElement& e : h.elements)
+    if (e.name == "vertex") vertices = e.count, haveVertices = true;
+  const bool ascii = h.format == PlyHeader::Format::ascii;
+  BinaryReader reader{bytes, h.bodyOffset, h.format == PlyHeader::Format::binary_big_endian};
+  size_t at = h.bodyOffset;  // ASCII position
+  for (const PlyElement& e : h.elements) {
+    for (uint64_t i = 0; i < e.count; ++i) {
+      const std::string where = e.name + " " + std::to_string(i);
+      std::vector<std::string_view> w;
+      size_t next = 0;  // next word of an ASCII line
+      if (ascii) {
+        const size_t eol = std::min(bytes.find('\n', at), bytes.size());
+        if (at >= bytes.size()) throw InputError(path, where, "missing: the file ends early");
+        w = words(std::string_view(bytes.data() + at, eol - at));
+        at = eol + 1;
+      }
+      const auto value = [&](Type type, double& v) {
+        if (!ascii) {
+          if (!reader.read(type, v)) throw InputError(path, where, "missing: the file ends early");
+          return;
+        }
+        if (next >= w.size()) throw InputError(path, where, "the line has too few values");
+        if (!parseAscii(w[next], type, v))
+          throw InputError(
+              path, where,
+              "'" + std::string(w[next]).substr(0, 32) + "' is not a valid value of its type");
+        ++next;
+      };
+      for (const PlyProperty& p : e.properties) {
+        double v = 0.0;
+        if (!p.list) {
+          value(p.type, v);
+          continue;
+        }
+        value(p.countType, v);
+        if (v < 0.0) throw InputError(path, where, p.name + ": negative list count");
+        const auto n = static_cast<uint64_t>(v);
+        const bool indices = isVertexIndices(e, p);
+        if (indices && !haveVertices) throw InputError(path, where, "faces but no vertex element");
+        if (indices && n < 3)
+          throw InputError(path, where,
+                           p.name + ": a face needs at least 3 vertices, has " + std::to_string(n));
+        for (uint64_t k = 0; k < n; ++k) {
+          value(p.type, v);
+          if (indices && !(v >= 0.0 && v < double(vertices) && std::floor(v) == v))
+            throw InputError(path, where,
+                             p.name + ": vertex index " + std::to_string(int64_t(v)) +
+                                 " outside [0, " + std::to_string(vertices) + ")");
+        }
+      }
+      if (ascii && next != w.size())
+        throw InputError(path, where,
+                         "the line has " + std::to_string(w.size() - next) +
+                             " values more than the header declares");
+    }
+  }
+  if (ascii) {
+    for (; at < bytes.size(); ++at)
+      if (!std::isspace(static_cast<unsigned char>(bytes[at])))
+        throw InputError(path, "body", "data after the last declared element");
+  } else if (reader.at != bytes.size()) {
+    throw InputError(
+        path, "body",
+        std::to_string(bytes.size() - reader.at) + " bytes after the last declared element");
+  }
+  return h;
+}
+
+}  // namespace voxgi
