@@ -19,6 +19,9 @@
 namespace voxgi {
 namespace {
 
+// How far from the origin a light or the camera may be (as the grid's corner, checkGrid).
+constexpr double kMaxCoordinate = 1e15;
+
 using nlohmann::json;
 namespace fs = std::filesystem;
 
@@ -78,6 +81,23 @@ struct Field {
     if (!value.is_array() || value.size() != 3) fail("must be an array of 3 numbers");
     return {at(0).number(), at(1).number(), at(2).number()};
   }
+  // A position: rendering subtracts positions and squares distances in float, so each coordinate
+  // must stay well inside float's range (the grid is at most 1e15 from the origin as well).
+  glm::dvec3 position() const {
+    const glm::dvec3 p = vec3();
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(p[c]) > kMaxCoordinate)
+        fail("must lie within " + fmt(kMaxCoordinate) + " of the origin, got " + fmt(p[c]));
+    return p;
+  }
+  // A direction, normalised in double whatever its length (1e-160 or 1e308): the components are
+  // scaled by the largest first, so the length neither underflows nor overflows.
+  glm::dvec3 direction() const {
+    const glm::dvec3 d = vec3();
+    const double big = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
+    if (big == 0.0) fail("must be non-zero");
+    return glm::normalize(d / big);
+  }
   glm::vec3 color(double lo, double hi) const {
     if (!value.is_array() || value.size() != 3) fail("must be an array of 3 numbers");
     return glm::vec3(at(0).number(lo, hi), at(1).number(lo, hi), at(2).number(lo, hi));
@@ -129,12 +149,8 @@ Light readLight(const Field& f) {
     l.type = Light::Type::directional;
   else
     f.at("type").fail("must be point, spot or directional, got '" + type + "'");
-  if (l.type != Light::Type::directional) l.position = f.at("position").vec3();
-  if (l.type != Light::Type::point) {
-    const glm::dvec3 d = f.at("direction").vec3();
-    if (glm::length(d) == 0.0) f.at("direction").fail("must be non-zero");
-    l.direction = glm::normalize(d);
-  }
+  if (l.type != Light::Type::directional) l.position = f.at("position").position();
+  if (l.type != Light::Type::point) l.direction = f.at("direction").direction();
   l.intensity = f.at("intensity").color(0.0, 1e12);
   if (f.has("spot_angle_deg"))
     l.spotAngleDeg = static_cast<float>(f.at("spot_angle_deg").number(1e-3, 179.9));
@@ -147,9 +163,17 @@ Light readLight(const Field& f) {
     } else {
       fo.allowKeys({"constant", "linear", "quadratic"});
       l.falloff.kind = Falloff::Kind::polynomial;
-      l.falloff.constant = static_cast<float>(fo.at("constant").number(0.0, 1e9));
-      l.falloff.linear = static_cast<float>(fo.at("linear").number(0.0, 1e9));
-      l.falloff.quadratic = static_cast<float>(fo.at("quadratic").number(0.0, 1e9));
+      // Used in float: 0, or a normal float well above float's denormals (1e-45 would be 0 or
+      // denormal there and divide the light by nothing).
+      const auto coefficient = [&](const char* key) {
+        const Field k = fo.at(key);
+        const double v = k.number(0.0, 1e9);
+        if (v != 0.0 && v < 1e-30) k.fail("must be 0 or at least 1e-30, got " + Field::fmt(v));
+        return static_cast<float>(v);
+      };
+      l.falloff.constant = coefficient("constant");
+      l.falloff.linear = coefficient("linear");
+      l.falloff.quadratic = coefficient("quadratic");
       if (l.falloff.constant + l.falloff.linear + l.falloff.quadratic <= 0.0f)
         fo.fail("at least one coefficient must be positive");
     }
@@ -160,11 +184,16 @@ Light readLight(const Field& f) {
 Camera readCamera(const Field& f) {
   f.allowKeys({"position", "look_at", "up", "fov_y_deg", "resolution"});
   Camera c;
-  c.position = f.at("position").vec3();
-  c.lookAt = f.at("look_at").vec3();
-  if (f.has("up")) c.up = f.at("up").vec3();
-  if (glm::length(c.lookAt - c.position) == 0.0) f.at("look_at").fail("must differ from position");
-  if (glm::length(glm::cross(c.lookAt - c.position, c.up)) == 0.0)
+  c.position = f.at("position").position();
+  c.lookAt = f.at("look_at").position();
+  if (f.has("up")) c.up = f.at("up").direction();
+  // Compared in the float precision the camera is rendered in, relative to the distance.
+  const glm::dvec3 view = c.lookAt - c.position;
+  const double distance = glm::length(view);
+  if (!(distance > 1e-6 * std::max({1.0, std::abs(c.position.x), std::abs(c.position.y),
+                                    std::abs(c.position.z)})))
+    f.at("look_at").fail("must differ from position by more than float precision");
+  if (glm::length(glm::cross(view / distance, c.up)) < 1e-6)
     f.at("up").fail("must not be parallel to the viewing direction");
   if (f.has("fov_y_deg")) c.fovYDeg = f.at("fov_y_deg").number(1e-3, 179.0);
   if (f.has("resolution")) {
@@ -227,17 +256,25 @@ void validateGeometry(const Scene& scene) {
       check(m.emission[c], 1e9f, "emission");
     }
   for (const Mesh& m : scene.meshes) {
+    // The scene file first, then the mesh (a bare mesh file is the scene file itself).
+    const std::string mesh =
+        m.name.starts_with(scene.file + ": ") ? m.name.substr(scene.file.size() + 2) : m.name;
+    const auto fail = [&](const std::string& what, const std::string& reason) {
+      throw InputError(scene.file, mesh + ", " + what, reason);
+    };
     for (size_t v = 0; v < m.positions.size(); ++v) {
       const glm::dvec3& p = m.positions[v];
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-        throw InputError(m.name, "vertex " + std::to_string(v), "coordinate is NaN or infinite");
+        fail("vertex " + std::to_string(v), "coordinate is NaN or infinite");
+      if (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) > kMaxCoordinate)
+        fail("vertex " + std::to_string(v), "lies beyond " + Field::fmt(kMaxCoordinate) +
+                                                " of the origin (after the scene's transform)");
     }
     for (size_t t = 0; t < m.triangles.size(); ++t)
       for (int c = 0; c < 3; ++c)
         if (m.triangles[t][c] >= m.positions.size())
-          throw InputError(m.name, "triangle " + std::to_string(t), "vertex index out of range");
-    if (m.material >= scene.materials.size())
-      throw InputError(m.name, "material", "index out of range");
+          fail("triangle " + std::to_string(t), "vertex index out of range");
+    if (m.material >= scene.materials.size()) fail("material", "index out of range");
   }
 }
 

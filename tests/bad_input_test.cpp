@@ -50,7 +50,12 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"number_beyond_double.json", "malformed JSON"},
         Case{"grid_size_tiny.json", "grid.size: gives voxels of"},
         Case{"grid_size_huge.json", "grid.size: gives voxels of"},
-        Case{"mesh_is_a_folder.json", "is a folder, not a mesh file"}),
+        Case{"mesh_is_a_folder.json", "is a folder, not a mesh file"},
+        Case{"camera_at_1e308.json", "camera.position: must lie within 1e+15 of the origin"},
+        Case{"light_at_1e39.json", "lights[0].position: must lie within 1e+15"},
+        Case{"falloff_1e-45.json", "falloff.constant: must be 0 or at least 1e-30"},
+        Case{"mesh_scale_1e-300.json", "grid.size: gives voxels of"},
+        Case{"mesh_scale_1e200.json", "lies beyond 1e+15 of the origin"}),
     [](const testing::TestParamInfo<Case>& p) {
       std::string name = p.param.file;
       std::replace_if(

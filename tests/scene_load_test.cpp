@@ -127,5 +127,21 @@ TEST(SceneLoad, ErrorsAreOneLine) {
   EXPECT_NE(e.find("scene.json"), std::string::npos) << e;
 }
 
+// Directions are normalised in double whatever their length, so an up vector of length 1e-160 or
+// a spot direction of length 1e308 are the unit vectors they point along, not NaN or 0.
+TEST(SceneLoad, DirectionsOfAnyLengthNormalise) {
+  const std::string dir = testTempDir();
+  std::ofstream(dir + "s.json")
+      << R"({"meshes": [{"file": ")" << sourcePath("scenes/cornell_box.obj")
+      << R"("}], "camera": {"position": [278, 273, -800], "look_at": [278, 273, 0],
+             "up": [0, 1e-160, 0]},
+             "lights": [{"type": "spot", "position": [278, 500, 278],
+                         "direction": [1e308, -1e308, 0], "intensity": [1, 1, 1]}]})";
+  const Scene s = loadScene(dir + "s.json");
+  EXPECT_EQ(s.camera.up, glm::dvec3(0, 1, 0));
+  EXPECT_NEAR(s.lights[0].direction.x, std::sqrt(0.5), 1e-15);
+  EXPECT_NEAR(s.lights[0].direction.y, -std::sqrt(0.5), 1e-15);
+}
+
 }  // namespace
 }  // namespace voxgi::test

@@ -2,6 +2,7 @@
 // failure or a failed diff, 2 bad input (one line naming the file and field).
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <mutex>
 #include <unistd.h>
@@ -235,6 +236,18 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
   return kExitOk;
 }
 
+// An image with a NaN or infinite pixel is not written: it would be garbage with exit 0. Input
+// checks are meant to make this unreachable; if it happens, it is voxgi's bug (exit 1).
+void requireFinite(const Image& image, const std::string& what) {
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const glm::vec3 p = image.at(x, y);
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+        throw std::runtime_error(what + " has a non-finite pixel at (" + std::to_string(x) + ", " +
+                                 std::to_string(y) + "); nothing written");
+    }
+}
+
 std::atomic<bool> interrupted{false};
 
 // A technique of the registry: every stage it plans on the chosen backend, then its image.
@@ -244,6 +257,7 @@ int cmdRenderTechnique(const Common& c, const std::string& out, const std::strin
   const StageRun run = runStages(c, nullptr);
   const Technique& technique = findTechnique(c.technique);
   const Image image = bufferImage(run.buffers.at(technique.image));
+  requireFinite(image, std::string(technique.name) + "'s image");
   writeExr(out, image);
   if (!png.empty()) writePng(png, image);
   std::cout << technique.name << " rendered " << run.scene.camera.width << "x"
@@ -284,6 +298,7 @@ int cmdRenderPath(const Common& c, const reference::PathTraceOptions& base, cons
     return 130;
   }
   if (tty) std::cerr << "\n";
+  requireFinite(result.image, "the path-traced image");
   writeExr(out, result.image);
   writeExr(reference::variancePath(out), result.variance);
   if (!png.empty()) writePng(png, result.image);
