@@ -61,21 +61,35 @@ struct Emitter {
   float area;
 };
 
+// Everything the tracer sees is relative to the centre of the scene's bounds, subtracted in double
+// before anything becomes float, so that a scene 1e12 units from the origin renders as it does at
+// the origin (float world coordinates would keep a few digits there).
 struct Setup {
+  dvec3 origin{0.0};
   RayScene rays{RayScene::BuildQuality::high};  // built once, traced millions of times
   std::vector<std::vector<vec3>> normals;       // per mesh, per triangle: unit right-hand normal
   std::vector<Emitter> emitters;
-  std::vector<float> emitterCdf;  // by area * luminance
-  float emitterWeight = 0.0f;     // sum of area * luminance
-  float sceneScale = 1.0f;        // bounds diagonal, for the ray offset
+  std::vector<float> emitterCdf;     // by area * luminance
+  float emitterWeight = 0.0f;        // sum of area * luminance
+  float sceneScale = 1.0f;           // bounds diagonal, for the ray offset
+  std::vector<vec3> lightPositions;  // per light, relative to origin
+
+  // A world position in the tracer's frame.
+  vec3 local(const dvec3& p) const { return vec3(p - origin); }
 
   explicit Setup(const Scene& scene) {
     const auto [lo, hi] = scene.bounds();
-    if (lo.x <= hi.x) sceneScale = float(glm::length(hi - lo));
+    if (lo.x <= hi.x) {
+      sceneScale = float(glm::length(hi - lo));
+      origin = 0.5 * (lo + hi);
+    }
+    for (const Light& l : scene.lights) lightPositions.push_back(local(l.position));
     normals.resize(scene.meshes.size());
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
       const Mesh& mesh = scene.meshes[m];
-      const std::vector<vec3> vertices(mesh.positions.begin(), mesh.positions.end());
+      std::vector<vec3> vertices;
+      vertices.reserve(mesh.positions.size());
+      for (const dvec3& p : mesh.positions) vertices.push_back(local(p));
       rays.addMesh(unsigned(m), vertices, mesh.triangles);
       const Material& material = scene.materials[mesh.material];
       for (size_t t = 0; t < mesh.triangles.size(); ++t) {
@@ -85,7 +99,7 @@ struct Setup {
         const double len = glm::length(n);
         normals[m].push_back(len > 0.0 ? vec3(n / len) : vec3(0.0f));
         if (material.emissive() && len > 0.0) {
-          emitters.push_back({vec3(a), vec3(b - a), vec3(c - a), vec3(n / len), material.emission,
+          emitters.push_back({local(a), vec3(b - a), vec3(c - a), vec3(n / len), material.emission,
                               float(0.5 * len)});
           emitterWeight += emitters.back().area * luminance(material.emission);
           emitterCdf.push_back(emitterWeight);
@@ -245,14 +259,15 @@ class Tracer {
         sum += f * e.emission * glm::dot(n, toLight) * w / lightPdf;
       }
     }
-    for (const Light& l : scene_.lights) {
+    for (size_t li = 0; li < scene_.lights.size(); ++li) {
+      const Light& l = scene_.lights[li];
       vec3 wi;
       float dist = INFINITY;
       vec3 irradiance = l.intensity;
       if (l.type == Light::Type::directional) {
         wi = -vec3(l.direction);
       } else {
-        wi = vec3(l.position) - x;
+        wi = s_.lightPositions[li] - x;
         dist = glm::length(wi);
         wi /= dist;
         irradiance *= falloff(l, dist);
@@ -307,7 +322,7 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
         const float px = (2.0f * (float(x) + rng.next()) / float(w) - 1.0f) * tanHalf * aspect;
         const float py = (1.0f - 2.0f * (float(y) + rng.next()) / float(h)) * tanHalf;
         const vec3 dir = glm::normalize(forward + px * right + py * up);
-        const glm::dvec3 l(tracer.radiance(vec3(cam.position), dir, rng));
+        const glm::dvec3 l(tracer.radiance(setup.local(cam.position), dir, rng));
         sum += l;
         sum2 += l * l;
       }
