@@ -12,10 +12,9 @@
 #include <ImfStdIO.h>
 #include <Iex.h>
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STB_IMAGE_WRITE_IMPLEMENTATION
-#include <stb/stb_image.h>
-#include <stb/stb_image_write.h>
+// PNG through libpng's simplified API: a maintained decoder that checks its input (stb_image, used
+// before, has undefined behaviour on crafted files, which the image_png fuzz target found).
+#include <png.h>
 
 #include "common/error.h"
 #include "common/input_file.h"
@@ -61,7 +60,18 @@ Image readExr(const std::string& path) {
   try {
     Imf::InputFile file(path.c_str());
     const Imath::Box2i dw = file.header().dataWindow();
-    Image image(dw.max.x - dw.min.x + 1, dw.max.y - dw.min.y + 1);
+    // The size and the channels are checked before the pixels are allocated: a header can
+    // declare any window, and a missing channel would silently read as zeros.
+    const int64_t w = int64_t(dw.max.x) - dw.min.x + 1, h = int64_t(dw.max.y) - dw.min.y + 1;
+    if (w < 1 || h < 1 || w > 16384 || h > 16384)
+      throw InputError(
+          path, "data window",
+          std::to_string(w) + "x" + std::to_string(h) + " is outside 1..16384 per side");
+    for (const char* c : {"R", "G", "B"})
+      if (file.header().channels().findChannel(c) == nullptr)
+        throw InputError(path, std::string("channel ") + c,
+                         "missing: voxgi reads linear RGB (R, G and B channels)");
+    Image image{int(w), int(h)};
     Imf::FrameBuffer fb;
     const size_t xs = sizeof(glm::vec3), ys = xs * size_t(image.width);
     auto* base = reinterpret_cast<char*>(image.pixels.data()) -
@@ -74,6 +84,8 @@ Image readExr(const std::string& path) {
     file.setFrameBuffer(fb);
     file.readPixels(dw.min.y, dw.max.y);
     return image;
+  } catch (const InputError&) {
+    throw;
   } catch (const std::exception& e) {
     throw InputError(path, "", std::string("cannot read EXR: ") + e.what());
   }
@@ -82,27 +94,47 @@ Image readExr(const std::string& path) {
 Image readImage(const std::string& path) {
   if (std::filesystem::path(path).extension() != ".png") return readExr(path);
   requireInputFile(path, "", "PNG image");
-  int w = 0, h = 0, channels = 0;
-  unsigned char* bytes = stbi_load(path.c_str(), &w, &h, &channels, 3);
-  if (bytes == nullptr)
-    throw InputError(path, "", std::string("cannot read PNG: ") + stbi_failure_reason());
-  Image image(w, h);
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str()))
+    throw InputError(path, "", std::string("cannot read PNG: ") + png.message);
+  // The size is checked before the pixels are allocated, as for every other loader.
+  if (png.width < 1 || png.height < 1 || png.width > 16384 || png.height > 16384) {
+    png_image_free(&png);
+    throw InputError(path, "size",
+                     std::to_string(png.width) + "x" + std::to_string(png.height) +
+                         " is outside 1..16384 per side");
+  }
+  png.format = PNG_FORMAT_RGB;  // 8-bit sRGB whatever the file's colour type and depth
+  std::vector<unsigned char> bytes(PNG_IMAGE_SIZE(png));
+  if (!png_image_finish_read(&png, nullptr, bytes.data(), 0, nullptr)) {
+    const std::string message = png.message;
+    png_image_free(&png);
+    throw InputError(path, "", "cannot read PNG: " + message);
+  }
+  Image image(int(png.width), int(png.height));
   for (size_t i = 0; i < image.pixels.size(); ++i)
     for (int c = 0; c < 3; ++c)
       image.pixels[i][c] = srgbToLinear(float(bytes[i * 3 + size_t(c)]) / 255.0f);
-  stbi_image_free(bytes);
   return image;
 }
 
 void writeRgb8Png(const std::string& path, int width, int height,
                   const std::vector<unsigned char>& rgb) {
   checkOutputPath(path);
-  std::string bytes;  // encoded in memory, then written atomically
-  const auto append = [](void* out, void* data, int size) {
-    static_cast<std::string*>(out)->append(static_cast<const char*>(data), size_t(size));
-  };
-  if (!stbi_write_png_to_func(append, &bytes, width, height, 3, rgb.data(), width * 3))
-    throw InputError(path, "", "cannot encode PNG");
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  png.width = png_uint_32(width);
+  png.height = png_uint_32(height);
+  png.format = PNG_FORMAT_RGB;
+  // Encoded in memory (libpng says how much room it needs first), then written atomically.
+  png_alloc_size_t size = 0;
+  if (!png_image_write_to_memory(&png, nullptr, &size, 0, rgb.data(), 0, nullptr))
+    throw InputError(path, "", std::string("cannot encode PNG: ") + png.message);
+  std::string bytes(size, '\0');
+  if (!png_image_write_to_memory(&png, bytes.data(), &size, 0, rgb.data(), 0, nullptr))
+    throw InputError(path, "", std::string("cannot encode PNG: ") + png.message);
+  bytes.resize(size);
   writeFileAtomically(path, bytes);
 }
 

@@ -10,6 +10,7 @@
 
 #include "common/error.h"
 #include "common/input_file.h"
+#include "common/gltf_check.h"
 #include "common/ply_check.h"
 #include "common/scene_load.h"
 
@@ -63,12 +64,14 @@ void checkMeshFileContent(const std::string& path) {
     checkPly(path);
   } else if (ext == ".glb") {
     if (magic != "glTF") throw InputError(path, "", "not a binary glTF file (no 'glTF' magic)");
+    checkGltf(path);
   } else if (ext == ".gltf") {
     char c = ' ';
     in.seekg(0);
     while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
     }
     if (c != '{') throw InputError(path, "", "not a glTF file (JSON starting with '{')");
+    checkGltf(path);
   } else if (ext != ".obj") {
     throw InputError(path, "", "unknown mesh format '" + ext + "' (OBJ, glTF, GLB or PLY)");
   }

@@ -1,0 +1,176 @@
+#include "common/gltf_check.h"
+
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+#include "common/input_file.h"
+
+namespace voxgi {
+namespace {
+
+using nlohmann::json;
+
+uint32_t le32(const std::string& bytes, size_t at) {
+  uint32_t v = 0;
+  for (int i = 3; i >= 0; --i) v = (v << 8) | uint8_t(bytes[at + size_t(i)]);
+  return v;
+}
+
+// An unsigned integer member, or `fallback` when absent; InputError otherwise.
+uint64_t count(const std::string& path, const json& object, const char* key,
+               const std::string& field, uint64_t fallback) {
+  const auto it = object.find(key);
+  if (it == object.end()) return fallback;
+  if (!it->is_number_unsigned())
+    throw InputError(path, field + "." + key, "must be a non-negative integer");
+  return it->get<uint64_t>();
+}
+
+// Bytes a data: URI holds (base64 decoded), or the size of the file it names.
+uint64_t uriBytes(const std::string& path, const std::string& uri, const std::string& field) {
+  if (uri.rfind("data:", 0) == 0) {
+    const size_t comma = uri.find(',');
+    if (comma == std::string::npos || uri.find(";base64", 0) > comma)
+      throw InputError(path, field, "only base64 data: URIs are supported");
+    const size_t chars = uri.size() - comma - 1;
+    return chars / 4 * 3;  // an upper bound; padding only makes it smaller
+  }
+  const std::filesystem::path file = std::filesystem::path(path).parent_path() / uri;
+  return requireInputFile(file.string(), field, "glTF buffer file");
+}
+
+size_t componentBytes(uint64_t componentType) {
+  switch (componentType) {
+    case 5120:  // BYTE
+    case 5121:  // UNSIGNED_BYTE
+      return 1;
+    case 5122:  // SHORT
+    case 5123:  // UNSIGNED_SHORT
+      return 2;
+    case 5125:  // UNSIGNED_INT
+    case 5126:  // FLOAT
+      return 4;
+  }
+  return 0;
+}
+
+size_t typeComponents(const std::string& type) {
+  static const std::pair<const char*, size_t> types[] = {
+      {"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4}, {"MAT2", 4}, {"MAT3", 9}, {"MAT4", 16}};
+  for (const auto& [name, n] : types)
+    if (type == name) return n;
+  return 0;
+}
+
+}  // namespace
+
+void checkGltf(const std::string& path) {
+  const uint64_t size = requireInputFile(path, "", "glTF file");
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text;
+  uint64_t binChunk = 0;  // bytes of the GLB's BIN chunk
+  const bool glb = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+  if (glb) {
+    if (bytes.size() < 20) throw InputError(path, "header", "shorter than a GLB header");
+    if (le32(bytes, 4) != 2) throw InputError(path, "header", "not glTF version 2");
+    if (le32(bytes, 8) != size)
+      throw InputError(path, "header",
+                       "declares " + std::to_string(le32(bytes, 8)) + " bytes, the file has " +
+                           std::to_string(size));
+    size_t at = 12;
+    for (int chunk = 0; at + 8 <= bytes.size(); ++chunk) {
+      const uint64_t length = le32(bytes, at);
+      const std::string type = bytes.substr(at + 4, 4);
+      if (at + 8 + length > bytes.size())
+        throw InputError(path, "chunk " + std::to_string(chunk), "runs past the end of the file");
+      if (chunk == 0 && type != std::string("JSON", 4))
+        throw InputError(path, "chunk 0", "the first chunk must be JSON");
+      if (chunk == 0) text = bytes.substr(at + 8, length);
+      if (chunk == 1 && type == std::string("BIN\0", 4)) binChunk = length;
+      at += 8 + length;
+    }
+  } else {
+    text = bytes;
+  }
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::exception& e) {
+    throw InputError(path, "", std::string("malformed glTF JSON: ") + e.what());
+  }
+  if (!doc.is_object()) throw InputError(path, "", "not a glTF document (no top-level object)");
+  const auto array = [&](const char* key) {
+    const auto it = doc.find(key);
+    if (it == doc.end()) return json::array();
+    if (!it->is_array()) throw InputError(path, key, "must be an array");
+    return *it;
+  };
+  std::vector<uint64_t> bufferBytes;
+  const json buffers = array("buffers");
+  for (size_t i = 0; i < buffers.size(); ++i) {
+    const std::string field = "buffers[" + std::to_string(i) + "]";
+    if (!buffers[i].is_object()) throw InputError(path, field, "must be an object");
+    const uint64_t length = count(path, buffers[i], "byteLength", field, 0);
+    const auto uri = buffers[i].find("uri");
+    uint64_t available = binChunk;
+    if (uri != buffers[i].end()) {
+      if (!uri->is_string()) throw InputError(path, field + ".uri", "must be a string");
+      available = uriBytes(path, uri->get<std::string>(), field + ".uri");
+    } else if (!glb || i != 0) {
+      throw InputError(path, field, "has no uri (only a GLB's first buffer may use its BIN chunk)");
+    }
+    if (length > available)
+      throw InputError(
+          path, field + ".byteLength",
+          std::to_string(length) + " bytes declared, " + std::to_string(available) + " available");
+    bufferBytes.push_back(length);
+  }
+  std::vector<uint64_t> viewBytes;
+  const json views = array("bufferViews");
+  for (size_t i = 0; i < views.size(); ++i) {
+    const std::string field = "bufferViews[" + std::to_string(i) + "]";
+    if (!views[i].is_object()) throw InputError(path, field, "must be an object");
+    const uint64_t buffer = count(path, views[i], "buffer", field, ~0ull);
+    const uint64_t offset = count(path, views[i], "byteOffset", field, 0);
+    const uint64_t length = count(path, views[i], "byteLength", field, 0);
+    if (buffer >= bufferBytes.size()) throw InputError(path, field + ".buffer", "names no buffer");
+    if (offset > bufferBytes[buffer] || length > bufferBytes[buffer] - offset)
+      throw InputError(path, field, "runs past the end of buffers[" + std::to_string(buffer) + "]");
+    viewBytes.push_back(length);
+  }
+  const json accessors = array("accessors");
+  for (size_t i = 0; i < accessors.size(); ++i) {
+    const std::string field = "accessors[" + std::to_string(i) + "]";
+    const json& a = accessors[i];
+    if (!a.is_object()) throw InputError(path, field, "must be an object");
+    const uint64_t n = count(path, a, "count", field, 0);
+    const size_t component = componentBytes(count(path, a, "componentType", field, 0));
+    const auto type = a.find("type");
+    const size_t components =
+        type != a.end() && type->is_string() ? typeComponents(type->get<std::string>()) : 0;
+    if (component == 0 || components == 0)
+      throw InputError(path, field, "unknown componentType or type");
+    if (!a.contains("bufferView")) {
+      // Sparse or zero-filled: Assimp still allocates count elements; bound them by the file.
+      if (n > size)
+        throw InputError(path, field + ".count", "more elements than the file has bytes");
+      continue;
+    }
+    const uint64_t view = count(path, a, "bufferView", field, 0);
+    if (view >= viewBytes.size()) throw InputError(path, field + ".bufferView", "names no view");
+    const uint64_t offset = count(path, a, "byteOffset", field, 0);
+    const long double need =
+        static_cast<long double>(offset) + static_cast<long double>(n) * component * components;
+    if (need > static_cast<long double>(viewBytes[view]))
+      throw InputError(path, field,
+                       "needs more bytes than bufferViews[" + std::to_string(view) + "] holds");
+  }
+}
+
+}  // namespace voxgi

@@ -1,0 +1,14 @@
+// A check of a glTF 2.0 file (.gltf JSON or .glb binary) before Assimp reads it: Assimp allocates
+// what a file's buffers and accessors declare (a 2 KB .glb can ask for 4 GB). Every buffer, view
+// and accessor must fit in the data the file really has — its BIN chunk, a data: URI, or an
+// external file next to it — so what Assimp allocates is bounded by the files' sizes. Throws
+// InputError naming the file and the field (buffers[0].byteLength, accessors[3].count, ...).
+#pragma once
+
+#include <string>
+
+namespace voxgi {
+
+void checkGltf(const std::string& path);
+
+}  // namespace voxgi
