@@ -17,7 +17,9 @@
 #include <png.h>
 
 #include "common/error.h"
+#include "common/exr_check.h"
 #include "common/input_file.h"
+#include "common/memory.h"
 #include "common/output_file.h"
 
 namespace voxgi {
@@ -56,7 +58,7 @@ void writeExr(const std::string& path, const Image& image) {
 }
 
 Image readExr(const std::string& path) {
-  requireInputFile(path, "", "EXR image");
+  checkExrHeader(path);
   try {
     Imf::InputFile file(path.c_str());
     const Imath::Box2i dw = file.header().dataWindow();
@@ -71,6 +73,13 @@ Image readExr(const std::string& path) {
       if (file.header().channels().findChannel(c) == nullptr)
         throw InputError(path, std::string("channel ") + c,
                          "missing: voxgi reads linear RGB (R, G and B channels)");
+    // Every chunk of pixels must be in the file's offset table before the image is allocated: a
+    // truncated file, or a header that declares a larger window than the file holds, is refused.
+    if (!file.isComplete())
+      throw InputError(path, "data window",
+                       std::to_string(w) + "x" + std::to_string(h) +
+                           ": the file does not hold every pixel (truncated or corrupt)");
+    requireMemory(uint64_t(w) * uint64_t(h) * sizeof(glm::vec3), "the image", path, "data window");
     Image image{int(w), int(h)};
     Imf::FrameBuffer fb;
     const size_t xs = sizeof(glm::vec3), ys = xs * size_t(image.width);
@@ -93,7 +102,7 @@ Image readExr(const std::string& path) {
 
 Image readImage(const std::string& path) {
   if (std::filesystem::path(path).extension() != ".png") return readExr(path);
-  requireInputFile(path, "", "PNG image");
+  const uint64_t fileBytes = requireInputFile(path, "", "PNG image");
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
   if (!png_image_begin_read_from_file(&png, path.c_str()))
@@ -105,7 +114,24 @@ Image readImage(const std::string& path) {
                      std::to_string(png.width) + "x" + std::to_string(png.height) +
                          " is outside 1..16384 per side");
   }
+  // Deflate expands at most 1032:1, and a row holds at least a filter byte and one bit per pixel:
+  // a header that declares more than the file can hold is refused before anything is allocated.
+  const uint64_t leastRawBytes = uint64_t(png.height) * (1 + (uint64_t(png.width) + 7) / 8);
+  if (leastRawBytes > 1032 * fileBytes) {
+    png_image_free(&png);
+    throw InputError(path, "size",
+                     std::to_string(png.width) + "x" + std::to_string(png.height) +
+                         " cannot be compressed into " + std::to_string(fileBytes) +
+                         " bytes (the file is truncated or corrupt)");
+  }
   png.format = PNG_FORMAT_RGB;  // 8-bit sRGB whatever the file's colour type and depth
+  try {
+    requireMemory(uint64_t(png.width) * png.height * (3 + sizeof(glm::vec3)), "the image", path,
+                  "size");
+  } catch (...) {
+    png_image_free(&png);
+    throw;
+  }
   std::vector<unsigned char> bytes(PNG_IMAGE_SIZE(png));
   if (!png_image_finish_read(&png, nullptr, bytes.data(), 0, nullptr)) {
     const std::string message = png.message;

@@ -6,7 +6,10 @@
 
 namespace voxgi {
 
-// Bytes the system can still hand out (MemAvailable from /proc/meminfo; 0 if unknown).
+// Bytes this process can still allocate: the least of MemAvailable, what RLIMIT_AS and RLIMIT_DATA
+// leave beside what it uses, and what its cgroup's memory.max leaves; kMemoryUnknown if none is
+// known.
+constexpr uint64_t kMemoryUnknown = ~uint64_t(0);
 uint64_t availableMemoryBytes();
 
 // Throws InputError(file, field, ...) when `bytes` exceeds the available memory, naming `what`.

@@ -1,9 +1,9 @@
-#include "common/parallel.h"
 #include "common/voxel_triangles.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include "common/parallel.h"
 #include "shaders/shared/voxelize_kernel.h"
 
 namespace voxgi {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/voxel_overflow.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
 #include "gpu/volumes.h"
@@ -22,6 +23,8 @@ void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& bu
                          ", above this GL's GL_MAX_3D_TEXTURE_SIZE " +
                          std::to_string(context.max3dTextureSize()));
   checkStageMemory(ctx, StageId::common_voxelize, 2.0);  // GPU copies plus the read-back buffers
+  refuseRepeatedTriangles(ctx.triangles, n, ctx.settings.voxelizeMode == VoxelizeMode::antialiased,
+                          ctx.scene.file);
   const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
   const bool emissive =
       ctx.plan.on(Effect::emission);  // emissionScale may be 0 under plan.mode=full

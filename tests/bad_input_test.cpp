@@ -2,6 +2,7 @@
 // exit code 2, within 5 s — never a crash, a hang, exit 0 with garbage or an internal error.
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -16,22 +17,38 @@ struct Case {
   const char* says;  // part of the one line
 };
 
+// Runs `command` and checks the one line: exit 2, names `file`, says `says`, printable only.
+void expectOneLine(const std::string& command, const std::string& file, const std::string& says) {
+  const auto start = std::chrono::steady_clock::now();
+  const CommandResult r = voxgi(command);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+  EXPECT_NE(r.output.find(file), std::string::npos) << "names the file: " << r.output;
+  EXPECT_NE(r.output.find(says), std::string::npos) << r.output;
+  EXPECT_TRUE(std::all_of(r.output.begin(), r.output.end() - 1,
+                          [](char ch) { return ch >= 0x20 && ch < 0x7f; }))
+      << "printable: " << r.output;
+  EXPECT_LT(seconds, 5.0);
+}
+
+std::string testName(const testing::TestParamInfo<Case>& p) {
+  std::string name = p.param.file;
+  std::replace_if(
+      name.begin(), name.end(), [](char ch) { return !std::isalnum(ch); }, '_');
+  return name;
+}
+
+// Scenes and meshes, rendered.
 class BadInput : public testing::TestWithParam<Case> {};
 
 TEST_P(BadInput, IsOneLineAndExitTwo) {
   const Case& c = GetParam();
   const std::string file = sourcePath(std::string("tests/data/bad/") + c.file);
-  const auto start = std::chrono::steady_clock::now();
-  const CommandResult r =
-      voxgi("render " + file + " --backend cpu --image 16 --resolution 16 --out " + testTempDir() +
-            "out.exr");
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_EQ(r.code, 2) << r.output;
-  EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
-  EXPECT_NE(r.output.find(c.file), std::string::npos) << "names the file: " << r.output;
-  EXPECT_NE(r.output.find(c.says), std::string::npos) << r.output;
-  EXPECT_LT(seconds, 5.0);
+  expectOneLine("render " + file + " --backend cpu --image 16 --resolution 16 --out " +
+                    testTempDir() + "out.exr",
+                c.file, c.says);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -55,13 +72,60 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"light_at_1e39.json", "lights[0].position: must lie within 1e+15"},
         Case{"falloff_1e-45.json", "falloff.constant: must be 0 or at least 1e-30"},
         Case{"mesh_scale_1e-300.json", "grid.size: gives voxels of"},
-        Case{"mesh_scale_1e200.json", "lies beyond 1e+15 of the origin"}),
-    [](const testing::TestParamInfo<Case>& p) {
-      std::string name = p.param.file;
-      std::replace_if(
-          name.begin(), name.end(), [](char ch) { return !std::isalnum(ch); }, '_');
-      return name;
-    });
+        Case{"mesh_scale_1e200.json", "lies beyond 1e+15 of the origin"},
+        Case{"escape_in_header.ply", "unknown format '\\x1b[2Jascii'"}),
+    testName);
+
+// Images (references, masks and compare's inputs), compared.
+class BadImage : public testing::TestWithParam<Case> {};
+
+TEST_P(BadImage, IsOneLineAndExitTwo) {
+  const Case& c = GetParam();
+  const std::string file = sourcePath(std::string("tests/data/bad/") + c.file);
+  expectOneLine("compare " + file + " " + file + " --error-png " + testTempDir() + "e.png", c.file,
+                c.says);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Files, BadImage,
+    testing::Values(Case{"exr_without_rgb.exr", "channel R: missing"},
+                    Case{"exr_attribute_past_end.exr",
+                         "header attribute 8 (comment): declares 2147483647 bytes"},
+                    Case{"exr_window_past_file.exr", "Early end of file"},
+                    Case{"png_size_past_file.png", "16384x16384 cannot be compressed into 268"}),
+    testName);
+
+// A million copies of one triangle overflow the fixed-point sums of a voxel (docs/stages/
+// voxelize.md); 40000 copies are enough to show the one line and the exit code.
+TEST(BadInputGenerated, DuplicateTrianglesOverflowOneVoxel) {
+  const std::string file = testTempDir() + "duplicates.obj";
+  {
+    std::ofstream obj(file);
+    obj << "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (int i = 0; i < 40000; ++i) obj << "f 1 2 3\n";
+  }
+  expectOneLine("render " + file + " --backend cpu --image 16 --resolution 16 --out " +
+                    testTempDir() + "out.exr",
+                "duplicates.obj", "a triangle is repeated 40000 times");
+}
+
+// Copies that differ by a rounding step are not found by the check for repeated triangles; the
+// accumulation finds the overflow instead (and stops at it).
+TEST(BadInputGenerated, NearDuplicateTrianglesOverflowOneVoxel) {
+  const std::string file = testTempDir() + "near_duplicates.obj";
+  {
+    std::ofstream obj(file);
+    obj << "v 0 0 16\nv 16 0 16\nv 0 16 16\nf 1 2 3\n";  // spans the grid: voxels of ~1 unit
+    for (int i = 0; i < 36000; ++i) {  // one face of weight per copy: 36000 > 32768
+      const double dx = 1e-6 * i;      // each copy covers some voxels near (4, 4, 8) whole
+      obj << "v " << 3 + dx << " 3 8\nv " << 9 + dx << " 3 8\nv " << 3 + dx << " 9 8\n";
+      obj << "f " << 4 + 3 * i << " " << 5 + 3 * i << " " << 6 + 3 * i << "\n";
+    }
+  }
+  expectOneLine("render " + file + " --backend cpu --image 16 --resolution 16 --out " +
+                    testTempDir() + "out.exr",
+                "near_duplicates.obj", "fall into one voxel (fixed-point overflow)");
+}
 
 }  // namespace
 }  // namespace voxgi::test

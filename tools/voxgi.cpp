@@ -414,7 +414,7 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help on a subcommand, --version
-    std::cerr << "voxgi: " << e.what() << " (see voxgi --help)\n";
+    std::cerr << "voxgi: " << printable(e.what()) << " (see voxgi --help)\n";
     return kExitBadInput;
   }
   std::unique_ptr<tbb::global_control> limit;
@@ -436,11 +436,23 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::cerr << "voxgi: " << e.what() << "\n";
     return kExitBadInput;
+  } catch (const std::filesystem::filesystem_error& e) {
+    // A path the user gave that the filesystem refuses (permissions, a full disk, a name too
+    // long) where no check named it first: still one line naming the path.
+    std::cerr << "voxgi: " << printable(e.path1().string()) << ": " << printable(e.code().message())
+              << "\n";
+    return kExitBadInput;
+  } catch (const std::bad_alloc&) {
+    // The memory checks before each large allocation (common/memory.h) name the field to lower;
+    // this is an allocation they did not foresee.
+    std::cerr << "voxgi: out of memory (an allocation failed past voxgi's memory checks)\n";
+    return kExitInternal;
   } catch (const gpu::GlUnavailable& e) {
-    std::cerr << "voxgi: no OpenGL 4.5 context: " << e.what() << " (use --backend cpu or auto)\n";
+    std::cerr << "voxgi: no OpenGL 4.5 context: " << printable(e.what())
+              << " (use --backend cpu or auto)\n";
     return kExitInternal;
   } catch (const std::exception& e) {
-    std::cerr << "voxgi: internal error: " << e.what() << "\n";
+    std::cerr << "voxgi: internal error: " << printable(e.what()) << "\n";
     return kExitInternal;
   }
   return kExitInternal;

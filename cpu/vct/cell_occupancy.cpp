@@ -1,9 +1,10 @@
-#include "common/parallel.h"
 #include "cpu/vct/cell_occupancy.h"
 
 #include <algorithm>
 
 #include <tbb/blocked_range.h>
+
+#include "common/parallel.h"
 
 namespace voxgi::cpu {
 

@@ -1,4 +1,3 @@
-#include "common/parallel.h"
 #include "validation/reference/path_trace.h"
 
 #include <algorithm>
@@ -8,6 +7,8 @@
 #include <numbers>
 #include <vector>
 
+#include "common/memory.h"
+#include "common/parallel.h"
 #include "common/ray_scene.h"
 
 namespace voxgi::reference {
@@ -301,6 +302,10 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
   const Setup setup(scene);
   const Camera& cam = scene.camera;
   const int w = cam.width, h = cam.height;
+  // The image and its variance, and the encoded file a writer builds from the image.
+  requireMemory(3 * uint64_t(w) * uint64_t(h) * sizeof(vec3),
+                "the path-traced image at " + std::to_string(w) + "x" + std::to_string(h),
+                scene.file, "camera.resolution");
   PathTraceResult result;
   result.image = Image(w, h);
   result.variance = Image(w, h);

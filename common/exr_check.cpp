@@ -1,0 +1,70 @@
+#include "common/exr_check.h"
+
+#include <cstdint>
+#include <fstream>
+
+#include "common/error.h"
+#include "common/input_file.h"
+
+namespace voxgi {
+namespace {
+
+// The layout of the header, from the OpenEXR file-layout document: a magic number, a version
+// field (low byte 2, flag bits above), then attributes (name NUL, type NUL, int32 size, value)
+// until an empty name.
+constexpr uint32_t kMagic = 20000630;
+constexpr uint32_t kTiled = 0x200, kLongNames = 0x400, kDeep = 0x800, kMultiPart = 0x1000;
+
+uint32_t le32(const unsigned char* b) {
+  return uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
+}
+
+}  // namespace
+
+void checkExrHeader(const std::string& path) {
+  const uint64_t size = requireInputFile(path, "", "EXR image");
+  // Read as a stream, skipping values: a reference image can be gigabytes, its header is small.
+  std::ifstream in(path, std::ios::binary);
+  unsigned char word[4];
+  const auto read4 = [&] { return bool(in.read(reinterpret_cast<char*>(word), 4)); };
+  if (!read4() || le32(word) != kMagic)
+    throw InputError(path, "", "not an OpenEXR file (no magic number)");
+  if (!read4()) throw InputError(path, "version", "the file ends before it");
+  const uint32_t version = le32(word);
+  if ((version & 0xff) != 2)
+    throw InputError(path, "version", "is " + std::to_string(version & 0xff) + ", not 2");
+  if (version & (kDeep | kMultiPart))
+    throw InputError(path, "version",
+                     "deep or multi-part EXR: voxgi reads single-part flat RGB images");
+  if (version & ~(0xffu | kTiled | kLongNames))
+    throw InputError(path, "version", "unknown flags " + std::to_string(version & ~0xffu));
+  const size_t maxName = version & kLongNames ? 255 : 31;
+  // A NUL-terminated name of at most maxName characters.
+  const auto name = [&](const std::string& field) {
+    std::string s;
+    for (char c; in.get(c) && c != '\0';) {
+      if (s.size() == maxName)
+        throw InputError(path, field,
+                         "not terminated within " + std::to_string(maxName) + " characters");
+      s += c;
+    }
+    if (!in) throw InputError(path, field, "the file ends inside it");
+    return s;
+  };
+  for (int attribute = 0;; ++attribute) {
+    const std::string field = "header attribute " + std::to_string(attribute);
+    const std::string attributeName = name(field);
+    if (attributeName.empty()) return;  // the end of the header
+    const std::string named = field + " (" + attributeName + ")";
+    name(named + " type");
+    if (!read4()) throw InputError(path, named, "the file ends inside its size");
+    const uint64_t valueBytes = le32(word), left = size - uint64_t(in.tellg());
+    if (valueBytes > left)
+      throw InputError(path, named,
+                       "declares " + std::to_string(valueBytes) + " bytes, the file has " +
+                           std::to_string(left) + " left");
+    in.seekg(std::streamoff(valueBytes), std::ios::cur);
+  }
+}
+
+}  // namespace voxgi
