@@ -1,5 +1,7 @@
 // Mesh files through Assimp: triangles of every node, in world space, with their materials.
+#include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -135,10 +137,29 @@ void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& tra
       scene.meshes.push_back(std::move(mesh));
     }
   }
-  size_t triangles = 0;
-  for (size_t m = meshesBefore; m < scene.meshes.size(); ++m)
-    triangles += scene.meshes[m].triangles.size();
+  size_t triangles = 0, withArea = 0;
+  for (size_t m = meshesBefore; m < scene.meshes.size(); ++m) {
+    const Mesh& mesh = scene.meshes[m];
+    triangles += mesh.triangles.size();
+    // Edges scaled to a largest component of 1 first, so a tiny mesh does not underflow to 0.
+    const auto unitMax = [](const glm::dvec3& e) {
+      const double largest = std::max({std::abs(e.x), std::abs(e.y), std::abs(e.z)});
+      return largest > 0.0 ? e / largest : e;
+    };
+    for (const glm::uvec3& t : mesh.triangles) {
+      const glm::dvec3& a = mesh.positions[t.x];
+      if (glm::cross(unitMax(mesh.positions[t.y] - a), unitMax(mesh.positions[t.z] - a)) !=
+          glm::dvec3(0.0))
+        ++withArea;
+    }
+  }
   if (triangles == 0) throw InputError(path, "", "no triangles (only points or lines, or nothing)");
+  // A file whose every triangle is degenerate would render as nothing, and a bare one would get a
+  // grid of zero size: refused, as a file without triangles is.
+  if (withArea == 0)
+    throw InputError(path, "",
+                     "every one of its " + std::to_string(triangles) +
+                         " triangles has zero area (nothing to render)");
 }
 
 }  // namespace voxgi

@@ -1,6 +1,7 @@
 #include "common/ply_check.h"
 
 #include <bit>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstring>
@@ -68,9 +69,31 @@ std::vector<std::string_view> words(std::string_view line) {
   return out;
 }
 
-// The faces' vertex index list, the one property whose values must index the vertices.
+std::string lower(std::string s) {
+  for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// What Assimp's PLY importer makes of an element, by its name (Assimp 5.2 compares some names
+// without case, so this does too).
+enum class Semantic { vertex, face, tristrips, other };
+Semantic semanticOf(const PlyElement& e) {
+  const std::string name = lower(e.name);
+  if (name == "vertex") return Semantic::vertex;
+  if (name == "face") return Semantic::face;
+  if (name == "tristrips") return Semantic::tristrips;
+  return Semantic::other;
+}
+
+// The lists whose values index the vertices: a face's vertex_indices (or vertex_index), and the
+// first list of a tristrips element, which Assimp reads as strips with -1 as the restart.
 bool isVertexIndices(const PlyElement& e, const PlyProperty& p) {
-  return e.name == "face" && p.list && (p.name == "vertex_indices" || p.name == "vertex_index");
+  if (!p.list) return false;
+  if (semanticOf(e) == Semantic::tristrips)
+    for (const PlyProperty& q : e.properties)
+      if (q.list) return &q == &p;
+  const std::string name = lower(p.name);
+  return semanticOf(e) == Semantic::face && (name == "vertex_indices" || name == "vertex_index");
 }
 
 // Reads one value of `type` from a binary body; false at the end of the data.
@@ -234,10 +257,19 @@ PlyHeader checkPly(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const PlyHeader h = readPlyHeader(path, bytes);
+  // Assimp sizes its vertex and face arrays by the first element of each kind and writes the
+  // instances of a second one past their end: one element of each kind at most.
   uint64_t vertices = 0;
   bool haveVertices = false;
-  for (const PlyElement& e : h.elements)
-    if (e.name == "vertex") vertices = e.count, haveVertices = true;
+  int faceElements = 0;
+  for (const PlyElement& e : h.elements) {
+    const Semantic kind = semanticOf(e);
+    if (kind == Semantic::vertex && haveVertices)
+      throw InputError(path, "element " + e.name, "a second vertex element");
+    if (kind == Semantic::vertex) vertices = e.count, haveVertices = true;
+    if ((kind == Semantic::face || kind == Semantic::tristrips) && ++faceElements > 1)
+      throw InputError(path, "element " + e.name, "a second face or tristrips element");
+  }
   const bool ascii = h.format == PlyHeader::Format::ascii;
   BinaryReader reader{bytes, h.bodyOffset, h.format == PlyHeader::Format::binary_big_endian};
   size_t at = h.bodyOffset;  // ASCII position
@@ -274,12 +306,14 @@ PlyHeader checkPly(const std::string& path) {
         if (v < 0.0) throw InputError(path, where, p.name + ": negative list count");
         const auto n = static_cast<uint64_t>(v);
         const bool indices = isVertexIndices(e, p);
+        const bool strips = indices && semanticOf(e) == Semantic::tristrips;
         if (indices && !haveVertices) throw InputError(path, where, "faces but no vertex element");
-        if (indices && n < 3)
+        if (indices && !strips && n < 3)
           throw InputError(path, where,
                            p.name + ": a face needs at least 3 vertices, has " + std::to_string(n));
         for (uint64_t k = 0; k < n; ++k) {
           value(p.type, v);
+          if (strips && v == -1.0) continue;  // a restart of the strip
           if (indices && !(v >= 0.0 && v < double(vertices) && std::floor(v) == v))
             throw InputError(path, where,
                              p.name + ": vertex index " + std::to_string(int64_t(v)) +

@@ -2,6 +2,7 @@
 // exit code 2, within 5 s — never a crash, a hang, exit 0 with garbage or an internal error.
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
@@ -73,7 +74,10 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"falloff_1e-45.json", "falloff.constant: must be 0 or at least 1e-30"},
         Case{"mesh_scale_1e-300.json", "grid.size: gives voxels of"},
         Case{"mesh_scale_1e200.json", "lies beyond 1e+15 of the origin"},
-        Case{"escape_in_header.ply", "unknown format '\\x1b[2Jascii'"}),
+        Case{"escape_in_header.ply", "unknown format '\\x1b[2Jascii'"},
+        Case{"two_face_elements.ply", "element face: a second face or tristrips element"},
+        Case{"two_vertex_elements.ply", "element vertex: a second vertex element"},
+        Case{"tristrips_index_9_of_3.ply", "vertex index 9 outside [0, 3)"}),
     testName);
 
 // Images (references, masks and compare's inputs), compared.
@@ -125,6 +129,41 @@ TEST(BadInputGenerated, NearDuplicateTrianglesOverflowOneVoxel) {
   expectOneLine("render " + file + " --backend cpu --image 16 --resolution 16 --out " +
                     testTempDir() + "out.exr",
                 "near_duplicates.obj", "fall into one voxel (fixed-point overflow)");
+}
+
+// Paths the filesystem refuses, options out of range and meshes with nothing to render: made at
+// test time (links, long names), each one line and exit 2.
+TEST(BadInputGenerated, PathsOptionsAndEmptyMeshes) {
+  const std::string dir = testTempDir();
+  const std::string out = " --backend cpu --image 16 --resolution 16 --out " + dir + "out.exr";
+  const std::string box = sourcePath("scenes/cornell_box.obj");
+  std::filesystem::create_symlink("loop_b.json", dir + "loop_a.json");
+  std::filesystem::create_symlink("loop_a.json", dir + "loop_b.json");
+  const auto scene = [&](const std::string& name, const std::string& meshFile) {
+    std::ofstream(dir + name) << R"({"meshes": [{"file": ")" << meshFile << R"("}]})";
+    return dir + name;
+  };
+  std::ofstream(dir + "flat.obj") << "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n";
+  const struct {
+    std::string command, file, says;
+  } cases[] = {
+      {"render " + dir + out, dir, "is a folder"},
+      {"render " + dir + "loop_a.json" + out, "loop_a.json", "Too many levels of symbolic links"},
+      {"render /dev/null" + out, "/dev/null", "is not a regular file"},
+      {"render " + scene("long.json", std::string(300, 'm') + ".obj") + out, "long.json",
+       "File name too long"},
+      {"render " + scene("nul.json", "tri\\u0000.obj") + out, "nul.json",
+       "the file name contains a NUL byte"},
+      {"render " + dir + "flat.obj" + out, "flat.obj",
+       "every one of its 1 triangles has zero area"},
+      {"render " + box + " --backend cpu --resolution 0 --out " + dir + "o.exr", "--resolution",
+       "0"},
+      {"render " + box + " --backend cpu --image 0 --out " + dir + "o.exr", "--image", "0"},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.command);
+    expectOneLine(c.command, c.file, c.says);
+  }
 }
 
 }  // namespace
