@@ -1,5 +1,6 @@
 #include "common/ply_check.h"
 
+#include <algorithm>
 #include <bit>
 #include <cctype>
 #include <charconv>
@@ -187,6 +188,11 @@ PlyHeader readPlyHeader(const std::string& path, const std::string& bytes) {
     ++lineNumber;
     const auto w = words(line);
     const std::string where = "header line " + std::to_string(lineNumber);
+    // Assimp's header parser stops at a NUL and treats other control bytes its own way: a header
+    // it could read differently from this check is refused.
+    for (const char c : line)
+      if ((static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\r') || c == 0x7f)
+        throw InputError(path, where, "a control character in the header");
     if (lineNumber == 1) {
       if (w.size() != 1 || w[0] != "ply")
         throw InputError(path, where, "not a PLY file (no 'ply')");
@@ -194,6 +200,7 @@ PlyHeader readPlyHeader(const std::string& path, const std::string& bytes) {
     }
     if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
     if (w[0] == "format") {
+      if (sawFormat) throw InputError(path, where, "a second format line");
       if (w.size() != 3 || w[2] != "1.0")
         throw InputError(path, where,
                          "expected 'format ascii|binary_little_endian|"
@@ -267,6 +274,12 @@ PlyHeader checkPly(const std::string& path) {
     if (kind == Semantic::vertex && haveVertices)
       throw InputError(path, "element " + e.name, "a second vertex element");
     if (kind == Semantic::vertex) vertices = e.count, haveVertices = true;
+    for (const char* axis : {"x", "y", "z"})
+      if (kind == Semantic::vertex &&
+          std::none_of(e.properties.begin(), e.properties.end(),
+                       [&](const PlyProperty& p) { return !p.list && p.name == axis; }))
+        throw InputError(path, "element " + e.name,
+                         std::string("no property ") + axis + " (positions need x, y and z)");
     if ((kind == Semantic::face || kind == Semantic::tristrips) && ++faceElements > 1)
       throw InputError(path, "element " + e.name, "a second face or tristrips element");
   }

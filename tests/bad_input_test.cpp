@@ -74,10 +74,12 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"falloff_1e-45.json", "falloff.constant: must be 0 or at least 1e-30"},
         Case{"mesh_scale_1e-300.json", "grid.size: gives voxels of"},
         Case{"mesh_scale_1e200.json", "lies beyond 1e+15 of the origin"},
-        Case{"escape_in_header.ply", "unknown format '\\x1b[2Jascii'"},
+        Case{"bytes_in_header.ply", "unknown format '\\xff\\xfeascii'"},
         Case{"two_face_elements.ply", "element face: a second face or tristrips element"},
         Case{"two_vertex_elements.ply", "element vertex: a second vertex element"},
-        Case{"tristrips_index_9_of_3.ply", "vertex index 9 outside [0, 3)"}),
+        Case{"tristrips_index_9_of_3.ply", "vertex index 9 outside [0, 3)"},
+        Case{"nul_in_property_name.ply", "header line 6: a control character in the header"},
+        Case{"vertex_without_x.ply", "element vertex: no property x"}),
     testName);
 
 // Images (references, masks and compare's inputs), compared.
