@@ -241,6 +241,11 @@ PlyHeader readPlyHeader(const std::string& path, const std::string& bytes) {
     }
   }
   if (!sawFormat) throw InputError(path, "header", "no format line");
+  // An instance of an element without properties takes no bytes, so its count would not be
+  // bounded by the file's size (10^18 of them took forever to walk).
+  for (const PlyElement& e : h.elements)
+    if (e.properties.empty() && e.count > 0)
+      throw InputError(path, "element " + e.name, "declares no properties");
   h.bodyOffset = at;
   // The least the declared elements can take, checked before anything is read or allocated.
   const uint64_t body = bytes.size() - at;

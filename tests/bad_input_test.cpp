@@ -79,7 +79,8 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"two_vertex_elements.ply", "element vertex: a second vertex element"},
         Case{"tristrips_index_9_of_3.ply", "vertex index 9 outside [0, 3)"},
         Case{"nul_in_property_name.ply", "header line 6: a control character in the header"},
-        Case{"vertex_without_x.ply", "element vertex: no property x"}),
+        Case{"vertex_without_x.ply", "element vertex: no property x"},
+        Case{"element_without_properties.ply", "element nothing: declares no properties"}),
     testName);
 
 // Images (references, masks and compare's inputs), compared.
