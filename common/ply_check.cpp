@@ -188,10 +188,13 @@ PlyHeader readPlyHeader(const std::string& path, const std::string& bytes) {
     ++lineNumber;
     const auto w = words(line);
     const std::string where = "header line " + std::to_string(lineNumber);
-    // Assimp's header parser stops at a NUL and treats other control bytes its own way: a header
-    // it could read differently from this check is refused.
-    for (const char c : line)
-      if ((static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\r') || c == 0x7f)
+    // Assimp's header parser stops at a NUL and treats other control bytes (a carriage return
+    // inside a line) its own way: a header it could read differently from this check is refused.
+    // Carriage returns only as CRLF line ends.
+    const std::string_view body =
+        !line.empty() && line.back() == '\r' ? line.substr(0, line.size() - 1) : line;
+    for (const char c : body)
+      if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f)
         throw InputError(path, where, "a control character in the header");
     if (lineNumber == 1) {
       if (w.size() != 1 || w[0] != "ply")
