@@ -201,7 +201,19 @@ PlyHeader readPlyHeader(const std::string& path, const std::string& bytes) {
         throw InputError(path, where, "not a PLY file (no 'ply')");
       continue;
     }
-    if (w.empty() || w[0] == "comment" || w[0] == "obj_info") continue;
+    // Assimp reads an element's properties from the lines right after it, skipping only plain
+    // comments, and ignores property lines after anything else; a binary body starts right after
+    // the LF of end_header. Headers it would read differently are refused.
+    if (w.empty()) throw InputError(path, where, "an empty line in the header");
+    if (h.format != PlyHeader::Format::ascii && sawFormat && line.back() == '\r')
+      throw InputError(path, where, "a binary PLY header must end its lines with LF, not CRLF");
+    const bool inProperties = !h.elements.empty();
+    if (inProperties &&
+        (w[0] == "obj_info" || (w[0] == "comment" && w.size() > 1 && w[1] == "TextureFile")))
+      throw InputError(
+          path, where,
+          std::string(w[0]) + " between the properties of element " + h.elements.back().name);
+    if (w[0] == "comment" || w[0] == "obj_info") continue;
     if (w[0] == "format") {
       if (sawFormat) throw InputError(path, where, "a second format line");
       if (w.size() != 3 || w[2] != "1.0")
