@@ -75,14 +75,12 @@ std::string lower(std::string s) {
   return s;
 }
 
-// What Assimp's PLY importer makes of an element, by its name (Assimp 5.2 compares some names
-// without case, so this does too).
+// What Assimp's PLY importer makes of an element, by its name (case-sensitive, as Assimp's).
 enum class Semantic { vertex, face, tristrips, other };
 Semantic semanticOf(const PlyElement& e) {
-  const std::string name = lower(e.name);
-  if (name == "vertex") return Semantic::vertex;
-  if (name == "face") return Semantic::face;
-  if (name == "tristrips") return Semantic::tristrips;
+  if (e.name == "vertex") return Semantic::vertex;
+  if (e.name == "face") return Semantic::face;
+  if (e.name == "tristrips") return Semantic::tristrips;
   return Semantic::other;
 }
 
@@ -234,6 +232,16 @@ PlyHeader readPlyHeader(const std::string& path, const std::string& bytes) {
       if (w.size() != 3 ||
           std::from_chars(w[2].data(), w[2].data() + w[2].size(), count).ec != std::errc())
         throw InputError(path, where, "expected 'element NAME COUNT'");
+      // Assimp 5.2 parses the count of an element it does not know from the start of its name
+      // (0, or whatever digits the name starts with), so such an element shifts every byte it
+      // reads after it; it reads counts as 32 bits.
+      static const char* known[] = {"vertex", "face", "tristrips", "edge", "material"};
+      if (std::none_of(std::begin(known), std::end(known),
+                       [&](const char* k) { return w[1] == k; }))
+        throw InputError(path, where,
+                         "element '" + std::string(w[1]) +
+                             "': voxgi reads vertex, face, tristrips, edge and material elements");
+      if (count > 0xffffffffu) throw InputError(path, where, "more than 2^32 - 1 instances");
       h.elements.push_back({std::string(w[1]), count, {}});
     } else if (w[0] == "property") {
       if (h.elements.empty()) throw InputError(path, where, "property before any element");
@@ -329,6 +337,9 @@ PlyHeader checkPly(const std::string& path) {
               "'" + std::string(w[next]).substr(0, 32) + "' is not a valid value of its type");
         ++next;
       };
+      // Assimp reads a face's texcoord list as two values per vertex of the face, indexing the
+      // face's vertex list with them (past its end, or through null without one).
+      uint64_t faceVertices = 0, texcoords = 0;
       for (const PlyProperty& p : e.properties) {
         double v = 0.0;
         if (!p.list) {
@@ -338,6 +349,8 @@ PlyHeader checkPly(const std::string& path) {
         value(p.countType, v);
         if (v < 0.0) throw InputError(path, where, p.name + ": negative list count");
         const auto n = static_cast<uint64_t>(v);
+        if (semanticOf(e) == Semantic::face && p.name == "texcoord") texcoords = n;
+        if (isVertexIndices(e, p)) faceVertices = n;
         const bool indices = isVertexIndices(e, p);
         const bool strips = indices && semanticOf(e) == Semantic::tristrips;
         if (indices && !haveVertices) throw InputError(path, where, "faces but no vertex element");
@@ -353,6 +366,10 @@ PlyHeader checkPly(const std::string& path) {
                                  " outside [0, " + std::to_string(vertices) + ")");
         }
       }
+      if (texcoords != 0 && texcoords != 2 * faceVertices)
+        throw InputError(path, where,
+                         "texcoord: " + std::to_string(texcoords) + " values for a face of " +
+                             std::to_string(faceVertices) + " vertices (two per vertex)");
       if (ascii && next != w.size())
         throw InputError(path, where,
                          "the line has " + std::to_string(w.size() - next) +

@@ -80,7 +80,9 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"tristrips_index_9_of_3.ply", "vertex index 9 outside [0, 3)"},
         Case{"nul_in_property_name.ply", "header line 6: a control character in the header"},
         Case{"vertex_without_x.ply", "element vertex: no property x"},
-        Case{"element_without_properties.ply", "element nothing: declares no properties"},
+        Case{"element_without_properties.ply", "element edge: declares no properties"},
+        Case{"unknown_element.ply", "element 'colours': voxgi reads vertex, face"},
+        Case{"texcoord_without_indices.ply", "texcoord: 6 values for a face of 0 vertices"},
         Case{"obj_info_between_properties.ply", "obj_info between the properties of element"}),
     testName);
 
