@@ -16,8 +16,9 @@ const std::string& workFolder();
 // Writes the input to workFolder()/name and returns the path.
 std::string writeInput(const uint8_t* data, size_t size, const std::string& name);
 
-// The targets (tests/fuzz/<name>.cpp), each libFuzzer's LLVMFuzzerTestOneInput in its own binary
-// (tests/fuzz/CMakeLists.txt) and all of them in the replay tool.
+// The targets (tests/fuzz/file_targets.cpp, scene_json.cpp), each libFuzzer's
+// LLVMFuzzerTestOneInput in its own binary (tests/fuzz/CMakeLists.txt) and all of them in the
+// replay tool.
 #define VOXGI_FUZZ_TARGETS(X) \
   X(mesh_obj) X(mesh_ply) X(mesh_gltf) X(mesh_glb) X(scene_json) X(image_exr) X(image_png)
 #define VOXGI_DECLARE_TARGET(name) int name(const uint8_t* data, size_t size);
