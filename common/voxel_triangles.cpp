@@ -62,7 +62,7 @@ void emitTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
   const double maxEdge = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
   const auto subdivision = static_cast<unsigned>(std::max(1.0, std::ceil(2.0 * maxEdge)));
   const double area = 0.5 * twiceArea;
-  t.albedo = glm::vec4(material.albedo, static_cast<float>(twiceArea / std::abs(n[axis])));
+  t.albedo = glm::vec4(material.albedo, static_cast<float>(twiceArea / std::abs(n[int(axis)])));
   t.normal = glm::vec4(glm::vec3(n / twiceArea),
                        static_cast<float>(area / (double(subdivision) * subdivision)));
   t.emission =
