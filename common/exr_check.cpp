@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <fstream>
+#include <set>
 
 #include "common/error.h"
 #include "common/input_file.h"
@@ -51,6 +52,7 @@ void checkExrHeader(const std::string& path) {
     if (!in) throw InputError(path, field, "the file ends inside it");
     return s;
   };
+  std::set<std::string> names;
   for (int attribute = 0;; ++attribute) {
     const std::string field = "header attribute " + std::to_string(attribute);
     const std::string attributeName = name(field);
@@ -63,7 +65,27 @@ void checkExrHeader(const std::string& path) {
       throw InputError(path, named,
                        "declares " + std::to_string(valueBytes) + " bytes, the file has " +
                            std::to_string(left) + " left");
-    in.seekg(std::streamoff(valueBytes), std::ios::cur);
+    if (!names.insert(attributeName).second)
+      throw InputError(path, named, "appears twice in the header");
+    // OpenEXR sizes its line and tile buffers by these before voxgi can look at the image, so
+    // their sizes are checked here: at most 16384 per side, as readImage accepts.
+    const bool window = attributeName == "dataWindow", tiles = attributeName == "tiles";
+    if ((window && valueBytes != 16) || (tiles && valueBytes != 9))
+      throw InputError(path, named, "has " + std::to_string(valueBytes) + " bytes");
+    if (!window && !tiles) {
+      in.seekg(std::streamoff(valueBytes), std::ios::cur);
+      continue;
+    }
+    unsigned char value[16];
+    if (!in.read(reinterpret_cast<char*>(value), std::streamsize(valueBytes)))
+      throw InputError(path, named, "the file ends inside it");
+    const auto i32 = [&](int k) { return int64_t(int32_t(le32(value + 4 * k))); };
+    const int64_t w = window ? i32(2) - i32(0) + 1 : int64_t(le32(value));
+    const int64_t h = window ? i32(3) - i32(1) + 1 : int64_t(le32(value + 4));
+    if (w < 1 || h < 1 || w > 16384 || h > 16384)
+      throw InputError(
+          path, named,
+          std::to_string(w) + "x" + std::to_string(h) + " is outside 1..16384 per side");
   }
 }
 
