@@ -20,6 +20,66 @@ uint32_t le32(const unsigned char* b) {
   return uint32_t(b[0]) | uint32_t(b[1]) << 8 | uint32_t(b[2]) << 16 | uint32_t(b[3]) << 24;
 }
 
+// Whether the value of an attribute of `type` at the stream's position takes exactly `bytes`
+// bytes as OpenEXR 3.1 reads it; an unknown type is read as `bytes` opaque bytes.
+bool contentMatchesSize(std::istream& in, const std::string& type, uint64_t bytes) {
+  static const std::pair<const char*, uint64_t> fixed[] = {{"box2i", 16},
+                                                           {"box2f", 16},
+                                                           {"v2i", 8},
+                                                           {"v2f", 8},
+                                                           {"v2d", 16},
+                                                           {"v3i", 12},
+                                                           {"v3f", 12},
+                                                           {"v3d", 24},
+                                                           {"float", 4},
+                                                           {"double", 8},
+                                                           {"int", 4},
+                                                           {"compression", 1},
+                                                           {"lineOrder", 1},
+                                                           {"envmap", 1},
+                                                           {"deepImageState", 1},
+                                                           {"chromaticities", 32},
+                                                           {"keycode", 28},
+                                                           {"timecode", 8},
+                                                           {"rational", 8},
+                                                           {"m33f", 36},
+                                                           {"m33d", 72},
+                                                           {"m44f", 64},
+                                                           {"m44d", 128},
+                                                           {"tiledesc", 9}};
+  for (const auto& [name, size] : fixed)
+    if (type == name) return bytes == size;
+  if (type == "chlist") {  // channels: name NUL, 16 bytes each, up to an empty name
+    uint64_t used = 0;
+    for (char c; used < bytes;) {
+      uint64_t nameBytes = 0;
+      while (in.get(c) && c != '\0') ++nameBytes;
+      if (!in) return false;
+      used += nameBytes + 1;
+      if (nameBytes == 0) return used == bytes;
+      in.seekg(16, std::ios::cur);
+      used += 16;
+    }
+    return false;
+  }
+  if (type == "preview") {  // width, height, then 4 bytes per pixel
+    unsigned char wh[8];
+    if (bytes < 8 || !in.read(reinterpret_cast<char*>(wh), 8)) return false;
+    return 8 + 4 * uint64_t(le32(wh)) * le32(wh + 4) == bytes;
+  }
+  if (type == "stringvector") {  // int32 length, then the bytes, up to the declared size
+    uint64_t used = 0;
+    unsigned char n[4];
+    while (used < bytes) {
+      if (bytes - used < 4 || !in.read(reinterpret_cast<char*>(n), 4)) return false;
+      used += 4 + le32(n);
+      in.seekg(std::streamoff(le32(n)), std::ios::cur);
+    }
+    return used == bytes;
+  }
+  return true;  // string and unknown types: read as the declared bytes
+}
+
 }  // namespace
 
 void checkExrHeader(const std::string& path) {
@@ -58,13 +118,21 @@ void checkExrHeader(const std::string& path) {
     const std::string attributeName = name(field);
     if (attributeName.empty()) return;  // the end of the header
     const std::string named = field + " (" + attributeName + ")";
-    name(named + " type");
+    const std::string type = name(named + " type");
     if (!read4()) throw InputError(path, named, "the file ends inside its size");
     const uint64_t valueBytes = le32(word), left = size - uint64_t(in.tellg());
     if (valueBytes > left)
       throw InputError(path, named,
                        "declares " + std::to_string(valueBytes) + " bytes, the file has " +
                            std::to_string(left) + " left");
+    // OpenEXR reads a known type by its content, not by the declared size, so the two must agree
+    // or OpenEXR reads the rest of the header from another place than this check.
+    const uint64_t start = uint64_t(in.tellg());
+    if (!contentMatchesSize(in, type, valueBytes))
+      throw InputError(
+          path, named,
+          "declares " + std::to_string(valueBytes) + " bytes, its " + type + " content does not");
+    in.seekg(std::streamoff(start));
     if (!names.insert(attributeName).second)
       throw InputError(path, named, "appears twice in the header");
     // OpenEXR sizes its line and tile buffers by these before voxgi can look at the image, so
