@@ -95,6 +95,14 @@ bool isVertexIndices(const PlyElement& e, const PlyProperty& p) {
   return semanticOf(e) == Semantic::face && (name == "vertex_indices" || name == "vertex_index");
 }
 
+// A value of type T from its bytes in native order.
+template <class T>
+double load(const unsigned char* bytes) {
+  T v;
+  std::memcpy(&v, bytes, sizeof v);
+  return double(v);
+}
+
 // Reads one value of `type` from a binary body; false at the end of the data.
 struct BinaryReader {
   const std::string& bytes;
@@ -111,43 +119,28 @@ struct BinaryReader {
       for (size_t i = 0; i < n / 2; ++i) std::swap(b[i], b[n - 1 - i]);
     switch (type) {
       case Type::int8:
-        value = double(std::bit_cast<int8_t>(b[0]));
+        value = load<int8_t>(b);
         break;
       case Type::uint8:
-        value = double(b[0]);
+        value = load<uint8_t>(b);
         break;
-      case Type::int16: {
-        int16_t v;
-        std::memcpy(&v, b, 2);
-        value = v;
+      case Type::int16:
+        value = load<int16_t>(b);
         break;
-      }
-      case Type::uint16: {
-        uint16_t v;
-        std::memcpy(&v, b, 2);
-        value = v;
+      case Type::uint16:
+        value = load<uint16_t>(b);
         break;
-      }
-      case Type::int32: {
-        int32_t v;
-        std::memcpy(&v, b, 4);
-        value = v;
+      case Type::int32:
+        value = load<int32_t>(b);
         break;
-      }
-      case Type::uint32: {
-        uint32_t v;
-        std::memcpy(&v, b, 4);
-        value = v;
+      case Type::uint32:
+        value = load<uint32_t>(b);
         break;
-      }
-      case Type::float32: {
-        float v;
-        std::memcpy(&v, b, 4);
-        value = v;
+      case Type::float32:
+        value = load<float>(b);
         break;
-      }
       case Type::float64:
-        std::memcpy(&value, b, 8);
+        value = load<double>(b);
         break;
     }
     return true;
