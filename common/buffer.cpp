@@ -46,7 +46,7 @@ double Buffer::value(size_t element, int component) const {
   return 0.0;
 }
 
-uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image) {
+uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image, int series) {
   const auto n = static_cast<uint64_t>(resolution);
   const int levels = mipLevelCount(resolution);
   switch (shape) {
@@ -58,14 +58,18 @@ uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image) {
       return mipLevelOffset(resolution, levels + 1, 6);
     case BufferShape::image:
       return uint64_t(image.x) * uint64_t(image.y);
+    case BufferShape::series:
+      return n * n * n * static_cast<uint64_t>(series);
   }
   return 0;
 }
 
-glm::ivec3 shapeExtent(BufferShape shape, int resolution, glm::ivec2 image) {
+glm::ivec3 shapeExtent(BufferShape shape, int resolution, glm::ivec2 image, int series) {
   switch (shape) {
     case BufferShape::volume:
       return glm::ivec3(resolution);
+    case BufferShape::series:
+      return {resolution, resolution, resolution * series};
     case BufferShape::image:
       return {image.x, image.y, 1};
     default:

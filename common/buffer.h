@@ -96,9 +96,10 @@ class BufferSet {
   std::map<BufferId, Buffer> buffers_;
 };
 
-// Elements of a buffer of `shape` for an N^3 grid or a width x height image.
-uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image);
+// Elements of a buffer of `shape` for an N^3 grid or a width x height image (`series` volumes for
+// the series shape).
+uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image, int series = 1);
 // Elements of a buffer in `shape` as a 3D extent (x-fastest); pyramids are one row.
-glm::ivec3 shapeExtent(BufferShape shape, int resolution, glm::ivec2 image);
+glm::ivec3 shapeExtent(BufferShape shape, int resolution, glm::ivec2 image, int series = 1);
 
 }  // namespace voxgi

@@ -25,6 +25,7 @@ struct PlanItem {
 class EffectPlan {
  public:
   bool full = false;            // plan.mode=full: every optional effect is computed
+  int seriesLength = 1;         // volumes in a BufferShape::series buffer (lpv: steps + 1)
   std::vector<PlanItem> items;  // stages in graph order, each followed by its effects
 
   // A stage of the plan and whether it runs; an effect of it (indented under its stage).

@@ -29,7 +29,7 @@ std::vector<const StageSpec*> plannedStages(const StageContext& ctx, const Stage
   for (const StageSpec* s : ctx.technique.steps()) {
     if (!ctx.plan.decides(s->id))
       throw std::logic_error(std::string(ctx.technique.name) + "'s planner (common/" +
-                             std::string(ctx.technique.name) + "/plan.cpp) does not decide " +
+                             std::string(ctx.technique.stages) + "/plan.cpp) does not decide " +
                              s->qualifiedName());
     if (ctx.plan.runs(s->id)) out.push_back(s);
     if (s == last) break;
@@ -80,7 +80,9 @@ const StageSpec& resolveStage(const Technique& technique, const std::string& tex
   for (const StageSpec* s : technique.steps()) {
     known.append(known.empty() ? "" : ", ").append(s->qualifiedName());
     if (s->name != name) continue;
-    if (owner.empty() || owner == s->owner || (owner == technique.name && s->shared())) return *s;
+    if (owner.empty() || owner == s->owner ||
+        (owner == technique.name && (s->shared() || s->owner == technique.stages)))
+      return *s;
   }
   throw InputError(
       source, "", "no stage '" + text + "' in " + std::string(technique.name) + " (" + known + ")");

@@ -70,6 +70,14 @@ void applySetting(Settings& settings, const std::string& assignment, const std::
   apply(*found.param, settings, value, source, fieldPrefix + key);
 }
 
+Settings techniqueDefaults(const Technique& technique) {
+  Settings settings;
+  if (technique.defaults != nullptr)
+    for (const std::string& a : *technique.defaults)
+      applySetting(settings, a, "technique " + std::string(technique.name));
+  return settings;
+}
+
 void applyPreset(Settings& settings, const Technique& technique, const std::string& preset) {
   std::string names;
   for (const Preset& p : technique.presets()) {
@@ -88,13 +96,14 @@ void applyPreset(Settings& settings, const Technique& technique, const std::stri
 Settings resolveSettings(const Technique& technique, const std::vector<std::string>& fileSettings,
                          const std::string& file, const std::string& preset,
                          const std::vector<std::string>& sets) {
-  Settings settings;
+  Settings settings = techniqueDefaults(technique);
   for (const std::string& a : fileSettings) applySetting(settings, a, file, "settings.");
   applyPreset(settings, technique, preset);
   for (const std::string& a : sets) {
     const auto [key, value] = split(a, "--set");
     const Found found = findParam(key);
-    if (found.param != nullptr && found.technique != nullptr && found.technique != &technique)
+    if (found.param != nullptr && found.technique != nullptr &&
+        found.technique->params != technique.params)
       throw InputError("--set", key,
                        "is a parameter of " + std::string(found.technique->name) + ", not of " +
                            std::string(technique.name));
@@ -115,7 +124,7 @@ std::string settingValue(const Settings& settings, const std::string& key) {
 }
 
 std::string describeSettings(const Technique& technique) {
-  const Settings defaults;
+  const Settings defaults = techniqueDefaults(technique);
   std::ostringstream s;
   s << "Parameters of " << technique.name << " (--set key=value):\n";
   for (const Param* p : paramsOf(technique))

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/lpv/settings.h"
 #include "common/vct/settings.h"
 
 namespace voxgi {
@@ -20,7 +21,11 @@ struct Settings {
   VoxelizeMode voxelizeMode = VoxelizeMode::conservative;
   // full: every optional effect is computed even where the plan shows it contributes nothing
   PlanMode planMode = PlanMode::planned;
+  // Not a key: voxgi diff and dump set it, and planners then keep intermediate volumes a render
+  // drops (lpv: every propagation step).
+  bool inspect = false;
   VctSettings vct;
+  LpvSettings lpv;
 };
 
 const char* voxelizeModeName(VoxelizeMode mode);
@@ -30,6 +35,8 @@ const char* voxelizeModeName(VoxelizeMode mode);
 // key, a malformed value or one outside the key's range.
 void applySetting(Settings& settings, const std::string& assignment, const std::string& source,
                   const std::string& fieldPrefix = "");
+// The defaults of every key, with a variant's own (holpv: 3 bands, 26 directions) applied.
+Settings techniqueDefaults(const Technique& technique);
 // Applies one of the technique's presets ("default" for every technique).
 void applyPreset(Settings& settings, const Technique& technique, const std::string& preset);
 // Defaults, then a scene file's "settings" (`file` names it in errors), the preset and the --set

@@ -10,7 +10,8 @@ uint64_t stageBufferBytes(StageId stage, const Scene& scene, const EffectPlan& p
   uint64_t words = 0;
   for (const BufferSpec* b : stageBuffers(stageSpec(stage)))
     if (bufferNeeded(*b, plan))
-      words += uint64_t(b->components) * shapeElements(b->shape, scene.grid.resolution, image);
+      words += uint64_t(b->components) *
+               shapeElements(b->shape, scene.grid.resolution, image, plan.seriesLength);
   return 4u * words;
 }
 

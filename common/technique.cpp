@@ -5,20 +5,26 @@
 namespace voxgi {
 
 std::span<const Technique> techniques() {
-#define VOXGI_TECHNIQUE(technique, image_stage, image, summary) \
-  Technique{#technique,                                         \
-            summary,                                            \
-            BufferId::technique##_##image_stage##_##image,      \
-            &technique::params,                                 \
-            &technique::presets,                                \
-            &technique::planEffects},
+  // Each technique, followed by its variants.
+  static const std::vector<Technique> table = [] {
+    std::vector<Technique> out;
+#define VOXGI_TECHNIQUE(technique, image_stage, image, description)                               \
+  out.push_back(Technique{#technique, description, BufferId::technique##_##image_stage##_##image, \
+                          &technique::params, &technique::presets, &technique::planEffects,       \
+                          #technique});                                                           \
+  for (const Variant& v : technique::variants()) {                                                \
+    out.push_back(out.back());                                                                    \
+    out.back().name = v.name;                                                                     \
+    out.back().summary = v.summary;                                                               \
+    out.back().defaults = &v.defaults;                                                            \
+  }
 #define VOXGI_EFFECT(owner, effect, meaning)
 #define VOXGI_STAGE(owner, stage, summary)
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
-  static const Technique table[] = {
 #include "common/stages.inc"
-  };
+    return out;
+  }();
   return table;
 }
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -15,6 +16,14 @@
 
 namespace voxgi {
 
+// A technique that runs another one's stages under other defaults (holpv: lpv with 3 SH bands and
+// 26 propagation directions), so that a variant is one setting, never a copy of the stages.
+struct Variant {
+  std::string_view name;
+  std::string_view summary;
+  std::vector<std::string> defaults;  // "key=value", applied before a scene file's settings
+};
+
 struct Technique {
   std::string_view name;
   std::string_view summary;
@@ -23,7 +32,9 @@ struct Technique {
   const std::vector<Preset>& (*presets)();  // "default" first
   // Which of its stages, buffers and effects the scene needs, and why (common/effect_plan.h).
   EffectPlan (*plan)(const Scene& scene, const Settings& settings);
-  std::vector<const StageSpec*> steps() const { return techniqueSteps(name); }
+  std::string_view stages;  // whose steps it runs: its own name, or a variant's base
+  const std::vector<std::string>* defaults = nullptr;  // a variant's (Variant::defaults)
+  std::vector<const StageSpec*> steps() const { return techniqueSteps(stages); }
 };
 
 std::span<const Technique> techniques();
@@ -38,6 +49,7 @@ std::string techniqueNames();
   const std::vector<Param>& params();                                   \
   const std::vector<Preset>& presets();                                 \
   EffectPlan planEffects(const Scene& scene, const Settings& settings); \
+  const std::vector<Variant>& variants();                               \
   }
 #define VOXGI_EFFECT(owner, effect, meaning)
 #define VOXGI_STAGE(owner, stage, summary)

@@ -54,6 +54,22 @@ openvdb::GridPtrVec blockGrids(const Buffer& b, const Block& block, const std::s
   openvdb::GridPtrVec out;
   const int comps = b.components();
   const bool f32 = b.spec->type == ScalarType::f32;
+  if (comps > 4 && comps % 3 == 0) {  // SH volumes: rgb per coefficient, components r0.. g0.. b0..
+    const int coefficients = comps / 3;
+    for (int i = 0; i < coefficients; ++i) {
+      const int r = i, g = coefficients + i, bl = 2 * coefficients + i;
+      if (f32)
+        out.push_back(makeGrid<openvdb::Vec3SGrid>(b, block, [=](const Buffer& x, size_t e) {
+          return openvdb::Vec3s(x.get<float>(e, r), x.get<float>(e, g), x.get<float>(e, bl));
+        }));
+      else
+        out.push_back(makeGrid<openvdb::Vec3IGrid>(b, block, [=](const Buffer& x, size_t e) {
+          return openvdb::Vec3i(x.get<int32_t>(e, r), x.get<int32_t>(e, g), x.get<int32_t>(e, bl));
+        }));
+      out.back()->setName(name + "_c" + std::to_string(i));
+    }
+    return out;
+  }
   if (comps >= 3 && f32)
     out.push_back(makeGrid<openvdb::Vec3SGrid>(b, block, [](const Buffer& x, size_t e) {
       return openvdb::Vec3s(x.get<float>(e, 0), x.get<float>(e, 1), x.get<float>(e, 2));
@@ -103,6 +119,12 @@ void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers
     std::vector<std::pair<openvdb::GridPtrVec, int>> blocks;
     if (b->spec->shape == BufferShape::volume) {
       blocks.emplace_back(blockGrids(*b, {0, n, size_t(n)}, name), 0);
+    } else if (b->spec->shape == BufferShape::series) {
+      const size_t volume = size_t(n) * size_t(n) * size_t(n);
+      for (int k = 0; k * n < b->extent.z; ++k)
+        blocks.emplace_back(
+            blockGrids(*b, {size_t(k) * volume, n, size_t(n)}, name + ".step_" + std::to_string(k)),
+            0);
     } else if (b->spec->shape != BufferShape::image) {
       const int faces = b->spec->shape == BufferShape::mips6 ? 6 : 1;
       for (int level = 1; level <= mipLevelCount(n); ++level) {

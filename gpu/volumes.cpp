@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "common/error.h"
 #include "common/mips.h"
 
 namespace voxgi::gpu {
@@ -55,6 +56,23 @@ GLuint uploadVolume(const Gl& gl, const Buffer& b) {
   gl.TextureSubImage3D(texture, 0, 0, 0, 0, b.extent.x, b.extent.y, b.extent.z,
                        pixelFormat(b.components()), GL_FLOAT, b.words.data());
   return texture;
+}
+
+void readWords(const Gl& gl, GLuint buffer, Buffer& out, size_t offset) {
+  gl.GetNamedBufferSubData(buffer, GLintptr(offset), GLsizeiptr(out.words.size() * 4),
+                           out.words.data());
+}
+
+void requireStorageBlock(const Gl& gl, const StageContext& ctx, uint64_t bytes,
+                         const std::string& what) {
+  GLint64 limit = 0;
+  gl.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
+  if (bytes <= uint64_t(limit)) return;
+  throw InputError(ctx.scene.file, "grid.resolution",
+                   what + " take " + std::to_string(bytes >> 20) + " MiB, more than this GL's " +
+                       std::to_string(uint64_t(limit) >> 20) +
+                       " MiB shader storage block limit; lower the resolution or use --backend "
+                       "cpu");
 }
 
 void readTexture(const Gl& gl, GLuint texture, int level, GLenum format, GLenum type,

@@ -30,6 +30,13 @@ GLuint createVolume(const Gl& gl, int components, glm::ivec3 size, int levels = 
 GLuint uploadVolume(const Gl& gl, const Buffer& b);
 // A shader storage buffer holding the words of `b` as they are (any shape and component count).
 GLuint uploadWords(const Gl& gl, const Buffer& b);
+// Reads out's words from the buffer object `buffer`, starting at byte `offset`.
+void readWords(const Gl& gl, GLuint buffer, Buffer& out, size_t offset = 0);
+// Throws InputError naming the scene's grid.resolution when one shader storage block of `bytes`
+// exceeds GL_MAX_SHADER_STORAGE_BLOCK_SIZE (llvmpipe: 128 MiB), so a stage fails before it
+// dispatches instead of reading out of range.
+void requireStorageBlock(const Gl& gl, const StageContext& ctx, uint64_t bytes,
+                         const std::string& what);
 // Reads `level` (of `size` texels) of a 3D texture as `format`/`type` (GL_RED_INTEGER and
 // GL_UNSIGNED_INT, ...) into out's words from element `offset` on; throws std::logic_error if they
 // do not fit.

@@ -20,12 +20,20 @@ gpu::GlContext& glContext(gpu::GlPlatform platform) {
 std::vector<validation::StageReport> diffVct(const Scene& scene, const Settings& settings,
                                              gpu::GlContext& context,
                                              const std::vector<std::string>& stages) {
+  return diffTechnique(vct(), scene, settings, context, stages);
+}
+
+std::vector<validation::StageReport> diffTechnique(const Technique& technique, const Scene& scene,
+                                                   const Settings& settings,
+                                                   gpu::GlContext& context,
+                                                   const std::vector<std::string>& stages) {
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
   std::vector<const StageSpec*> specs;
-  for (const std::string& s : stages) specs.push_back(&resolveStage(vct(), s));
+  for (const std::string& s : stages) specs.push_back(&resolveStage(technique, s));
   cpu::CpuBackend cpu;
   gpu::GpuBackend gpu(context);
-  return validation::diffStages(StageContext{vct(), scene, settings, tris}, cpu, gpu, specs, "");
+  return validation::diffStages(StageContext{technique, scene, settings, tris}, cpu, gpu, specs,
+                                "");
 }
 
 }  // namespace voxgi::test

@@ -21,5 +21,10 @@ gpu::GlContext& glContext(gpu::GlPlatform platform);
 std::vector<validation::StageReport> diffVct(const Scene& scene, const Settings& settings,
                                              gpu::GlContext& context,
                                              const std::vector<std::string>& stages);
+// The same for any technique.
+std::vector<validation::StageReport> diffTechnique(const Technique& technique, const Scene& scene,
+                                                   const Settings& settings,
+                                                   gpu::GlContext& context,
+                                                   const std::vector<std::string>& stages);
 
 }  // namespace voxgi::test

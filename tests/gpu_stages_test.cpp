@@ -53,5 +53,47 @@ INSTANTIATE_TEST_SUITE_P(
       return name;
     });
 
+// Light propagation volumes on the Martin-proportioned Cornell box, 16^3 and 6 steps (every
+// step's volume compared), both forms and both platforms.
+struct LpvCase {
+  const char* technique;
+  gpu::GlPlatform platform;
+  std::vector<std::string> sets = {};
+};
+
+class GpuLpvStages : public testing::TestWithParam<LpvCase> {};
+
+TEST_P(GpuLpvStages, AgreeWithCpu) {
+  const LpvCase& c = GetParam();
+  const Technique& technique = findTechnique(c.technique);
+  Scene scene = loadScene(sourcePath("scenes/cornell_box_lpv.json"));
+  scene.grid.resolution = 16;
+  scene.camera.width = scene.camera.height = 64;
+  std::vector<std::string> sets{"propagate.steps=6"};
+  sets.insert(sets.end(), c.sets.begin(), c.sets.end());
+  Settings settings = resolveSettings(technique, scene.settings, scene.file, "default", sets);
+  settings.inspect = true;  // as voxgi diff: every step
+  std::vector<std::string> stages;
+  for (const StageSpec* s : technique.steps())
+    if (s->id != StageId::common_voxelize) stages.push_back(s->qualifiedName());
+  const auto reports = diffTechnique(technique, scene, settings, glContext(c.platform), stages);
+  std::ostringstream table;
+  validation::printReport(table, reports);
+  for (const auto& r : reports) EXPECT_TRUE(r.pass) << r.stage << "\n" << table.str();
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, GpuLpvStages,
+    testing::Values(LpvCase{"lpv", gpu::GlPlatform::egl}, LpvCase{"holpv", gpu::GlPlatform::osmesa},
+                    LpvCase{"holpv",
+                            gpu::GlPlatform::egl,
+                            {"propagate.clamp=on", "propagate.accumulate_injection=off",
+                             "inject.shift=on"}}),
+    [](const testing::TestParamInfo<LpvCase>& p) {
+      return std::string(p.param.technique) + "_" +
+             (p.param.platform == gpu::GlPlatform::egl ? "egl" : "osmesa") +
+             (p.param.sets.empty() ? "" : "_options");
+    });
+
 }  // namespace
 }  // namespace voxgi::test

@@ -13,7 +13,7 @@
 #include "gpu/program.h"
 #include "shaders/shared/gbuffer_kernel.h"
 #include "shaders/shared/lighting.h"
-#include "shaders/shared/vct/compose_kernel.h"
+#include "shaders/shared/compose_kernel.h"
 #include "shaders/shared/vct/cone_types.h"
 #include "shaders/shared/vct/light_voxels_kernel.h"
 #include "shaders/shared/voxelize_layout.h"

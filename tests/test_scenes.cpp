@@ -59,11 +59,16 @@ BufferSet runCpu(const Scene& scene, VoxelizeMode mode) {
 }
 
 BufferSet runCpuUntil(const Scene& scene, const Settings& settings, std::string_view last) {
+  return runCpuUntil(vct(), scene, settings, last);
+}
+
+BufferSet runCpuUntil(const Technique& technique, const Scene& scene, const Settings& settings,
+                      std::string_view last) {
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
   BufferSet out;
   cpu::CpuBackend cpu;
-  runPipeline(cpu, StageContext{vct(), scene, settings, tris}, out,
-              &resolveStage(vct(), std::string(last)));
+  runPipeline(cpu, StageContext{technique, scene, settings, tris}, out,
+              &resolveStage(technique, std::string(last)));
   return out;
 }
 

@@ -23,9 +23,11 @@ GridSpec unitGrid(int n, double size = 1.0);
 
 // The voxelize stage on the CPU.
 BufferSet runCpu(const Scene& scene, VoxelizeMode mode);
-// Runs the CPU stages vct's plan runs, in graph order, up to and including `last` ("mip",
-// "vct/mip").
+// Runs the CPU stages the technique's plan runs (vct's by default), in graph order, up to and
+// including `last` ("mip", "vct/mip").
 BufferSet runCpuUntil(const Scene& scene, const Settings& settings, std::string_view last);
+BufferSet runCpuUntil(const Technique& technique, const Scene& scene, const Settings& settings,
+                      std::string_view last);
 // The voxel cone tracing technique.
 const Technique& vct();
 // Voxel v's components of a volume buffer.

@@ -92,11 +92,15 @@ struct Common {
   std::vector<std::string> sets;  // --set key=value, applied last
 };
 
-// The scene file's "settings", the preset, --mode and --set, the later choice winning.
-Settings makeSettings(const Common& c, const Scene& scene) {
+// The scene file's "settings", the preset, --mode and --set, the later choice winning; `inspect`
+// for diff and dump (Settings::inspect).
+Settings makeSettings(const Common& c, const Scene& scene, bool inspect = false) {
   std::vector<std::string> sets = c.sets;
   if (!c.mode.empty()) sets.insert(sets.begin(), "voxelize.mode=" + c.mode);
-  return resolveSettings(findTechnique(c.technique), scene.settings, scene.file, c.preset, sets);
+  Settings s =
+      resolveSettings(findTechnique(c.technique), scene.settings, scene.file, c.preset, sets);
+  s.inspect = inspect;
+  return s;
 }
 
 Scene loadWithOverrides(const Common& c) {
@@ -134,11 +138,11 @@ struct StageRun {
   }
 };
 
-StageRun runStages(const Common& c, const StageSpec* last) {
+StageRun runStages(const Common& c, const StageSpec* last, bool inspect = false) {
   // Input first: a bad scene or --set fails before any backend starts.
   const Technique& technique = findTechnique(c.technique);
   Scene scene = loadWithOverrides(c);
-  const Settings settings = makeSettings(c, scene);
+  const Settings settings = makeSettings(c, scene, inspect);
   StageRun run{std::move(scene),
                settings,
                tools::chooseBackend(c.backend, gpu::parseGlPlatform(c.gl)),
@@ -182,7 +186,7 @@ int cmdDiff(const Common& c, const std::string& stage, const std::string& json,
             const std::string& dumpDir) {
   const Technique& technique = findTechnique(c.technique);
   Scene scene = loadWithOverrides(c);
-  const Settings settings = makeSettings(c, scene);
+  const Settings settings = makeSettings(c, scene, true);
   const std::vector<const StageSpec*> stages = requestedStages(technique, stage);
   if (!json.empty()) checkOutputPath(json);
   if (!dumpDir.empty()) prepareOutputFolder(dumpDir);
@@ -218,7 +222,7 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
   if (stage != "all") {
     // A stage the plan skips has no buffers: say so instead of writing another stage's.
     const Scene scene = loadWithOverrides(c);
-    const EffectPlan plan = technique.plan(scene, makeSettings(c, scene));
+    const EffectPlan plan = technique.plan(scene, makeSettings(c, scene, true));
     const StageSpec& s = *requested.front();
     if (!plan.runs(s.id))
       throw InputError("--stage", "",
@@ -226,7 +230,7 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
                            "), so it has no buffers to dump (voxgi plan shows why)");
   }
   prepareOutputFolder(dir);
-  const StageRun run = runStages(c, stage == "all" ? nullptr : requested.front());
+  const StageRun run = runStages(c, stage == "all" ? nullptr : requested.front(), true);
   for (const StageSpec* s : run.stages) {
     if (stage != "all" && s != requested.front()) continue;
     for (const std::string& path : writeBuffers(dir + "/" + std::string(s->name),

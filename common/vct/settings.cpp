@@ -64,4 +64,9 @@ const std::vector<Preset>& presets() {
   return table;
 }
 
+const std::vector<Variant>& variants() {
+  static const std::vector<Variant> none;
+  return none;
+}
+
 }  // namespace voxgi::vct

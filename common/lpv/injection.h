@@ -1,0 +1,29 @@
+// inject_lpv's input, prepared once on the host for both backends: the virtual point lights of
+// the scene's emissive triangles, and the fixed-point scale of their sums
+// (docs/stages/lpv/inject_lpv.md).
+#pragma once
+
+#include <vector>
+
+#include "common/stage.h"
+#include "shaders/shared/lpv/lpv_types.h"
+
+namespace voxgi::lpv {
+
+struct Injection {
+  shared::InjectParams params{};
+  std::vector<shared::Vpl> vpls;
+};
+
+// Each emissive triangle (one-sided, as the path tracer's) is split into m^2 congruent
+// sub-triangles, m = ceil(longest edge / (inject.emitter_spacing cells)); a VPL at each centroid
+// carries the sub-triangle's flux, pi x emission x area. Positions in voxel-local coordinates,
+// computed in double. The scale per colour is the largest power of two with scale x total flux
+// <= 2^30: a lobe coefficient is at most a third of its VPL's flux, so no cell's sum can reach
+// 2^31. Throws InputError naming the scene's inject.emitter_spacing when the VPLs would not fit
+// in memory.
+Injection prepareInjection(const StageContext& ctx);
+// prepareInjection(ctx).params.scale without the VPLs (propagate reads the sums with it).
+glm::vec4 injectionScale(const StageContext& ctx);
+
+}  // namespace voxgi::lpv

@@ -1,0 +1,62 @@
+// Light propagation volumes' effect planner (docs/effect-plan.md).
+#include <sstream>
+
+#include "common/error.h"
+#include "common/lpv/sh_buffers.h"
+#include "common/technique.h"
+
+namespace voxgi::lpv {
+
+EffectPlan planEffects(const Scene& scene, const Settings& settings) {
+  const LpvSettings& s = settings.lpv;
+  EffectPlan p;
+  p.full = settings.planMode == PlanMode::full;
+  if (!scene.lights.empty())
+    throw InputError(scene.file, "lights",
+                     "lpv lights a scene from its emissive surfaces; analytic lights need "
+                     "reflective shadow maps (the rsm stage), which this build does not have yet");
+
+  std::string emitters;
+  for (const Mesh& m : scene.meshes) {
+    const Material& mat = scene.materials.at(m.material);
+    if (m.triangles.empty() || !mat.emissive()) continue;
+    emitters += (emitters.empty() ? "'" : ", '") + mat.name + "'";
+  }
+  p.stage(StageId::common_voxelize, true,
+          s.occlusion == LpvOcclusion::on
+              ? "surface area and normals per voxel -> the geometry volume"
+              : "propagate.occlusion=off, but the voxel volumes are the scene's grid for every "
+                "technique");
+  p.stage(StageId::lpv_inject_lpv, true,
+          emitters.empty() ? "no emissive material: the volume stays dark"
+                           : "VPLs on emissive material " + emitters);
+  const ShBuffers sh = shBuffers(s);
+  p.set(sh.coefficients, true);
+  p.stage(StageId::lpv_inject_geometry, s.occlusion == LpvOcclusion::on || p.full,
+          s.occlusion == LpvOcclusion::on ? "blockers for propagate (propagate.occlusion=on)"
+          : p.full                        ? "propagate.occlusion=off; plan.mode=full computes it"
+                                          : "propagate.occlusion=off");
+  const int steps = propagationSteps(s, scene.grid.resolution);
+  std::ostringstream why;
+  why << steps << " steps over " << s.directionCount() << " directions, " << s.bands
+      << " SH bands ("
+      << (s.steps > 0 ? "propagate.steps" : "propagate.steps=0: half the grid's resolution") << ")";
+  p.stage(StageId::lpv_propagate, true, why.str());
+  p.seriesLength = steps + 1;
+  const bool history = s.history == LpvToggle::on || settings.inspect || p.full;
+  p.effect("every step's volume", sh.history, history,
+           s.history == LpvToggle::on ? "propagate.history=on"
+           : settings.inspect         ? "voxgi diff and dump keep every step"
+           : p.full                   ? "propagate.history=off; plan.mode=full keeps them"
+                                      : "propagate.history=off");
+  p.stage(StageId::common_gbuffer, true, "the surface each pixel sees");
+  // One effect for the voxel and pixel emission buffers: the voxels' is unused here, and costs
+  // only a volume next to the sums voxelize keeps anyway.
+  p.effect("emission per pixel", Effect::emission, p.full || !emitters.empty(),
+           emitters.empty() ? "no emissive material" : "emissive material " + emitters);
+  p.stage(StageId::lpv_shade_lpv, true,
+          "irradiance from the accumulated volume x albedo + emission");
+  return p;
+}
+
+}  // namespace voxgi::lpv

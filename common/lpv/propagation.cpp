@@ -1,0 +1,73 @@
+#include "common/lpv/propagation.h"
+
+#include <cmath>
+
+#include "common/lpv/propagation_faces.h"
+#include "common/lpv/sh_buffers.h"
+#include "shaders/shared/lpv/sh.h"
+
+namespace voxgi::lpv {
+namespace {
+
+// Y_i(d) in double (the float shBasis rounds its constants).
+double basis(int i, const glm::dvec3& d) {
+  const double k0 = 0.5 / std::sqrt(M_PI), k1 = std::sqrt(3.0) * k0, k2 = std::sqrt(15.0) * k0,
+               k3 = std::sqrt(5.0) * k0 / 2.0, k4 = k2 / 2.0;
+  switch (i) {
+    case 0:
+      return k0;
+    case 1:
+      return -k1 * d.y;
+    case 2:
+      return k1 * d.z;
+    case 3:
+      return -k1 * d.x;
+    case 4:
+      return k2 * d.x * d.y;
+    case 5:
+      return -k2 * d.y * d.z;
+    case 6:
+      return k3 * (3.0 * d.z * d.z - 1.0);
+    case 7:
+      return -k2 * d.x * d.z;
+    default:
+      return k4 * (d.x * d.x - d.y * d.y);
+  }
+}
+
+double cosineLobe(int i) {  // A_l
+  const int l = shared::shBand(i);
+  return l == 0 ? M_PI : (l == 1 ? 2.0 * M_PI / 3.0 : M_PI / 4.0);
+}
+
+}  // namespace
+
+Propagation preparePropagation(const LpvSettings& s, int resolution) {
+  Propagation out;
+  const double perSteradian =
+      s.normalization == LpvNormalization::energy ? 1.0 / M_PI : 1.0 / (4.0 * M_PI);
+  for (const PropagationFace& f : propagationFaces(s.directionCount())) {
+    shared::PropagationEntry e{};
+    e.offset = glm::ivec4(f.offset, 0);
+    for (int i = 0; i < 9; ++i) {
+      e.sampled[i] = float(basis(i, f.direction));
+      e.reprojected[i] = float(f.solidAngle * perSteradian * cosineLobe(i) * basis(i, f.normal));
+    }
+    for (int i = 0; i < 4; ++i) e.blocking[i] = float(basis(i, -f.direction));
+    out.entries.push_back(e);
+  }
+  out.steps = propagationSteps(s, resolution);
+  out.params.shape = glm::ivec4(resolution, s.coefficients(), int(out.entries.size()), 0);
+  out.params.options = glm::ivec4(s.clampNegative == LpvToggle::on ? 1 : 0, 0, 0, 0);
+  return out;
+}
+
+shared::ShadeParams shadeParams(const StageContext& ctx) {
+  const double s = ctx.scene.grid.voxelSize();
+  shared::ShadeParams p{};
+  p.shape = glm::ivec4(ctx.scene.grid.resolution, ctx.settings.lpv.coefficients(), 0, 0);
+  p.scale = glm::vec4(float(1.0 / (s * s)), 0.0f, 0.0f, 0.0f);
+  return p;
+}
+
+}  // namespace voxgi::lpv

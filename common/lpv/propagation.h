@@ -1,0 +1,32 @@
+// propagate's input, prepared once on the host for both backends: the face-entry table of one
+// step (shared::PropagationEntry, from the solid angles of common/lpv/propagation_faces.h,
+// computed in double and rounded once) and the step's parameters.
+#pragma once
+
+#include <vector>
+
+#include "common/stage.h"
+#include "shaders/shared/lpv/lpv_types.h"
+
+namespace voxgi::lpv {
+
+struct Propagation {
+  shared::PropagateParams params{};  // shape.w (occlusion) is set per step by the stages
+  std::vector<shared::PropagationEntry> entries;
+  int steps = 0;
+};
+
+// Entry weights: Omega_f / pi (propagate.normalization=energy) or Omega_f / (4 pi) (thesis).
+Propagation preparePropagation(const LpvSettings& s, int resolution);
+
+// Whether step `step` (1 for the step LPV_0 -> LPV_1) is occluded: from the second step on, as
+// [Martin 2012, §3.2.3] and Kaplanyan & Dachsbacher do, since the first would block VPLs by their
+// own surfaces.
+inline bool occludedStep(const LpvSettings& s, int step) {
+  return s.occlusion == LpvOcclusion::on && step >= 2;
+}
+
+// shade_lpv's parameters: 1 / s^2 from the grid's cell size (world units).
+shared::ShadeParams shadeParams(const StageContext& ctx);
+
+}  // namespace voxgi::lpv

@@ -1,0 +1,51 @@
+// Light propagation volumes' --set keys, presets and the holpv variant.
+#include "common/technique.h"
+
+namespace voxgi::lpv {
+
+const std::vector<Param>& params() {
+  constexpr auto lpv = &Settings::lpv;
+  static const std::vector<Param> table{
+      number<lpv>("lpv.bands", &LpvSettings::bands, 2, 3,
+                  "SH bands per colour: 2 (4 coefficients, LPV) or 3 (9, HOLPV)"),
+      choice<lpv>("propagate.directions", &LpvSettings::directions, {"6", "26"},
+                  "neighbours light propagates to per step: the 6 face neighbours (30 face "
+                  "entries) or all 26 (54)"),
+      number<lpv>("propagate.steps", &LpvSettings::steps, 0, 1024,
+                  "propagation steps; 0: half the grid's resolution (voxgi plan says why)"),
+      choice<lpv>("propagate.normalization", &LpvSettings::normalization, {"energy", "thesis"},
+                  "per-face weight Omega/pi (conserves flux) or Omega/(4 pi) as Martin's Eq. 3.3 "
+                  "prints it (keeps 1/4 per step)"),
+      choice<lpv>("propagate.clamp", &LpvSettings::clampNegative, {"off", "on"},
+                  "clamp each face's intensity at 0 before it is re-emitted (not linear)"),
+      choice<lpv>("propagate.occlusion", &LpvSettings::occlusion, {"off", "on"},
+                  "attenuate by the geometry volume from the second step on"),
+      choice<lpv>("propagate.accumulate_injection", &LpvSettings::accumulateInjection,
+                  {"off", "on"}, "the accumulated volume includes the injected one (LPV_0)"),
+      choice<lpv>("propagate.history", &LpvSettings::history, {"off", "on"},
+                  "keep every step's volume (propagate.steps_sh4|sh9; voxgi diff and dump turn "
+                  "it on)"),
+      number<lpv>("inject.emitter_spacing", &LpvSettings::emitterSpacing, 0.01f, 8.0f,
+                  "spacing of the VPLs sampled on emissive triangles, in cells"),
+      choice<lpv>("inject.shift", &LpvSettings::vplShift, {"off", "on"},
+                  "move each VPL half a cell along its normal before binning (self-lighting)"),
+  };
+  return table;
+}
+
+const std::vector<Preset>& presets() {
+  static const std::vector<Preset> table{{"default", {}}};
+  return table;
+}
+
+const std::vector<Variant>& variants() {
+  static const std::vector<Variant> table{
+      {"holpv",
+       "higher-order light propagation volumes [Martin 2012]: lpv with 3 SH bands and 26 "
+       "propagation directions",
+       {"lpv.bands=3", "propagate.directions=26"}},
+  };
+  return table;
+}
+
+}  // namespace voxgi::lpv

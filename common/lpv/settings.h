@@ -1,0 +1,33 @@
+// Light propagation volumes' parameters (Settings::lpv), with their defaults. The keys, ranges and
+// meanings are in common/lpv/settings.cpp, with the presets and the holpv variant.
+#pragma once
+
+namespace voxgi {
+
+enum class LpvDirections {
+  six,
+  twenty_six
+};  // [Kaplanyan & Dachsbacher 2010]; [Martin 2012, §4.2]
+// energy: per-face weight Omega/pi, which conserves flux; thesis: Eq. 3.3 as printed, Omega/(4 pi),
+// which keeps a quarter per step [Martin 2012, §3.2.3] (docs/lpv.md)
+enum class LpvNormalization { energy, thesis };
+enum class LpvOcclusion { off, on };
+enum class LpvToggle { off, on };
+
+struct LpvSettings {
+  int bands = 2;                                  // SH bands per colour: 2 (4 coeffs) or 3 (9)
+  LpvDirections directions = LpvDirections::six;  // propagate
+  int steps = 0;                                  // 0: half the grid's resolution (the planner)
+  LpvNormalization normalization = LpvNormalization::energy;
+  LpvToggle clampNegative = LpvToggle::off;  // clamp each face's intensity at 0 (breaks linearity)
+  LpvOcclusion occlusion = LpvOcclusion::on;
+  LpvToggle accumulateInjection = LpvToggle::on;  // the accumulated volume includes LPV_0 (A9)
+  LpvToggle history = LpvToggle::off;             // keep every step's volume
+  float emitterSpacing = 0.25f;         // emitter VPL spacing along a triangle's edges, in cells
+  LpvToggle vplShift = LpvToggle::off;  // move each VPL half a cell along its normal before binning
+
+  int coefficients() const { return bands * bands; }
+  int directionCount() const { return directions == LpvDirections::six ? 6 : 26; }
+};
+
+}  // namespace voxgi

@@ -1,0 +1,41 @@
+// CPU inject_lpv stage: every VPL's lobe (shaders/shared/lpv/inject_kernel.h) added to its cell
+// with integer atomics, so the sums are the same for any thread count and order.
+#include <atomic>
+
+#include <tbb/blocked_range.h>
+
+#include "common/lpv/injection.h"
+#include "common/lpv/sh_buffers.h"
+#include "common/parallel.h"
+#include "cpu/stages.h"
+#include "shaders/shared/lpv/inject_kernel.h"
+
+namespace voxgi::cpu {
+
+void lpv::inject_lpv(const StageContext& ctx, BufferSet& buffers) {
+  const voxgi::lpv::ShBuffers sh = voxgi::lpv::shBuffers(ctx.settings.lpv);
+  checkStageMemory(ctx, StageId::lpv_inject_lpv);
+  const voxgi::lpv::Injection injection = voxgi::lpv::prepareInjection(ctx);
+  const int n = ctx.scene.grid.resolution, coefficients = injection.params.shape.y;
+  Buffer sums(sh.intensitySum, glm::ivec3(n));
+  const auto& vpls = injection.vpls;
+  parallelFor(tbb::blocked_range<size_t>(0, vpls.size()), [&](const auto& range) {
+    for (size_t v = range.begin(); v != range.end(); ++v) {
+      const glm::ivec3 cell = shared::vplCell(vpls[v]);
+      if (glm::any(glm::lessThan(cell, glm::ivec3(0))) ||
+          glm::any(glm::greaterThanEqual(cell, glm::ivec3(n))))
+        continue;  // outside the grid: its light is lost
+      const size_t first = ctx.scene.grid.index(cell) * size_t(3 * coefficients);
+      for (int c = 0; c < 3; ++c)
+        for (int i = 0; i < coefficients; ++i) {
+          const int q = shared::vplCoefficient(vpls[v], c, i, injection.params.scale);
+          if (q == 0) continue;
+          std::atomic_ref<uint32_t>(sums.words[first + size_t(c * coefficients + i)])
+              .fetch_add(static_cast<uint32_t>(q), std::memory_order_relaxed);
+        }
+    }
+  });
+  buffers.put(std::move(sums));
+}
+
+}  // namespace voxgi::cpu

@@ -1,0 +1,83 @@
+// GPU propagate stage: LPV_0 from the fixed-point sums on the host (the same arithmetic as the
+// CPU), then shaders/lpv/propagate.comp propagate.steps times between two storage buffers, all
+// on the GPU; each step is copied into the history buffer when the plan keeps it.
+#include <cstring>
+#include <vector>
+
+#include "common/lpv/injection.h"
+#include "common/lpv/propagation.h"
+#include "common/lpv/sh_buffers.h"
+#include "gpu/program.h"
+#include "gpu/stages.h"
+#include "gpu/volumes.h"
+#include "shaders/shared/lpv/inject_kernel.h"
+
+namespace voxgi::gpu {
+
+void lpv::propagate(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+  const Gl& gl = beginStage(context, ctx, StageId::lpv_propagate);
+  const LpvSettings& s = ctx.settings.lpv;
+  const voxgi::lpv::ShBuffers sh = voxgi::lpv::shBuffers(s);
+  const int n = ctx.scene.grid.resolution;
+  const voxgi::lpv::Propagation setup = voxgi::lpv::preparePropagation(s, n);
+  const Buffer& sums = buffers.at(sh.intensitySum);
+  const int words = 3 * s.coefficients();
+  const size_t count = sums.words.size(), bytes = count * 4;
+  const bool history = ctx.plan.on(sh.history);
+
+  Buffer initial(sh.accumulated, glm::ivec3(n));
+  const glm::vec4 scale = voxgi::lpv::injectionScale(ctx);
+  for (size_t w = 0; w < count; ++w)
+    initial.set(w / size_t(words), int(w % size_t(words)),
+                shared::injectedIntensity(static_cast<int32_t>(sums.words[w]),
+                                          scale[int(w % size_t(words)) / s.coefficients()]));
+  requireStorageBlock(gl, ctx, bytes, "the SH volumes");
+  GlBuffer entryBlock(gl, createBlock(gl, setup.params, setup.entries));
+  GlBuffer volumes[2] = {GlBuffer(gl, uploadWords(gl, initial)),
+                         GlBuffer(gl, createBuffer(gl, bytes, nullptr))};
+  std::vector<uint32_t> zeros;
+  if (s.accumulateInjection == LpvToggle::off) zeros.assign(count, 0u);
+  GlBuffer accumulated(gl, s.accumulateInjection == LpvToggle::on
+                               ? uploadWords(gl, initial)
+                               : createBuffer(gl, bytes, zeros.data()));
+  const Buffer* blocking = buffers.find(BufferId::lpv_inject_geometry_blocking);
+  GlBuffer blockingBlock(
+      gl, blocking != nullptr ? uploadWords(gl, *blocking) : createBuffer(gl, 16, nullptr));
+  const uint64_t historyBytes = uint64_t(bytes) * uint64_t(setup.steps + 1);
+  GlBuffer steps(gl, history ? createBuffer(gl, historyBytes, nullptr) : 0u);
+  if (history) gl.CopyNamedBufferSubData(volumes[0].get(), steps.get(), 0, 0, GLsizeiptr(bytes));
+
+  Program program(gl, {&shaders::lpv_propagate_comp});
+  program.use();
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, entryBlock.get());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, accumulated.get());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, blockingBlock.get());
+  const auto groups = static_cast<GLuint>((n + 3) / 4);
+  for (int step = 1; step <= setup.steps; ++step) {
+    const bool occlude = voxgi::lpv::occludedStep(s, step);
+    if (occlude && blocking == nullptr)
+      throw std::logic_error("propagate: occlusion without inject_geometry's blocking volume");
+    program.set("uOcclude", occlude ? 1 : 0);
+    GlBuffer& from = volumes[(step - 1) % 2];
+    GlBuffer& to = volumes[step % 2];
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, from.get());
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, to.get());
+    gl.DispatchCompute(groups, groups, groups);
+    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    if (history)
+      gl.CopyNamedBufferSubData(to.get(), steps.get(), 0, GLintptr(uint64_t(step) * bytes),
+                                GLsizeiptr(bytes));
+    gl.check("propagate: dispatch");
+  }
+  Buffer out(sh.accumulated, glm::ivec3(n));
+  readWords(gl, accumulated.get(), out);
+  buffers.put(std::move(out));
+  if (history) {
+    Buffer all(sh.steps, glm::ivec3(n, n, n * (setup.steps + 1)));
+    readWords(gl, steps.get(), all);
+    buffers.put(std::move(all));
+  }
+  gl.check("propagate: reading back");
+}
+
+}  // namespace voxgi::gpu
