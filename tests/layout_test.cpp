@@ -13,6 +13,7 @@
 #include "gpu/program.h"
 #include "shaders/shared/gbuffer_kernel.h"
 #include "shaders/shared/lighting.h"
+#include "shaders/shared/lpv/lpv_types.h"
 #include "shaders/shared/compose_kernel.h"
 #include "shaders/shared/vct/cone_types.h"
 #include "shaders/shared/vct/light_voxels_kernel.h"
@@ -35,7 +36,11 @@ std::vector<std::vector<const ShaderSource*>> stagePrograms() {
           {&vct_mip_comp},
           {&vct_bounce_comp},
           {&vct_trace_cones_comp},
-          {&vct_compose_comp}};
+          {&vct_compose_comp},
+          {&lpv_inject_lpv_comp},
+          {&lpv_inject_geometry_comp},
+          {&lpv_propagate_comp},
+          {&lpv_shade_lpv_comp}};
 }
 
 struct Field {
@@ -64,7 +69,21 @@ struct Layout {
 };
 
 std::vector<Layout> layouts() {
-  enum { kVoxelize, kAntialiased, kResolve, kGbuffer, kLight, kMip, kBounce, kTrace, kCompose };
+  enum {
+    kVoxelize,
+    kAntialiased,
+    kResolve,
+    kGbuffer,
+    kLight,
+    kMip,
+    kBounce,
+    kTrace,
+    kCompose,
+    kInjectLpv,
+    kInjectGeometry,
+    kPropagate,
+    kShadeLpv
+  };
   return {
       {"VoxelTriangle",
        sizeof(VoxelTriangle),
@@ -123,6 +142,29 @@ std::vector<Layout> layouts() {
         VOXGI_FIELD(ComposeInput, directSpecular), VOXGI_FIELD(ComposeInput, indirectDiffuse),
         VOXGI_FIELD(ComposeInput, indirectSpecular), VOXGI_FIELD(ComposeInput, ambientOcclusion)},
        {{kCompose, "inputs[0]", 0, true}}},
+      {"Vpl",
+       sizeof(Vpl),
+       {VOXGI_FIELD(Vpl, position), VOXGI_FIELD(Vpl, normal), VOXGI_FIELD(Vpl, flux)},
+       {{kInjectLpv, "vpls[0]", sizeof(InjectParams), true}}},
+      {"InjectParams",
+       sizeof(InjectParams),
+       {VOXGI_FIELD(InjectParams, shape), VOXGI_FIELD(InjectParams, scale)},
+       {{kInjectLpv, "params", 0, false}}},
+      {"PropagationEntry",
+       sizeof(PropagationEntry),
+       {VOXGI_FIELD(PropagationEntry, offset),
+        {"sampled[0]", offsetof(PropagationEntry, sampled)},
+        {"reprojected[0]", offsetof(PropagationEntry, reprojected)},
+        {"blocking[0]", offsetof(PropagationEntry, blocking)}},
+       {{kPropagate, "entries[0]", sizeof(PropagateParams), true}}},
+      {"PropagateParams",
+       sizeof(PropagateParams),
+       {VOXGI_FIELD(PropagateParams, shape), VOXGI_FIELD(PropagateParams, options)},
+       {{kPropagate, "params", 0, false}}},
+      {"ShadeParams",
+       sizeof(ShadeParams),
+       {VOXGI_FIELD(ShadeParams, shape), VOXGI_FIELD(ShadeParams, scale)},
+       {{kShadeLpv, "params", 0, false}}},
   };
 }
 
