@@ -1,6 +1,7 @@
 // Benchmarks (docs/benchmarks.md), wall-clock medians measured side by side in one run:
 // `voxgi bench voxelize` against OpenVDB's tools::meshToVolume on the same mesh and voxel size;
-// `voxgi bench vct` per-stage times of the VCT pipeline, plus mip against a memcpy of its input.
+// `voxgi bench vct` per-stage times of the VCT pipeline, plus mip against a memcpy of its input;
+// `voxgi bench lpv` per-stage times of lpv and holpv, propagation against the bytes it moves.
 #pragma once
 
 #include <functional>
@@ -8,6 +9,8 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "common/pipeline.h"
 
 namespace voxgi::tools {
 
@@ -38,6 +41,24 @@ struct BenchVctOptions {
 
 void addBenchVctOptions(CLI::App& cmd, BenchVctOptions& options);
 int runBenchVct(const BenchVctOptions& options);
+
+struct BenchLpvOptions {
+  std::vector<std::string> scenes{"scenes/cornell_box_lpv.json"};
+  std::vector<int> resolutions{32, 64};
+  std::vector<int> steps{8, 16};
+  std::vector<int> threads{1, 2};
+  int repeats = 3;
+  bool gpu = true;
+  std::string json;
+};
+
+void addBenchLpvOptions(CLI::App& cmd, BenchLpvOptions& options);
+int runBenchLpv(const BenchLpvOptions& options);
+
+// The median time of each stage the plan runs after voxelize on `backend`, each from the CPU's
+// outputs of the stages before it (voxelize has its own benchmark); stage -> seconds.
+std::vector<std::pair<std::string, double>> timeStages(const StageContext& ctx, int repeats,
+                                                       StageBackend& backend);
 
 // The median of `values` (the upper one of the middle two for an even count).
 double median(std::vector<double> values);

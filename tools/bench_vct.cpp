@@ -25,25 +25,6 @@
 
 namespace voxgi::tools {
 
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
-
-double medianSeconds(int repeats, const std::function<void()>& run) {
-  std::vector<double> t;
-  for (int r = 0; r < repeats; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    run();
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  return median(std::move(t));
-}
-
-namespace {
-
-// Times each stage the plan runs after voxelize on `backend`, from the CPU's outputs of the
-// stages before it (voxelize has its own benchmark, `voxgi bench voxelize`); returns stage -> s.
 std::vector<std::pair<std::string, double>> timeStages(const StageContext& ctx, int repeats,
                                                        StageBackend& backend) {
   cpu::CpuBackend reference;
@@ -74,6 +55,23 @@ std::vector<std::pair<std::string, double>> timeStages(const StageContext& ctx, 
   }
   return out;
 }
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+double medianSeconds(int repeats, const std::function<void()>& run) {
+  std::vector<double> t;
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    run();
+    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  return median(std::move(t));
+}
+
+namespace {
 
 // cpu::mip on an N^3 RGBA32F radiance volume vs std::memcpy of the same bytes, both medians.
 std::pair<double, double> mipVersusMemcpy(int n, int repeats, MipMode mode) {

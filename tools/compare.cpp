@@ -29,6 +29,10 @@ void addCompareOptions(CLI::App& cmd, CompareOptions& o) {
   cmd.add_option("--error-png", o.errorPng,
                  "false-colour relative error map (default: TEST's name + .error.png)");
   cmd.add_option("--json", o.json, "also write the metrics as JSON");
+  cmd.add_option("--scanline", o.scanline,
+                 "a row (0: the top) whose linear luminance of both images goes into the JSON, "
+                 "for tools/plot_scanline.py")
+      ->check(CLI::NonNegativeNumber);
 }
 
 void checkSameSize(int width, int height, const std::string& name, const Image& reference) {
@@ -81,6 +85,10 @@ int runCompare(const CompareOptions& o) {
   const Image test = readImage(o.test);
   checkSameSize(test.width, test.height, o.test, reference);
   const std::vector<uint8_t> mask = readMask(o.mask, reference);
+  if (o.scanline >= reference.height)
+    throw InputError("--scanline", "",
+                     "row " + std::to_string(o.scanline) + " is outside the " +
+                         std::to_string(reference.height) + "-row images");
   const reference::ImageMetrics m = reference::compareImages(test, reference, mask);
   std::cout << "compare " << o.test << " against " << o.reference << " (" << reference.width << "x"
             << reference.height << ", " << m.pixels << " pixels)\n"
@@ -105,6 +113,18 @@ int runCompare(const CompareOptions& o) {
                reference::errorColours(test, reference, mask));
   std::cout << "  error map (|t - r| / (|r| + 0.01), log scale 1e-3 black .. 1 white) -> "
             << errorPng << "\n";
+  if (o.scanline >= 0) {
+    // Rec. 709 luminance of the linear images.
+    const auto row = [&](const Image& image) {
+      std::vector<double> values;
+      for (int x = 0; x < image.width; ++x) {
+        const glm::vec3 p = image.at(x, o.scanline);
+        values.push_back(0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z);
+      }
+      return values;
+    };
+    out["scanline"] = {{"row", o.scanline}, {"test", row(test)}, {"reference", row(reference)}};
+  }
   if (!o.json.empty()) writeFileAtomically(o.json, out.dump(2) + "\n");
   return kExitOk;
 }

@@ -15,6 +15,7 @@ namespace voxgi::tools {
 
 struct CompareOptions {
   std::string test, reference, mask, errorPng, json;
+  int scanline = -1;  // a row whose luminance both images give in the JSON (-1: none)
 };
 
 void addCompareOptions(CLI::App& cmd, CompareOptions& options);

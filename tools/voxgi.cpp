@@ -411,6 +411,12 @@ int main(int argc, char** argv) {
   auto* benchVctCmd = benchCmd->add_subcommand(
       "vct", "every stage after voxelize: CPU per thread count, GPU (OSMesa); mip vs memcpy");
   tools::addBenchVctOptions(*benchVctCmd, benchVct);
+  tools::BenchLpvOptions benchLpv;
+  auto* benchLpvCmd = benchCmd->add_subcommand(
+      "lpv",
+      "lpv and holpv, every stage after voxelize: CPU per thread count, GPU (OSMesa); "
+      "propagate vs memcpy");
+  tools::addBenchLpvOptions(*benchLpvCmd, benchLpv);
 
   try {
     app.parse(argc, argv);
@@ -437,6 +443,7 @@ int main(int argc, char** argv) {
     if (*studyCmd) return tools::runStudy(study);
     if (*benchVoxelize) return tools::runBenchVoxelize(bench);
     if (*benchVctCmd) return tools::runBenchVct(benchVct);
+    if (*benchLpvCmd) return tools::runBenchLpv(benchLpv);
   } catch (const InputError& e) {
     std::cerr << "voxgi: " << e.what() << "\n";
     return kExitBadInput;

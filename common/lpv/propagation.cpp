@@ -66,7 +66,7 @@ shared::ShadeParams shadeParams(const StageContext& ctx) {
   const double s = ctx.scene.grid.voxelSize();
   shared::ShadeParams p{};
   p.shape = glm::ivec4(ctx.scene.grid.resolution, ctx.settings.lpv.coefficients(), 0, 0);
-  p.scale = glm::vec4(float(1.0 / (s * s)), 0.0f, 0.0f, 0.0f);
+  p.scale = glm::vec4(float(1.0 / (s * s)), ctx.settings.lpv.shadeOffset, 0.0f, 0.0f);
   return p;
 }
 

@@ -29,6 +29,8 @@ const std::vector<Param>& params() {
                   "spacing of the VPLs sampled on emissive triangles, in cells"),
       choice<lpv>("inject.shift", &LpvSettings::vplShift, {"off", "on"},
                   "move each VPL half a cell along its normal before binning (self-lighting)"),
+      number<lpv>("shade.offset", &LpvSettings::shadeOffset, 0.0f, 2.0f,
+                  "cells along the normal at which a pixel samples the accumulated volume"),
   };
   return table;
 }

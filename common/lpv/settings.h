@@ -25,6 +25,7 @@ struct LpvSettings {
   LpvToggle history = LpvToggle::off;             // keep every step's volume
   float emitterSpacing = 0.25f;         // emitter VPL spacing along a triangle's edges, in cells
   LpvToggle vplShift = LpvToggle::off;  // move each VPL half a cell along its normal before binning
+  float shadeOffset = 0.0f;             // cells along the normal where shade_lpv samples the volume
 
   int coefficients() const { return bands * bands; }
   int directionCount() const { return directions == LpvDirections::six ? 6 : 26; }

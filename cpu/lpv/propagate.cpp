@@ -17,6 +17,7 @@
 namespace voxgi::cpu {
 namespace {
 
+template <int Coefficients>
 struct PropagateVolumes {
   const std::vector<shared::PropagationEntry>& entries;
   const float* previous;  // the last step, 3C floats per cell
@@ -28,7 +29,8 @@ struct PropagateVolumes {
   size_t index(glm::ivec3 v) const {
     return size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z));
   }
-  shared::PropagationEntry entryAt(int e) const { return entries[size_t(e)]; }
+  static int coefficientCount() { return Coefficients; }
+  const shared::PropagationEntry& entryAt(int e) const { return entries[size_t(e)]; }
   float intensityAt(glm::ivec3 cell, int word) const {
     return previous[index(cell) * size_t(words) + size_t(word)];
   }
@@ -75,19 +77,22 @@ void lpv::propagate(const StageContext& ctx, BufferSet& buffers) {
   for (int step = 1; step <= setup.steps; ++step) {
     const bool occlude = voxgi::lpv::occludedStep(s, step);
     setup.params.shape.w = occlude ? 1 : 0;
-    const PropagateVolumes volumes{
-        setup.entries,
-        previous.data(),
-        next.data(),
-        acc,
-        occlude ? &buffers.at(BufferId::lpv_inject_geometry_blocking) : nullptr,
-        n,
-        words};
-    parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
-      for (int row = rows.begin(); row != rows.end(); ++row)
-        for (int x = 0; x < n; ++x)
-          shared::propagateCell(volumes, glm::ivec3(x, row % n, row / n), setup.params);
-    });
+    const Buffer* blocking =
+        occlude ? &buffers.at(BufferId::lpv_inject_geometry_blocking) : nullptr;
+    const auto run = [&](const auto& volumes) {
+      parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
+        for (int row = rows.begin(); row != rows.end(); ++row)
+          for (int x = 0; x < n; ++x)
+            shared::propagateCell(volumes, glm::ivec3(x, row % n, row / n), setup.params);
+      });
+    };
+    // The coefficient count as a constant: the compiler unrolls the kernel's loops.
+    if (s.coefficients() == 4)
+      run(PropagateVolumes<4>{setup.entries, previous.data(), next.data(), acc, blocking, n,
+                              words});
+    else
+      run(PropagateVolumes<9>{setup.entries, previous.data(), next.data(), acc, blocking, n,
+                              words});
     if (history) std::memcpy(steps.words.data() + size_t(step) * count, next.data(), count * 4);
     std::swap(previous, next);
   }

@@ -20,6 +20,7 @@ int cellIndex(ivec3 v) {
   return v.x + n * (v.y + n * v.z);
 }
 PropagationEntry entryAt(int e) { return entries[e]; }
+int coefficientCount() { return params.shape.y; }
 float intensityAt(ivec3 cell, int word) {
   return previous[cellIndex(cell) * 3 * params.shape.y + word];
 }

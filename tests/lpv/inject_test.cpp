@@ -25,7 +25,7 @@ Scene emitterScene() {
   Material light;
   light.emission = {2.0f, 1.0f, 0.5f};
   auto tris = quad(1, 0.6, {0.2, 0.3}, {0.5, 0.7});  // (z, x) = (u, v) for axis y
-  for (Triangle& t : tris) std::swap(t[1], t[2]);       // wind toward -y
+  for (Triangle& t : tris) std::swap(t[1], t[2]);    // wind toward -y
   return makeScene(tris, unitGrid(16), light);
 }
 
@@ -60,7 +60,8 @@ TEST(InjectLpv, VplsLandInTheirCellsAndShiftAlongTheirNormal) {
   const Scene scene = emitterScene();
   Settings settings;
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
-  const lpv::Injection plain = lpv::prepareInjection(StageContext{lpvTechnique(), scene, settings, tris});
+  const lpv::Injection plain =
+      lpv::prepareInjection(StageContext{lpvTechnique(), scene, settings, tris});
   settings.lpv.vplShift = LpvToggle::on;
   const lpv::Injection shifted =
       lpv::prepareInjection(StageContext{lpvTechnique(), scene, settings, tris});
@@ -84,7 +85,8 @@ TEST(InjectLpv, FixedPointScaleCannotOverflow) {
   scene.materials[0].emission = {1e30f, 1e-30f, 0.0f};
   Settings settings;
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
-  const lpv::Injection in = lpv::prepareInjection(StageContext{lpvTechnique(), scene, settings, tris});
+  const lpv::Injection in =
+      lpv::prepareInjection(StageContext{lpvTechnique(), scene, settings, tris});
   double total[3] = {0, 0, 0};
   for (const shared::Vpl& v : in.vpls)
     for (int c = 0; c < 3; ++c) total[c] += v.flux[c];
@@ -98,7 +100,8 @@ TEST(InjectLpv, FixedPointScaleCannotOverflow) {
   for (int i = 0; i < 9; ++i)
     for (const glm::vec3 n : {glm::vec3(0, 0, 1), glm::normalize(glm::vec3(1, 1, 1)),
                               glm::normalize(glm::vec3(1, -2, 0.5))})
-      largest = std::max(largest, std::abs(double(shared::shLobeOverPi(i) * shared::shBasis(i, n))));
+      largest =
+          std::max(largest, std::abs(double(shared::shLobeOverPi(i) * shared::shBasis(i, n))));
   EXPECT_LT(largest, 1.0 / 3.0);
 }
 

@@ -15,6 +15,7 @@ struct StepVolumes {
   const std::vector<glm::vec4>* blocking;
 
   shared::PropagationEntry entryAt(int e) const { return setup.entries[size_t(e)]; }
+  int coefficientCount() const { return from.coefficients; }
   float intensityAt(glm::ivec3 cell, int word) const {
     return from.words[from.first(cell) + size_t(word)];
   }

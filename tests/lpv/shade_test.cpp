@@ -14,7 +14,8 @@ namespace {
 struct Volumes {
   const ShGrid& g;
   float accumulatedAt(glm::ivec3 c, int word) const {
-    if (glm::any(glm::lessThan(c, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(c, glm::ivec3(g.n))))
+    if (glm::any(glm::lessThan(c, glm::ivec3(0))) ||
+        glm::any(glm::greaterThanEqual(c, glm::ivec3(g.n))))
       return 0.0f;
     return g.words[g.first(c) + size_t(word)];
   }
@@ -80,8 +81,8 @@ TEST(ShadeLpv, TrilinearAndLinear) {
   for (size_t w = 0; w < sum.words.size(); ++w) sum.words[w] = 3.0f * a.words[w] + b.words[w];
   const glm::vec3 n = glm::normalize(glm::vec3(1, 1, -1));
   for (const glm::vec3 p : {glm::vec3(2.0f, 1.5f, 1.5f), glm::vec3(1.7f, 1.2f, 1.9f)})
-    EXPECT_NEAR(irradiance(sum, p, n, 1.0), 3.0 * irradiance(a, p, n, 1.0) + irradiance(b, p, n, 1.0),
-                1e-6);
+    EXPECT_NEAR(irradiance(sum, p, n, 1.0),
+                3.0 * irradiance(a, p, n, 1.0) + irradiance(b, p, n, 1.0), 1e-6);
   const glm::vec3 mid(2.0f, 1.5f, 1.5f);
   EXPECT_NEAR(irradiance(sum, mid, n, 1.0),
               0.5 * (irradiance(sum, glm::vec3(1.5f), n, 1.0) +

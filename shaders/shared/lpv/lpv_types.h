@@ -39,7 +39,7 @@ struct PropagateParams {
 // shade_lpv's uniforms.
 struct ShadeParams {
   ivec4 shape;  // x: N; y: C; zw: 0
-  vec4 scale;   // x: 1 / (cell size^2) (world units); yzw: 0
+  vec4 scale;   // x: 1 / (cell size^2) (world units); y: shade.offset in cells; zw: 0
 };
 
 VOXGI_NAMESPACE_END

@@ -6,7 +6,9 @@
 // thesis's Omega_f / (4 pi)). Sums run in the entry table's order on both backends.
 //
 // Reads FETCH(entryAt)(e) -> PropagationEntry, FETCH(intensityAt)(cell, word) -> float (the
-// previous step; word = colour * C + i), FETCH(blockingAt)(g) -> vec4 (0 outside the grid).
+// previous step; word = colour * C + i), FETCH(blockingAt)(g) -> vec4 (0 outside the grid), and
+// FETCH(coefficientCount)() -> C (p.shape.y; a constant in the CPU's accessor, so the compiler
+// unrolls the coefficient loops there — the same operations in the same order).
 #ifndef VOXGI_LPV_PROPAGATE_KERNEL_H
 #define VOXGI_LPV_PROPAGATE_KERNEL_H
 #include "lpv_types.h"
@@ -42,7 +44,7 @@ VOLUME_FN vec4 blockingBetween(VOLUMES_IN ivec3 x, ivec3 o) {
 
 // Writes the step's value of cell x through FETCH(storeIntensity)(x, word, value).
 VOLUME_FN void propagateCell(VOLUMES_IN ivec3 x, PropagateParams p) {
-  int n = p.shape.x, coefficients = p.shape.y;
+  int n = p.shape.x, coefficients = FETCH(coefficientCount)();
   bool occlude = p.shape.w != 0, clampNegative = p.options.x != 0;
   float dst[27];
   for (int w = 0; w < 27; ++w) dst[w] = 0.0f;

@@ -12,12 +12,15 @@
 
 VOXGI_NAMESPACE_BEGIN
 
-// Irradiance / pi at `position` (voxel-local) on a surface of unit normal `normal`.
+// Irradiance / pi at `position` (voxel-local) on a surface of unit normal `normal`, sampled
+// p.scale.y cells along the normal (shade.offset: away from the surface's own cell, whose light
+// and blockers it shares).
 VOLUME_FN vec3 lpvIrradiance(VOLUMES_IN vec3 position, vec3 normal, ShadeParams p) {
   int coefficients = p.shape.y;
   float lobe[9];
   for (int i = 0; i < coefficients; ++i) lobe[i] = shCosineLobe(i, -normal);
-  precise vec3 t = position - vec3(0.5f);  // cell centres at i + 1/2
+  // shade.offset cells along the normal, then cell centres at i + 1/2
+  precise vec3 t = (position + normal * p.scale.y) - vec3(0.5f);
   ivec3 base = ivec3(floor(t));
   precise vec3 f = t - vec3(base);
   precise vec3 sum = vec3(0.0f);
