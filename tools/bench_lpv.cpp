@@ -54,8 +54,7 @@ int runBenchLpv(const BenchLpvOptions& o) {
   nlohmann::json rows = nlohmann::json::array();
   std::cout << std::left << std::setw(18) << "scene" << std::setw(7) << "tech" << std::setw(6)
             << "grid" << std::setw(6) << "steps" << std::setw(6) << "occl" << std::setw(12)
-            << "backend" << std::setw(22) << "stage" << std::right << std::setw(10)
-            << "seconds\n";
+            << "backend" << std::setw(22) << "stage" << std::right << std::setw(10) << "seconds\n";
   // propagate seconds by (scene, grid, steps, occlusion, backend, technique)
   std::map<std::tuple<std::string, int, int, bool, std::string, std::string>, double> propagate;
   for (const std::string& file : o.scenes)
@@ -66,10 +65,10 @@ int runBenchLpv(const BenchLpvOptions& o) {
             Scene scene = loadScene(file);
             scene.grid.resolution = n;
             const Technique& technique = findTechnique(name);
-            const Settings settings = resolveSettings(
-                technique, scene.settings, scene.file, "default",
-                {"propagate.steps=" + std::to_string(steps),
-                 std::string("propagate.occlusion=") + (occluded ? "on" : "off")});
+            const Settings settings =
+                resolveSettings(technique, scene.settings, scene.file, "default",
+                                {"propagate.steps=" + std::to_string(steps),
+                                 std::string("propagate.occlusion=") + (occluded ? "on" : "off")});
             const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
             const StageContext ctx{technique, scene, settings, tris};
             cpu::CpuBackend cpuBackend;
@@ -78,8 +77,8 @@ int runBenchLpv(const BenchLpvOptions& o) {
               tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(t));
               tbb::task_arena arena(t);
               runs.emplace_back("cpu " + std::to_string(t) + " thr", arena.execute([&] {
-                                  return timeStages(ctx, o.repeats, cpuBackend);
-                                }));
+                return timeStages(ctx, o.repeats, cpuBackend);
+              }));
             }
             if (context) {
               gpu::GpuBackend gpuBackend(*context);
@@ -90,8 +89,8 @@ int runBenchLpv(const BenchLpvOptions& o) {
               for (const auto& [stage, seconds] : stages) {
                 std::cout << std::left << std::setw(18) << sceneName << std::setw(7) << name
                           << std::setw(6) << n << std::setw(6) << steps << std::setw(6)
-                          << (occluded ? "on" : "off") << std::setw(12) << backend
-                          << std::setw(22) << stage << std::right << std::setw(10) << std::fixed
+                          << (occluded ? "on" : "off") << std::setw(12) << backend << std::setw(22)
+                          << stage << std::right << std::setw(10) << std::fixed
                           << std::setprecision(4) << seconds << "\n";
                 rows.push_back({{"scene", sceneName},
                                 {"technique", name},
@@ -134,7 +133,8 @@ int runBenchLpv(const BenchLpvOptions& o) {
       std::cout << "  " << n << "^3, " << coefficients << " coefficients x 3 colours: "
                 << double(n) * n * n * 3 * coefficients * 4 / (1 << 20) << " MiB\n";
   if (!o.json.empty())
-    writeFileAtomically(o.json, nlohmann::json{{"stages", rows}, {"propagate", ratios}}.dump(2) + "\n");
+    writeFileAtomically(o.json,
+                        nlohmann::json{{"stages", rows}, {"propagate", ratios}}.dump(2) + "\n");
   return 0;
 }
 

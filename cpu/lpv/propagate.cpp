@@ -30,6 +30,7 @@ struct PropagateVolumes {
     return size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z));
   }
   static int coefficientCount() { return Coefficients; }
+  static int colourCount() { return 3; }
   const shared::PropagationEntry& entryAt(int e) const { return entries[size_t(e)]; }
   float intensityAt(glm::ivec3 cell, int word) const {
     return previous[index(cell) * size_t(words) + size_t(word)];

@@ -21,6 +21,7 @@ int cellIndex(ivec3 v) {
 }
 PropagationEntry entryAt(int e) { return entries[e]; }
 int coefficientCount() { return params.shape.y; }
+int colourCount() { return 3; }
 float intensityAt(ivec3 cell, int word) {
   return previous[cellIndex(cell) * 3 * params.shape.y + word];
 }

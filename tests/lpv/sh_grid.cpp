@@ -7,7 +7,10 @@
 namespace voxgi::test {
 namespace {
 
+// The coefficient count as a constant, so the kernel's loops unroll as in cpu/lpv/propagate.cpp.
+template <int Coefficients>
 struct StepVolumes {
+  int colours;
   const lpv::Propagation& setup;
   const ShGrid& from;
   ShGrid* to;
@@ -15,7 +18,8 @@ struct StepVolumes {
   const std::vector<glm::vec4>* blocking;
 
   shared::PropagationEntry entryAt(int e) const { return setup.entries[size_t(e)]; }
-  int coefficientCount() const { return from.coefficients; }
+  static int coefficientCount() { return Coefficients; }
+  int colourCount() const { return colours; }
   float intensityAt(glm::ivec3 cell, int word) const {
     return from.words[from.first(cell) + size_t(word)];
   }
@@ -44,16 +48,22 @@ double ShGrid::total(int i) const {
 }
 
 ShGrid propagateStep(const ShGrid& from, const lpv::Propagation& setup,
-                     const std::vector<glm::vec4>* blocking, int reach, ShGrid* accumulated) {
+                     const std::vector<glm::vec4>* blocking, int reach, ShGrid* accumulated,
+                     int colours) {
   ShGrid to(from.n, from.coefficients);
   shared::PropagateParams params = setup.params;
   params.shape.w = blocking != nullptr ? 1 : 0;
-  const StepVolumes volumes{setup, from, &to, accumulated, blocking};
   const int n = from.n, c = n / 2;
   const int lo = std::max(0, c - reach), hi = std::min(n - 1, c + reach);
-  for (int z = lo; z <= hi; ++z)
-    for (int y = lo; y <= hi; ++y)
-      for (int x = lo; x <= hi; ++x) shared::propagateCell(volumes, glm::ivec3(x, y, z), params);
+  const auto run = [&](const auto& volumes) {
+    for (int z = lo; z <= hi; ++z)
+      for (int y = lo; y <= hi; ++y)
+        for (int x = lo; x <= hi; ++x) shared::propagateCell(volumes, glm::ivec3(x, y, z), params);
+  };
+  if (from.coefficients == 4)
+    run(StepVolumes<4>{colours, setup, from, &to, accumulated, blocking});
+  else
+    run(StepVolumes<9>{colours, setup, from, &to, accumulated, blocking});
   return to;
 }
 

@@ -31,10 +31,11 @@ struct ShGrid {
 
 // One propagation step of `from` (occluded by `blocking`, N^3 4-coefficient geometry-volume
 // cells, when not null); cells farther than `reach` (infinity norm) from the centre are not
-// computed. Adds the step to `accumulated` when given.
+// computed. Adds the step to `accumulated` when given. Only the first `colours` colours are
+// propagated (the others stay 0).
 ShGrid propagateStep(const ShGrid& from, const lpv::Propagation& setup,
                      const std::vector<glm::vec4>* blocking = nullptr, int reach = 1 << 30,
-                     ShGrid* accumulated = nullptr);
+                     ShGrid* accumulated = nullptr, int colours = 3);
 
 // The propagation setup of `directions` (6, 26) on an n^3 grid with `coefficients` per colour.
 lpv::Propagation setupFor(int directions, int coefficients, int n,

@@ -8,7 +8,8 @@
 // Reads FETCH(entryAt)(e) -> PropagationEntry, FETCH(intensityAt)(cell, word) -> float (the
 // previous step; word = colour * C + i), FETCH(blockingAt)(g) -> vec4 (0 outside the grid), and
 // FETCH(coefficientCount)() -> C (p.shape.y; a constant in the CPU's accessor, so the compiler
-// unrolls the coefficient loops there — the same operations in the same order).
+// unrolls the coefficient loops there — the same operations in the same order) and
+// FETCH(colourCount)() -> 3 (the kernel tests propagate one colour).
 #ifndef VOXGI_LPV_PROPAGATE_KERNEL_H
 #define VOXGI_LPV_PROPAGATE_KERNEL_H
 #include "lpv_types.h"
@@ -44,7 +45,7 @@ VOLUME_FN vec4 blockingBetween(VOLUMES_IN ivec3 x, ivec3 o) {
 
 // Writes the step's value of cell x through FETCH(storeIntensity)(x, word, value).
 VOLUME_FN void propagateCell(VOLUMES_IN ivec3 x, PropagateParams p) {
-  int n = p.shape.x, coefficients = FETCH(coefficientCount)();
+  int n = p.shape.x, coefficients = FETCH(coefficientCount)(), colours = FETCH(colourCount)();
   bool occlude = p.shape.w != 0, clampNegative = p.options.x != 0;
   float dst[27];
   for (int w = 0; w < 27; ++w) dst[w] = 0.0f;
@@ -65,7 +66,7 @@ VOLUME_FN void propagateCell(VOLUMES_IN ivec3 x, PropagateParams p) {
                               blocking.z * f.blocking[2] + blocking.w * f.blocking[3];
       visibility = 1.0f - clamp(blocked, 0.0f, 1.0f);
     }
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < colours; ++c) {
       precise float intensity = 0.0f;
       for (int i = 0; i < coefficients; ++i)
         intensity = intensity + FETCH(intensityAt)(src, c * coefficients + i) * f.sampled[i];
@@ -75,7 +76,7 @@ VOLUME_FN void propagateCell(VOLUMES_IN ivec3 x, PropagateParams p) {
         dst[c * coefficients + i] = dst[c * coefficients + i] + flux * f.reprojected[i];
     }
   }
-  for (int w = 0; w < 3 * coefficients; ++w) FETCH(storeIntensity)(x, w, dst[w]);
+  for (int w = 0; w < colours * coefficients; ++w) FETCH(storeIntensity)(x, w, dst[w]);
 }
 
 VOXGI_NAMESPACE_END
