@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -65,6 +66,29 @@ TEST(Cli, StudyWritesEveryCombinationAndThePlot) {
   const CommandResult size = voxgi("study " + scene + " --reference " + dir + "ref.exr --csv " +
                                    dir + "x.csv --sweep resolution=16");
   EXPECT_EQ(size.code, 2) << size.output;
+}
+
+// A sweep key belongs to the techniques that have it: propagate.steps multiplies lpv's and
+// holpv's runs and leaves vct's alone.
+TEST(Cli, StudySweepsOnlyTheTechniquesAKeyBelongsTo) {
+  const std::string dir = testTempDir(), scene = sourcePath("scenes/cornell_box_lpv.json");
+  ASSERT_EQ(voxgi("render " + scene + " --technique path --spp 2 --bounces 0 --image 32 --out " +
+                  dir + "ref.exr")
+                .code,
+            0);
+  const CommandResult r =
+      voxgi("study " + scene + " --technique vct,lpv,holpv --sweep propagate.steps=2,3" +
+            " --sweep resolution=16 --image 32 --repeat 1 --reference " + dir + "ref.exr --csv " +
+            dir + "s.csv");
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream csv(dir + "s.csv");
+  std::map<std::string, int> rows;
+  std::string line;
+  std::getline(csv, line);  // header
+  while (std::getline(csv, line)) ++rows[line.substr(0, line.find(','))];
+  EXPECT_EQ(rows["vct"], 1);
+  EXPECT_EQ(rows["lpv"], 2);
+  EXPECT_EQ(rows["holpv"], 2);
 }
 
 }  // namespace

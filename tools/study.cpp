@@ -20,6 +20,8 @@
 #include "common/pipeline.h"
 #include "common/scene_load.h"
 #include "common/settings.h"
+#include "common/settings_table.h"
+#include "common/technique.h"
 #include "common/voxel_triangles.h"
 #include "tools/bench.h"
 #include "tools/compare.h"
@@ -41,8 +43,17 @@ namespace {
 // `resolution` or `backend`).
 const std::set<std::string> kPathKeys{"spp", "bounces", "seed"};
 
+// A path key to the path tracer; to a staged technique `resolution`, `backend`, a shared key or
+// one of its own (a sweep of propagate.steps leaves vct alone).
 bool appliesTo(const std::string& key, const std::string& technique) {
-  return (technique == "path") == (kPathKeys.count(key) != 0);
+  if (technique == "path") return kPathKeys.count(key) != 0;
+  if (kPathKeys.count(key) != 0) return false;
+  if (key == "resolution" || key == "backend") return true;
+  for (const Param& p : sharedParams())
+    if (p.key == key) return true;
+  for (const Param& p : findTechnique(technique).params())
+    if (p.key == key) return true;
+  return false;
 }
 
 struct Sweep {
@@ -140,6 +151,14 @@ Result runPath(const Job& job, int repeats) {
 // Every combination of the sweeps that apply to each technique, checked before anything runs.
 std::vector<Job> makeJobs(const StudyOptions& o, const std::vector<Sweep>& sweeps) {
   std::vector<Job> jobs;
+  for (const Sweep& s : sweeps) {
+    bool used = false;
+    for (const std::string& technique : o.techniques) used |= appliesTo(s.key, technique);
+    if (!used)
+      throw InputError("--sweep", s.key,
+                       "is a parameter of none of the techniques studied (voxgi render --help "
+                       "lists them)");
+  }
   for (const std::string& technique : o.techniques) {
     std::vector<const Sweep*> mine;
     for (const Sweep& s : sweeps)
