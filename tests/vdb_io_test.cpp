@@ -49,5 +49,33 @@ TEST(VdbIo, VoxelCentresLineUpWithTheWorld) {
   EXPECT_EQ(grid->getGridClass(), openvdb::GRID_FOG_VOLUME);
 }
 
+// A series buffer of SH volumes: one RGB grid per step and coefficient, named
+// <buffer>.step_<k>_c<i>, holding (r_i, g_i, b_i) of that step's cells.
+TEST(VdbIo, ShSeriesBecomesOneRgbGridPerStepAndCoefficient) {
+  const int n = 4, steps = 3;
+  Buffer series(BufferId::lpv_propagate_steps_sh4, glm::ivec3(n, n, n * steps));
+  for (int k = 0; k < steps; ++k)
+    for (int c = 0; c < 3; ++c)
+      for (int i = 0; i < 4; ++i)
+        series.set(size_t(k) * n * n * n + 5, c * 4 + i, float(100 * k + 10 * i + c + 1));
+  const std::string path = testTempDir() + "series.vdb";
+  writeVdb(path, {&series}, unitGrid(n));
+  openvdb::io::File file(path);
+  file.open();
+  int grids = 0;
+  for (auto it = file.beginName(); it != file.endName(); ++it) ++grids;
+  EXPECT_EQ(grids, steps * 4);
+  const glm::ivec3 cell(1, 1, 0);  // element 5 of a 4^3 volume
+  for (int k = 0; k < steps; ++k)
+    for (int i = 0; i < 4; ++i) {
+      const auto g = openvdb::gridPtrCast<openvdb::Vec3SGrid>(
+          file.readGrid("steps_sh4.step_" + std::to_string(k) + "_c" + std::to_string(i)));
+      ASSERT_TRUE(g) << k << " " << i;
+      const openvdb::Vec3s v =
+          g->getConstAccessor().getValue(openvdb::Coord(cell.x, cell.y, cell.z));
+      for (int c = 0; c < 3; ++c) EXPECT_EQ(v[c], float(100 * k + 10 * i + c + 1));
+    }
+}
+
 }  // namespace
 }  // namespace voxgi::test
