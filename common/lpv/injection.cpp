@@ -5,6 +5,7 @@
 
 #include "common/error.h"
 #include "common/memory.h"
+#include "shaders/shared/lpv/inject_kernel.h"
 
 namespace voxgi::lpv {
 namespace {
@@ -64,6 +65,16 @@ Emitters emitters(const StageContext& ctx) {
 
 glm::vec4 injectionScale(const StageContext& ctx) {
   return emitters(ctx).scale;
+}
+
+std::vector<float> injectedVolume(const StageContext& ctx, const Buffer& sums) {
+  const glm::vec4 scale = injectionScale(ctx);
+  const auto coefficients = size_t(ctx.settings.lpv.coefficients());
+  std::vector<float> out(sums.words.size());
+  for (size_t w = 0; w < out.size(); ++w)
+    out[w] = shared::injectedIntensity(static_cast<int32_t>(sums.words[w]),
+                                       scale[int(w % (3 * coefficients) / coefficients)]);
+  return out;
 }
 
 Injection prepareInjection(const StageContext& ctx) {

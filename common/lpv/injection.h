@@ -23,7 +23,10 @@ struct Injection {
 // 2^31. Throws InputError naming the scene's inject.emitter_spacing when the VPLs would not fit
 // in memory.
 Injection prepareInjection(const StageContext& ctx);
-// prepareInjection(ctx).params.scale without the VPLs (propagate reads the sums with it).
+// prepareInjection(ctx).params.scale without the VPLs.
 glm::vec4 injectionScale(const StageContext& ctx);
+// LPV_0, the volume propagate starts from: inject_lpv's fixed-point `sums` as floats (the same
+// words for both backends, computed once on the host).
+std::vector<float> injectedVolume(const StageContext& ctx, const Buffer& sums);
 
 }  // namespace voxgi::lpv

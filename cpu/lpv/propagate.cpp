@@ -11,7 +11,6 @@
 #include "common/lpv/sh_buffers.h"
 #include "common/parallel.h"
 #include "cpu/stages.h"
-#include "shaders/shared/lpv/inject_kernel.h"
 #include "shaders/shared/lpv/propagate_kernel.h"
 
 namespace voxgi::cpu {
@@ -55,22 +54,19 @@ struct PropagateVolumes {
 void lpv::propagate(const StageContext& ctx, BufferSet& buffers) {
   const LpvSettings& s = ctx.settings.lpv;
   const voxgi::lpv::ShBuffers sh = voxgi::lpv::shBuffers(s);
-  checkStageMemory(ctx, StageId::lpv_propagate, 1.5);  // and two step volumes
   const int n = ctx.scene.grid.resolution;
-  voxgi::lpv::Propagation setup = voxgi::lpv::preparePropagation(s, n);
-  const Buffer& sums = buffers.at(sh.intensitySum);
   const int words = 3 * s.coefficients();
-  const size_t cells = size_t(n) * size_t(n) * size_t(n), count = cells * size_t(words);
+  const size_t count = size_t(n) * size_t(n) * size_t(n) * size_t(words);
+  // The stage's buffers and the two step volumes it swaps between.
+  const double stageBytes = double(stageBufferBytes(StageId::lpv_propagate, ctx.scene, ctx.plan));
+  checkStageMemory(ctx, StageId::lpv_propagate, 1.0 + 2.0 * 4.0 * double(count) / stageBytes);
+  voxgi::lpv::Propagation setup = voxgi::lpv::preparePropagation(s, n);
 
-  // LPV_0 from the fixed-point sums.
-  std::vector<float> previous(count), next(count);
+  std::vector<float> previous = voxgi::lpv::injectedVolume(ctx, buffers.at(sh.intensitySum));
+  std::vector<float> next(count);
   Buffer accumulated(sh.accumulated, glm::ivec3(n));
   const bool history = ctx.plan.on(sh.history);
   Buffer steps = history ? Buffer(sh.steps, glm::ivec3(n, n, n * (setup.steps + 1))) : Buffer();
-  const glm::vec4 scale = voxgi::lpv::injectionScale(ctx);
-  for (size_t w = 0; w < count; ++w)
-    previous[w] = shared::injectedIntensity(static_cast<int32_t>(sums.words[w]),
-                                            scale[int(w % size_t(words)) / s.coefficients()]);
   float* acc = reinterpret_cast<float*>(accumulated.words.data());
   if (s.accumulateInjection == LpvToggle::on) std::memcpy(acc, previous.data(), count * 4);
   if (history) std::memcpy(steps.words.data(), previous.data(), count * 4);

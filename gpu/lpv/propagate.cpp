@@ -1,7 +1,6 @@
-// GPU propagate stage: LPV_0 from the fixed-point sums on the host (the same arithmetic as the
-// CPU), then shaders/lpv/propagate.comp propagate.steps times between two storage buffers, all
-// on the GPU; each step is copied into the history buffer when the plan keeps it.
-#include <cstring>
+// GPU propagate stage: LPV_0 from the fixed-point sums on the host (common/lpv/injection.h, as
+// the CPU's), then shaders/lpv/propagate.comp propagate.steps times between two storage buffers,
+// all on the GPU; each step is copied into the history buffer when the plan keeps it.
 #include <vector>
 
 #include "common/lpv/injection.h"
@@ -10,7 +9,6 @@
 #include "gpu/program.h"
 #include "gpu/stages.h"
 #include "gpu/volumes.h"
-#include "shaders/shared/lpv/inject_kernel.h"
 
 namespace voxgi::gpu {
 
@@ -20,26 +18,18 @@ void lpv::propagate(GlContext& context, const StageContext& ctx, BufferSet& buff
   const voxgi::lpv::ShBuffers sh = voxgi::lpv::shBuffers(s);
   const int n = ctx.scene.grid.resolution;
   const voxgi::lpv::Propagation setup = voxgi::lpv::preparePropagation(s, n);
-  const Buffer& sums = buffers.at(sh.intensitySum);
-  const int words = 3 * s.coefficients();
-  const size_t count = sums.words.size(), bytes = count * 4;
+  const std::vector<float> initial = voxgi::lpv::injectedVolume(ctx, buffers.at(sh.intensitySum));
+  const size_t bytes = initial.size() * 4;
   const bool history = ctx.plan.on(sh.history);
 
-  Buffer initial(sh.accumulated, glm::ivec3(n));
-  const glm::vec4 scale = voxgi::lpv::injectionScale(ctx);
-  for (size_t w = 0; w < count; ++w)
-    initial.set(w / size_t(words), int(w % size_t(words)),
-                shared::injectedIntensity(static_cast<int32_t>(sums.words[w]),
-                                          scale[int(w % size_t(words)) / s.coefficients()]));
   requireStorageBlock(gl, ctx, bytes, "the SH volumes");
   GlBuffer entryBlock(gl, createBlock(gl, setup.params, setup.entries));
-  GlBuffer volumes[2] = {GlBuffer(gl, uploadWords(gl, initial)),
+  GlBuffer volumes[2] = {GlBuffer(gl, createBuffer(gl, bytes, initial.data())),
                          GlBuffer(gl, createBuffer(gl, bytes, nullptr))};
-  std::vector<uint32_t> zeros;
-  if (s.accumulateInjection == LpvToggle::off) zeros.assign(count, 0u);
-  GlBuffer accumulated(gl, s.accumulateInjection == LpvToggle::on
-                               ? uploadWords(gl, initial)
-                               : createBuffer(gl, bytes, zeros.data()));
+  const std::vector<float> zeros(s.accumulateInjection == LpvToggle::on ? 0 : initial.size());
+  GlBuffer accumulated(
+      gl, createBuffer(gl, bytes,
+                       s.accumulateInjection == LpvToggle::on ? initial.data() : zeros.data()));
   const Buffer* blocking = buffers.find(BufferId::lpv_inject_geometry_blocking);
   GlBuffer blockingBlock(
       gl, blocking != nullptr ? uploadWords(gl, *blocking) : createBuffer(gl, 16, nullptr));
