@@ -46,7 +46,8 @@ double Buffer::value(size_t element, int component) const {
   return 0.0;
 }
 
-uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image, int series) {
+uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image, int series,
+                       glm::ivec2 maps) {
   const auto n = static_cast<uint64_t>(resolution);
   const int levels = mipLevelCount(resolution);
   switch (shape) {
@@ -60,12 +61,17 @@ uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image, int 
       return uint64_t(image.x) * uint64_t(image.y);
     case BufferShape::series:
       return n * n * n * static_cast<uint64_t>(series);
+    case BufferShape::maps:
+      return uint64_t(maps.x) * uint64_t(maps.x) * uint64_t(maps.y);
   }
   return 0;
 }
 
-glm::ivec3 shapeExtent(BufferShape shape, int resolution, glm::ivec2 image, int series) {
+glm::ivec3 shapeExtent(BufferShape shape, int resolution, glm::ivec2 image, int series,
+                       glm::ivec2 maps) {
   switch (shape) {
+    case BufferShape::maps:
+      return {maps.x, maps.x * maps.y, 1};
     case BufferShape::volume:
       return glm::ivec3(resolution);
     case BufferShape::series:

@@ -21,7 +21,7 @@ std::vector<std::string> writeBuffers(const std::string& prefix,
   std::vector<std::string> written;
   std::vector<const Buffer*> voxels;
   for (const Buffer* b : buffers) {
-    if (b->spec->shape != BufferShape::image) {
+    if (b->spec->shape != BufferShape::image && b->spec->shape != BufferShape::maps) {
       voxels.push_back(b);
       continue;
     }

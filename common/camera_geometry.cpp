@@ -11,8 +11,8 @@ glm::vec3 CameraRays::pixelDirection(int x, int y) const {
                                 {float(x) + 0.5f, float(y) + 0.5f}, {float(width), float(height)});
 }
 
-glm::mat4 CameraRays::viewProjection(float nearPlane, float farPlane) const {
-  // Rows of the view matrix are the camera axes; the camera looks down -z.
+glm::mat4 viewMatrix(glm::vec3 origin, glm::vec3 forward, glm::vec3 right, glm::vec3 up) {
+  // Rows of the view matrix are the eye's axes.
   glm::mat4 view(1.0f);
   for (int i = 0; i < 3; ++i) {
     view[i][0] = right[i];
@@ -21,13 +21,22 @@ glm::mat4 CameraRays::viewProjection(float nearPlane, float farPlane) const {
   }
   view[3] =
       glm::vec4(-glm::dot(right, origin), -glm::dot(up, origin), glm::dot(forward, origin), 1.0f);
+  return view;
+}
+
+glm::mat4 flippedPerspective(float tanX, float tanY, float nearPlane, float farPlane) {
   glm::mat4 proj(0.0f);
-  proj[0][0] = 1.0f / (tanHalfFov * aspect);
-  proj[1][1] = -1.0f / tanHalfFov;  // flipped: GL row 0 is the image's top row
+  proj[0][0] = 1.0f / tanX;
+  proj[1][1] = -1.0f / tanY;  // flipped: GL row 0 is the image's top row
   proj[2][2] = -(farPlane + nearPlane) / (farPlane - nearPlane);
   proj[2][3] = -1.0f;
   proj[3][2] = -2.0f * farPlane * nearPlane / (farPlane - nearPlane);
-  return proj * view;
+  return proj;
+}
+
+glm::mat4 CameraRays::viewProjection(float nearPlane, float farPlane) const {
+  return flippedPerspective(tanHalfFov * aspect, tanHalfFov, nearPlane, farPlane) *
+         viewMatrix(origin, forward, right, up);
 }
 
 CameraRays cameraRays(const Scene& scene) {

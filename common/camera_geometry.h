@@ -33,6 +33,12 @@ struct CameraGeometry {
 };
 
 CameraRays cameraRays(const Scene& scene);
+
+// The view matrix of an eye at `origin` with unit axes right, up, forward (it looks down -z).
+glm::mat4 viewMatrix(glm::vec3 origin, glm::vec3 forward, glm::vec3 right, glm::vec3 up);
+// A perspective projection of half-extents tanX, tanY at depth 1 and depth range [near, far],
+// y flipped so that GL framebuffer row 0 is the image's top row.
+glm::mat4 flippedPerspective(float tanX, float tanY, float nearPlane, float farPlane);
 CameraGeometry prepareCameraGeometry(const Scene& scene);
 
 }  // namespace voxgi

@@ -26,6 +26,7 @@ class EffectPlan {
  public:
   bool full = false;            // plan.mode=full: every optional effect is computed
   int seriesLength = 1;         // volumes in a BufferShape::series buffer (lpv: steps + 1)
+  glm::ivec2 maps{0};           // BufferShape::maps: x the side of a map, y the map count
   std::vector<PlanItem> items;  // stages in graph order, each followed by its effects
 
   // A stage of the plan and whether it runs; an effect of it (indented under its stage).

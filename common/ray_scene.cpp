@@ -1,6 +1,7 @@
 #include "common/ray_scene.h"
 
 #include <algorithm>
+#include <vector>
 #include <cmath>
 
 #include <embree3/rtcore.h>
@@ -41,6 +42,13 @@ void RayScene::addMesh(unsigned id, std::span<const glm::vec3> vertices,
   rtcCommitGeometry(g);
   rtcAttachGeometryByID(handles_->scene, g, id);
   rtcReleaseGeometry(g);
+}
+
+void RayScene::addTriangleSoup(unsigned id, std::span<const glm::vec3> vertices) {
+  std::vector<glm::uvec3> triangles(vertices.size() / 3);
+  for (size_t t = 0; t < triangles.size(); ++t)
+    triangles[t] = glm::uvec3(3 * t, 3 * t + 1, 3 * t + 2);
+  addMesh(id, vertices, triangles);
 }
 
 void RayScene::commit() {

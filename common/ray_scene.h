@@ -20,6 +20,8 @@ class RayScene {
   // Adds geometry `id` (ids 0, 1, ... in order): triangles indexing `vertices`. Then commit().
   void addMesh(unsigned id, std::span<const glm::vec3> vertices,
                std::span<const glm::uvec3> triangles);
+  // Adds geometry `id` of triangles t = vertices 3t, 3t + 1, 3t + 2 (primitive t).
+  void addTriangleSoup(unsigned id, std::span<const glm::vec3> vertices);
   void commit();
 
   struct Hit {

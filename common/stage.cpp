@@ -11,22 +11,29 @@ uint64_t stageBufferBytes(StageId stage, const Scene& scene, const EffectPlan& p
   for (const BufferSpec* b : stageBuffers(stageSpec(stage)))
     if (bufferNeeded(*b, plan))
       words += uint64_t(b->components) *
-               shapeElements(b->shape, scene.grid.resolution, image, plan.seriesLength);
+               shapeElements(b->shape, scene.grid.resolution, image, plan.seriesLength, plan.maps);
   return 4u * words;
 }
 
 void checkStageMemory(const StageContext& ctx, StageId stage, double copies) {
-  bool image = false;
-  for (const BufferSpec* b : stageBuffers(stageSpec(stage)))
+  bool image = false, maps = false;
+  for (const BufferSpec* b : stageBuffers(stageSpec(stage))) {
     image |= b->shape == BufferShape::image;
+    maps |= b->shape == BufferShape::maps;
+  }
   const Scene& scene = ctx.scene;
   const auto bytes =
       static_cast<uint64_t>(copies * static_cast<double>(stageBufferBytes(stage, scene, ctx.plan)));
+  const glm::ivec2 m = ctx.plan.maps;
   const std::string what =
-      image ? std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height)
-            : std::to_string(scene.grid.resolution) + "^3";
+      maps    ? std::to_string(m.y) + " maps of " + std::to_string(m.x) + "^2"
+      : image ? std::to_string(scene.camera.width) + "x" + std::to_string(scene.camera.height)
+              : std::to_string(scene.grid.resolution) + "^3";
   requireMemory(bytes, "the " + std::string(stageSpec(stage).name) + " buffers at " + what,
-                scene.file, image ? "camera.resolution" : "grid.resolution");
+                scene.file,
+                maps    ? "rsm.resolution"
+                : image ? "camera.resolution"
+                        : "grid.resolution");
 }
 
 }  // namespace voxgi

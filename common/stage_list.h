@@ -18,8 +18,10 @@ const char* scalarTypeName(ScalarType t);
 // volume: N^3 voxels; mips: levels 1..log2(N) of an N^3 volume, level l is (N>>l)^3, one after
 // another; mips6: the same levels, each six (N>>l)^3 volumes side by side along x (faces +x, -x,
 // +y, -y, +z, -z), so level l is (6(N>>l)) x (N>>l) x (N>>l); image: the camera's pixels, row 0 at
-// the top; series: EffectPlan::seriesLength N^3 volumes one after another (N x N x N*length).
-enum class BufferShape { volume, mips, mips6, image, series };
+// the top; series: EffectPlan::seriesLength N^3 volumes one after another (N x N x N*length);
+// maps: EffectPlan::maps square images (texels of a shadow map's views, row 0 at the top) one
+// below another (R x R*count).
+enum class BufferShape { volume, mips, mips6, image, series, maps };
 
 // An effect of the plan (common/effect_plan.h) a buffer may depend on; `always` for none.
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)

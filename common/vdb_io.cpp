@@ -125,7 +125,7 @@ void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers
         blocks.emplace_back(
             blockGrids(*b, {size_t(k) * volume, n, size_t(n)}, name + ".step_" + std::to_string(k)),
             0);
-    } else if (b->spec->shape != BufferShape::image) {
+    } else if (b->spec->shape != BufferShape::image && b->spec->shape != BufferShape::maps) {
       const int faces = b->spec->shape == BufferShape::mips6 ? 6 : 1;
       for (int level = 1; level <= mipLevelCount(n); ++level) {
         const int s = n >> level;

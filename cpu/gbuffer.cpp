@@ -15,10 +15,7 @@ void common::gbuffer(const StageContext& ctx, BufferSet& buffers) {
   const CameraRays& cam = g.camera;
   // One geometry of the camera geometry's triangles: primitive = triangle index.
   RayScene rays;
-  std::vector<glm::uvec3> triangles(g.triangles.size());
-  for (size_t t = 0; t < triangles.size(); ++t)
-    triangles[t] = glm::uvec3(3 * t, 3 * t + 1, 3 * t + 2);
-  rays.addMesh(0, g.vertices, triangles);
+  rays.addTriangleSoup(0, g.vertices);
   rays.commit();
   const glm::ivec3 extent(cam.width, cam.height, 1);
   const bool emissive = ctx.plan.on(Effect::emission);

@@ -53,12 +53,15 @@ INSTANTIATE_TEST_SUITE_P(
       return name;
     });
 
-// Light propagation volumes on the Martin-proportioned Cornell box, 16^3 and 6 steps (every
-// step's volume compared), both forms and both platforms.
+// Light propagation volumes, 16^3 and 6 steps (every step's volume compared), both forms and both
+// platforms: on the Martin-proportioned Cornell box (an area light), and on the bunny, whose
+// point light goes through the rsm stage (or a spot and a sun in its place: one frustum, one box).
 struct LpvCase {
   const char* technique;
   gpu::GlPlatform platform;
   std::vector<std::string> sets = {};
+  const char* scene = "scenes/cornell_box_lpv.json";
+  bool spotAndSun = false;
 };
 
 class GpuLpvStages : public testing::TestWithParam<LpvCase> {};
@@ -66,10 +69,20 @@ class GpuLpvStages : public testing::TestWithParam<LpvCase> {};
 TEST_P(GpuLpvStages, AgreeWithCpu) {
   const LpvCase& c = GetParam();
   const Technique& technique = findTechnique(c.technique);
-  Scene scene = loadScene(sourcePath("scenes/cornell_box_lpv.json"));
+  Scene scene = loadScene(sourcePath(c.scene));
   scene.grid.resolution = 16;
   scene.camera.width = scene.camera.height = 64;
-  std::vector<std::string> sets{"propagate.steps=6"};
+  if (c.spotAndSun) {
+    Light spot = scene.lights.at(0), sun;
+    spot.type = Light::Type::spot;
+    spot.direction = glm::normalize(glm::dvec3(-0.2, -1.0, -0.3));
+    spot.spotAngleDeg = 70.0f;
+    sun.type = Light::Type::directional;
+    sun.direction = glm::normalize(glm::dvec3(0.4, -1.0, -0.5));
+    sun.intensity = glm::vec3(0.5f);
+    scene.lights = {spot, sun};
+  }
+  std::vector<std::string> sets{"propagate.steps=6", "rsm.resolution=64"};
   sets.insert(sets.end(), c.sets.begin(), c.sets.end());
   Settings settings = resolveSettings(technique, scene.settings, scene.file, "default", sets);
   settings.inspect = true;  // as voxgi diff: every step
@@ -84,15 +97,18 @@ TEST_P(GpuLpvStages, AgreeWithCpu) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, GpuLpvStages,
-    testing::Values(LpvCase{"lpv", gpu::GlPlatform::egl}, LpvCase{"holpv", gpu::GlPlatform::osmesa},
-                    LpvCase{"holpv",
-                            gpu::GlPlatform::egl,
-                            {"propagate.clamp=on", "propagate.accumulate_injection=off",
-                             "inject.shift=on"}}),
+    testing::Values(
+        LpvCase{"lpv", gpu::GlPlatform::egl}, LpvCase{"holpv", gpu::GlPlatform::osmesa},
+        LpvCase{"holpv",
+                gpu::GlPlatform::egl,
+                {"propagate.clamp=on", "propagate.accumulate_injection=off", "inject.shift=on"}},
+        LpvCase{"lpv", gpu::GlPlatform::egl, {}, "scenes/bunny.json"},
+        LpvCase{"holpv", gpu::GlPlatform::osmesa, {"inject.shift=on"}, "scenes/bunny.json", true}),
     [](const testing::TestParamInfo<LpvCase>& p) {
-      return std::string(p.param.technique) + "_" +
+      std::string scene = std::string(p.param.scene).substr(7);
+      return scene.substr(0, scene.find('.')) + "_" + p.param.technique + "_" +
              (p.param.platform == gpu::GlPlatform::egl ? "egl" : "osmesa") +
-             (p.param.sets.empty() ? "" : "_options");
+             (p.param.sets.empty() ? "" : "_options") + (p.param.spotAndSun ? "_spot_sun" : "");
     });
 
 }  // namespace

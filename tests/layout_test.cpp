@@ -25,7 +25,7 @@ namespace {
 
 using namespace shared;
 
-// Every program the GPU stages link (gpu/*.cpp, gpu/vct/*.cpp).
+// Every program the GPU stages link (gpu/*.cpp, gpu/vct/*.cpp, gpu/lpv/*.cpp).
 std::vector<std::vector<const ShaderSource*>> stagePrograms() {
   using namespace shaders;
   return {{&voxelize_vert, &voxelize_geom, &voxelize_frag},
@@ -37,6 +37,7 @@ std::vector<std::vector<const ShaderSource*>> stagePrograms() {
           {&vct_bounce_comp},
           {&vct_trace_cones_comp},
           {&vct_compose_comp},
+          {&lpv_rsm_vert, &lpv_rsm_frag},
           {&lpv_inject_lpv_comp},
           {&lpv_inject_geometry_comp},
           {&lpv_propagate_comp},
@@ -79,6 +80,7 @@ std::vector<Layout> layouts() {
     kBounce,
     kTrace,
     kCompose,
+    kRsm,
     kInjectLpv,
     kInjectGeometry,
     kPropagate,
@@ -97,7 +99,7 @@ std::vector<Layout> layouts() {
       {"SurfaceTriangle",
        sizeof(SurfaceTriangle),
        {VOXGI_FIELD(SurfaceTriangle, normal), VOXGI_FIELD(SurfaceTriangle, info)},
-       {{kGbuffer, "triangles[0]", 0, true}}},
+       {{kGbuffer, "triangles[0]", 0, true}, {kRsm, "triangles[0]", 0, true}}},
       {"MaterialData",
        sizeof(MaterialData),
        {VOXGI_FIELD(MaterialData, albedo), VOXGI_FIELD(MaterialData, specular),
@@ -109,7 +111,9 @@ std::vector<Layout> layouts() {
         VOXGI_FIELD(LightData, intensity), VOXGI_FIELD(LightData, falloff),
         VOXGI_FIELD(LightData, info)},
        {{kLight, "lights[0]", sizeof(LightVoxelsParams), true},
-        {kTrace, "lights[0]", sizeof(ConeTraceParams), true}}},
+        {kTrace, "lights[0]", sizeof(ConeTraceParams), true},
+        {kRsm, "lights[0]", 0, true},
+        {kShadeLpv, "lights[0]", 0, true}}},
       {"LightVoxelsParams",
        sizeof(LightVoxelsParams),
        {VOXGI_FIELD(LightVoxelsParams, config), VOXGI_FIELD(LightVoxelsParams, values)},
@@ -163,8 +167,20 @@ std::vector<Layout> layouts() {
        {{kPropagate, "params", 0, false}}},
       {"ShadeParams",
        sizeof(ShadeParams),
-       {VOXGI_FIELD(ShadeParams, shape), VOXGI_FIELD(ShadeParams, scale)},
+       {VOXGI_FIELD(ShadeParams, shape), VOXGI_FIELD(ShadeParams, scale),
+        VOXGI_FIELD(ShadeParams, camera)},
        {{kShadeLpv, "params", 0, false}}},
+      {"RsmView",
+       sizeof(RsmView),
+       {VOXGI_FIELD(RsmView, origin), VOXGI_FIELD(RsmView, forward), VOXGI_FIELD(RsmView, right),
+        VOXGI_FIELD(RsmView, up), VOXGI_FIELD(RsmView, info)},
+       {{kRsm, "views[0]", sizeof(RsmParams), true},
+        {kInjectLpv, "views[0]", sizeof(RsmParams), true},
+        {kShadeLpv, "views[0]", sizeof(RsmParams), true}}},
+      {"RsmParams",
+       sizeof(RsmParams),
+       {VOXGI_FIELD(RsmParams, shape), VOXGI_FIELD(RsmParams, scale)},
+       {{kRsm, "params", 0, false}, {kInjectLpv, "rsm", 0, false}, {kShadeLpv, "rsm", 0, false}}},
   };
 }
 

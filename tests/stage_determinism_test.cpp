@@ -29,24 +29,28 @@ TEST(StageDeterminism, AllStagesBitIdenticalOn1_2_8Threads) {
   }
 }
 
-// holpv with clamp and every step kept, on the Martin-proportioned Cornell box.
+// holpv with clamp and every step kept, on the Martin-proportioned Cornell box (an area light)
+// and on the bunny (a point light through the rsm stage, and its ceiling panel).
 TEST(StageDeterminism, LpvBitIdenticalOn1_2_8Threads) {
-  Scene scene = loadScene(sourcePath("scenes/cornell_box_lpv.json"));
-  scene.grid.resolution = 16;
-  scene.camera.width = scene.camera.height = 48;
-  const Technique& holpv = findTechnique("holpv");
-  Settings settings = resolveSettings(holpv, scene.settings, scene.file, "default",
-                                      {"propagate.steps=5", "propagate.clamp=on"});
-  settings.inspect = true;
-  const std::string last = holpv.steps().back()->qualifiedName();
-  uint64_t reference = 0;
-  for (int threads : {1, 2, 8}) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-    tbb::task_arena arena(threads);
-    const uint64_t h =
-        arena.execute([&] { return hashBuffers(runCpuUntil(holpv, scene, settings, last)); });
-    if (threads == 1) reference = h;
-    EXPECT_EQ(h, reference) << threads << " threads";
+  for (const char* file : {"scenes/cornell_box_lpv.json", "scenes/bunny.json"}) {
+    Scene scene = loadScene(sourcePath(file));
+    scene.grid.resolution = 16;
+    scene.camera.width = scene.camera.height = 48;
+    const Technique& holpv = findTechnique("holpv");
+    Settings settings =
+        resolveSettings(holpv, scene.settings, scene.file, "default",
+                        {"propagate.steps=5", "propagate.clamp=on", "rsm.resolution=32"});
+    settings.inspect = true;
+    const std::string last = holpv.steps().back()->qualifiedName();
+    uint64_t reference = 0;
+    for (int threads : {1, 2, 8}) {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+      tbb::task_arena arena(threads);
+      const uint64_t h =
+          arena.execute([&] { return hashBuffers(runCpuUntil(holpv, scene, settings, last)); });
+      if (threads == 1) reference = h;
+      EXPECT_EQ(h, reference) << file << ", " << threads << " threads";
+    }
   }
 }
 

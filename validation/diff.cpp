@@ -30,6 +30,7 @@ TieClassifier classifierFor(StageId stage, const StageContext& ctx, const Buffer
                             const BufferSet& gpu) {
   if (stage == StageId::common_voxelize) return voxelizeTies(ctx);
   if (stage == StageId::common_gbuffer) return gbufferTies(cpu, gpu);
+  if (stage == StageId::lpv_rsm) return rsmTies(cpu, gpu);
   return {};
 }
 

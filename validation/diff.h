@@ -68,5 +68,7 @@ TieClassifier voxelizeTies(const StageContext& ctx);
 // image, it lies on a triangle edge (a 4-neighbour sees another triangle or the background).
 // The buffers must outlive the classifier.
 TieClassifier gbufferTies(const BufferSet& cpu, const BufferSet& gpu);
+// The rsm stage's: the same rule within each view's map (validation/edge_ties.cpp).
+TieClassifier rsmTies(const BufferSet& cpu, const BufferSet& gpu);
 
 }  // namespace voxgi::validation

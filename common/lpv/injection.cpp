@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "common/lpv/rsm.h"
 #include "common/memory.h"
 #include "shaders/shared/lpv/inject_kernel.h"
 
@@ -31,6 +32,7 @@ struct Emitters {
   glm::vec4 scale{1.0f};
 };
 
+// The emissive triangles, and the scale from their flux plus the bound of the RSM texels' flux.
 Emitters emitters(const StageContext& ctx) {
   const Scene& scene = ctx.scene;
   const GridSpec& grid = scene.grid;
@@ -56,6 +58,7 @@ Emitters emitters(const StageContext& ctx) {
       total += flux;
     }
   }
+  if (!scene.lights.empty()) total += rsmFluxBound(scene, prepareRsm(scene, ctx.settings.lpv));
   out.scale =
       glm::vec4(fixedPointScale(total.x), fixedPointScale(total.y), fixedPointScale(total.z), 0.0f);
   return out;
@@ -106,8 +109,8 @@ Injection prepareInjection(const StageContext& ctx) {
         if (i + j + 1 < e.m) add((double(i) + 2.0 / 3.0) / m, (double(j) + 2.0 / 3.0) / m);
       }
   }
-  out.params.shape =
-      glm::ivec4(ctx.scene.grid.resolution, s.coefficients(), int(out.vpls.size()), 0);
+  out.params.shape = glm::ivec4(ctx.scene.grid.resolution, s.coefficients(), int(out.vpls.size()),
+                                s.vplShift == LpvToggle::on ? 1 : 0);
   out.params.scale = found.scale;
   return out;
 }

@@ -1,6 +1,6 @@
 // inject_lpv's input, prepared once on the host for both backends: the virtual point lights of
-// the scene's emissive triangles, and the fixed-point scale of their sums
-// (docs/stages/lpv/inject_lpv.md).
+// the scene's emissive triangles, and the fixed-point scale of all VPLs' sums, the RSM texels'
+// included (docs/stages/lpv/inject_lpv.md).
 #pragma once
 
 #include <vector>
@@ -19,7 +19,8 @@ struct Injection {
 // sub-triangles, m = ceil(longest edge / (inject.emitter_spacing cells)); a VPL at each centroid
 // carries the sub-triangle's flux, pi x emission x area. Positions in voxel-local coordinates,
 // computed in double. The scale per colour is the largest power of two with scale x total flux
-// <= 2^30: a lobe coefficient is at most a third of its VPL's flux, so no cell's sum can reach
+// <= 2^30, the total being the emitters' flux plus the bound of common/lpv/rsm.h on the RSM
+// texels': a lobe coefficient is at most a third of its VPL's flux, so no cell's sum can reach
 // 2^31. Throws InputError naming the scene's inject.emitter_spacing when the VPLs would not fit
 // in memory.
 Injection prepareInjection(const StageContext& ctx);

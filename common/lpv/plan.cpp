@@ -1,7 +1,7 @@
 // Light propagation volumes' effect planner (docs/effect-plan.md).
 #include <sstream>
 
-#include "common/error.h"
+#include "common/lpv/rsm.h"
 #include "common/lpv/sh_buffers.h"
 #include "common/technique.h"
 
@@ -11,11 +11,6 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   const LpvSettings& s = settings.lpv;
   EffectPlan p;
   p.full = settings.planMode == PlanMode::full;
-  if (!scene.lights.empty())
-    throw InputError(scene.file, "lights",
-                     "lpv lights a scene from its emissive surfaces; analytic lights need "
-                     "reflective shadow maps (the rsm stage), which this build does not have yet");
-
   std::string emitters;
   for (const Mesh& m : scene.meshes) {
     const Material& mat = scene.materials.at(m.material);
@@ -27,9 +22,20 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
               ? "surface area and normals per voxel -> the geometry volume"
               : "propagate.occlusion=off, but the voxel volumes are the scene's grid for every "
                 "technique");
+  const int views = rsmViewCount(scene);
+  std::ostringstream rsm;
+  if (views == 0)
+    rsm << "no analytic lights";
+  else
+    rsm << scene.lights.size() << " analytic light(s): " << views << " view(s) of "
+        << s.rsmResolution << "^2 texels (rsm.resolution)";
+  p.stage(StageId::lpv_rsm, views > 0, rsm.str());
+  p.maps = glm::ivec2(s.rsmResolution, views);
+  std::string sources = emitters.empty() ? "" : "VPLs on emissive material " + emitters;
+  if (views > 0) sources += std::string(sources.empty() ? "" : " and ") + "a VPL per RSM texel";
   p.stage(StageId::lpv_inject_lpv, true,
-          emitters.empty() ? "no emissive material: the volume stays dark"
-                           : "VPLs on emissive material " + emitters);
+          sources.empty() ? "no emissive material and no analytic light: the volume stays dark"
+                          : sources);
   const ShBuffers sh = shBuffers(s);
   p.set(sh.coefficients, true);
   p.stage(StageId::lpv_inject_geometry, s.occlusion == LpvOcclusion::on || p.full,
@@ -54,8 +60,11 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   // only a volume next to the sums voxelize keeps anyway.
   p.effect("emission per pixel", Effect::emission, p.full || !emitters.empty(),
            emitters.empty() ? "no emissive material" : "emissive material " + emitters);
+  p.set(Effect::direct_light, views > 0 || p.full);
   p.stage(StageId::lpv_shade_lpv, true,
-          "irradiance from the accumulated volume x albedo + emission");
+          views > 0 ? "irradiance from the accumulated volume, direct light with the RSM depth as "
+                      "shadow map, x albedo + emission"
+                    : "irradiance from the accumulated volume x albedo + emission");
   return p;
 }
 

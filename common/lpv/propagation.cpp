@@ -65,8 +65,10 @@ Propagation preparePropagation(const LpvSettings& s, int resolution) {
 shared::ShadeParams shadeParams(const StageContext& ctx) {
   const double s = ctx.scene.grid.voxelSize();
   shared::ShadeParams p{};
-  p.shape = glm::ivec4(ctx.scene.grid.resolution, ctx.settings.lpv.coefficients(), 0, 0);
+  const int lights = ctx.plan.runs(StageId::lpv_rsm) ? int(ctx.scene.lights.size()) : 0;
+  p.shape = glm::ivec4(ctx.scene.grid.resolution, ctx.settings.lpv.coefficients(), lights, 0);
   p.scale = glm::vec4(float(1.0 / (s * s)), ctx.settings.lpv.shadeOffset, 0.0f, 0.0f);
+  p.camera = glm::vec4(glm::vec3(ctx.scene.grid.toVoxel(ctx.scene.camera.position)), 0.0f);
   return p;
 }
 

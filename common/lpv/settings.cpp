@@ -31,6 +31,10 @@ const std::vector<Param>& params() {
                   "move each VPL half a cell along its normal before binning (self-lighting)"),
       number<lpv>("shade.offset", &LpvSettings::shadeOffset, 0.0f, 2.0f,
                   "cells along the normal at which a pixel samples the accumulated volume"),
+      number<lpv>("rsm.resolution", &LpvSettings::rsmResolution, 1, 4096,
+                  "texels per side of a reflective shadow map view (six views for a point light)"),
+      number<lpv>("rsm.bias", &LpvSettings::rsmBias, 0.0f, 16.0f,
+                  "shadow-map depth bias in texel footprints, divided by the surface's cosine"),
   };
   return table;
 }

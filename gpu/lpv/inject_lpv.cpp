@@ -1,15 +1,28 @@
-// GPU inject_lpv stage: shaders/lpv/inject_lpv.comp, one invocation per VPL, adding fixed-point
-// lobes with atomics into a storage buffer that is read back as the sums.
+// GPU inject_lpv stage: shaders/lpv/inject_lpv.comp, one invocation per VPL (the emitters', then
+// the RSM texels'), adding fixed-point lobes with atomics into a storage buffer that is read back
+// as the sums.
 #include <algorithm>
 #include <vector>
 
 #include "common/lpv/injection.h"
+#include "common/lpv/rsm.h"
 #include "common/lpv/sh_buffers.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
 #include "gpu/volumes.h"
 
 namespace voxgi::gpu {
+namespace {
+
+// One dispatch of `count` invocations, 64 per group, two-dimensional past 65535 groups.
+void dispatch(const Gl& gl, uint64_t count) {
+  const auto groups = static_cast<GLuint>((count + 63) / 64);
+  const GLuint width = std::min<GLuint>(std::max<GLuint>(groups, 1), 65535);
+  if (groups > 0) gl.DispatchCompute(width, (groups + width - 1) / width, 1);
+  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+}  // namespace
 
 void lpv::inject_lpv(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   const Gl& gl = beginStage(context, ctx, StageId::lpv_inject_lpv);
@@ -27,11 +40,27 @@ void lpv::inject_lpv(GlContext& context, const StageContext& ctx, BufferSet& buf
   program.use();
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, vplBlock.get());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, sumBlock.get());
-  const auto groups = static_cast<GLuint>((injection.vpls.size() + 63) / 64);
-  const GLuint width = std::min<GLuint>(std::max<GLuint>(groups, 1), 65535);
-  if (groups > 0) gl.DispatchCompute(width, (groups + width - 1) / width, 1);
-  gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gl.check("inject_lpv: dispatch");
+  // Without an RSM its blocks are bound to the VPLs, which the emitters' pass never reads as such.
+  for (GLuint b = 2; b <= 5; ++b) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, vplBlock.get());
+  program.set("uSource", 0);
+  dispatch(gl, injection.vpls.size());
+  gl.check("inject_lpv: emitters");
+  if (ctx.plan.runs(StageId::lpv_rsm)) {
+    const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings.lpv);
+    const Buffer& flux = buffers.at(BufferId::lpv_rsm_flux);
+    requireStorageBlock(gl, ctx, flux.words.size() * 4, "the RSM flux");
+    GlBuffer views(gl, createBlock(gl, rsm.params, rsm.views));
+    GlBuffer fluxBlock(gl, uploadWords(gl, flux));
+    GlBuffer normalBlock(gl, uploadWords(gl, buffers.at(BufferId::lpv_rsm_normal)));
+    GlBuffer depthBlock(gl, uploadWords(gl, buffers.at(BufferId::lpv_rsm_depth)));
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, views.get());
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, fluxBlock.get());
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, normalBlock.get());
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, depthBlock.get());
+    program.set("uSource", 1);
+    dispatch(gl, flux.elementCount());
+    gl.check("inject_lpv: RSM texels");
+  }
   readWords(gl, sumBlock.get(), sums);
   gl.check("inject_lpv: reading back");
   buffers.put(std::move(sums));

@@ -1,8 +1,10 @@
-// GPU shade_lpv stage: shaders/lpv/shade_lpv.comp per pixel on the accumulated volume and the
-// gbuffer's surfaces, packed per pixel on the host.
+// GPU shade_lpv stage: shaders/lpv/shade_lpv.comp per pixel on the accumulated volume, the
+// gbuffer's surfaces (packed per pixel on the host) and, with analytic lights, the RSM depth.
 #include <vector>
 
+#include "common/lights.h"
 #include "common/lpv/propagation.h"
+#include "common/lpv/rsm.h"
 #include "common/lpv/sh_buffers.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
@@ -18,16 +20,24 @@ void lpv::shade_lpv(GlContext& context, const StageContext& ctx, BufferSet& buff
   const Buffer& accumulated = buffers.at(sh.accumulated);
   const Buffer& objectId = buffers.at(common_gbuffer_object_id);
   const size_t pixels = objectId.elementCount();
+  // Per pixel: position, normal, albedo, emission (3 floats each), specular (4).
   const Buffer* fields[] = {
       &buffers.at(common_gbuffer_pixel_position), &buffers.at(common_gbuffer_pixel_normal),
-      &buffers.at(common_gbuffer_pixel_albedo), buffers.find(common_gbuffer_pixel_emission)};
-  std::vector<float> surfaces(pixels * 12, 0.0f);
-  for (int f = 0; f < 4; ++f)
+      &buffers.at(common_gbuffer_pixel_albedo), buffers.find(common_gbuffer_pixel_emission),
+      &buffers.at(common_gbuffer_pixel_specular)};
+  std::vector<float> surfaces(pixels * 16, 0.0f);
+  for (int f = 0; f < 5; ++f)
     if (fields[f] != nullptr)
       for (size_t e = 0; e < pixels; ++e)
-        for (int c = 0; c < 3; ++c)
-          surfaces[12 * e + size_t(3 * f + c)] = fields[f]->get<float>(e, c);
+        for (int c = 0; c < fields[f]->components(); ++c)
+          surfaces[16 * e + size_t(3 * f + c)] = fields[f]->get<float>(e, c);
 
+  // Lights, views and depth: a record each when the rsm stage did not run (never read then).
+  std::vector<shared::LightData> lights = voxelLights(ctx.scene);
+  voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings.lpv);
+  lights.resize(std::max<size_t>(lights.size(), 1));
+  rsm.views.resize(std::max<size_t>(rsm.views.size(), 1));
+  const Buffer* depth = buffers.find(lpv_rsm_depth);
   requireStorageBlock(gl, ctx, accumulated.words.size() * 4, "the accumulated SH volume");
   GlBuffer paramBlock(gl, createBuffer(gl, sizeof params, &params));
   GlBuffer volume(gl, uploadWords(gl, accumulated));
@@ -35,13 +45,22 @@ void lpv::shade_lpv(GlContext& context, const StageContext& ctx, BufferSet& buff
   GlBuffer surfaceBlock(gl, createBuffer(gl, surfaces.size() * 4, surfaces.data()));
   GlBuffer indirect(gl, createBuffer(gl, pixels * 12, nullptr));
   GlBuffer color(gl, createBuffer(gl, pixels * 12, nullptr));
+  GlBuffer lightBlock(gl,
+                      createBuffer(gl, lights.size() * sizeof(shared::LightData), lights.data()));
+  GlBuffer viewBlock(gl, createBlock(gl, rsm.params, rsm.views));
+  const float none = 0.0f;
+  GlBuffer depthBlock(gl, depth != nullptr ? uploadWords(gl, *depth) : createBuffer(gl, 4, &none));
+  GlBuffer directDiffuse(gl, createBuffer(gl, pixels * 12, nullptr));
+  GlBuffer directSpecular(gl, createBuffer(gl, pixels * 12, nullptr));
   Program program(gl, {&shaders::lpv_shade_lpv_comp});
   program.set("uPixels", int(pixels));
   program.set("uBackground", ctx.scene.background);
   program.use();
-  const GLuint blocks[] = {paramBlock.get(),   volume.get(),   ids.get(),
-                           surfaceBlock.get(), indirect.get(), color.get()};
-  for (GLuint b = 0; b < 6; ++b) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, blocks[b]);
+  const GLuint blocks[] = {paramBlock.get(),    volume.get(),        ids.get(),
+                           surfaceBlock.get(),  indirect.get(),      color.get(),
+                           lightBlock.get(),    viewBlock.get(),     depthBlock.get(),
+                           directDiffuse.get(), directSpecular.get()};
+  for (GLuint b = 0; b < 11; ++b) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, blocks[b]);
   gl.DispatchCompute(GLuint((pixels + 63) / 64), 1, 1);
   gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   gl.check("shade_lpv: dispatch");
@@ -49,6 +68,14 @@ void lpv::shade_lpv(GlContext& context, const StageContext& ctx, BufferSet& buff
   Buffer colorOut(lpv_shade_lpv_color, objectId.extent);
   readWords(gl, indirect.get(), indirectOut);
   readWords(gl, color.get(), colorOut);
+  if (ctx.plan.on(Effect::direct_light)) {
+    Buffer diffuseOut(lpv_shade_lpv_direct_diffuse, objectId.extent);
+    Buffer specularOut(lpv_shade_lpv_direct_specular, objectId.extent);
+    readWords(gl, directDiffuse.get(), diffuseOut);
+    readWords(gl, directSpecular.get(), specularOut);
+    buffers.put(std::move(diffuseOut));
+    buffers.put(std::move(specularOut));
+  }
   gl.check("shade_lpv: reading back");
   buffers.put(std::move(indirectOut));
   buffers.put(std::move(colorOut));

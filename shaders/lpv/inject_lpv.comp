@@ -1,20 +1,43 @@
 #version 450 core
 // inject_lpv: one invocation per VPL adds its lobe (shaders/shared/lpv/inject_kernel.h) to its
-// cell with integer atomics, so the sums do not depend on the order invocations run in.
+// cell with integer atomics, so the sums do not depend on the order invocations run in. uSource
+// 0: the emitters' VPLs; 1: a VPL per RSM texel that saw a surface (shaders/shared/lpv/rsm_kernel.h).
 layout(local_size_x = 64) in;
 #include "shared/lpv/inject_kernel.h"
+#include "shared/lpv/rsm_kernel.h"
 
+uniform int uSource;
 layout(std430, binding = 0) readonly buffer Vpls {
   InjectParams params;
   Vpl vpls[];
 };
 layout(std430, binding = 1) buffer Sums { int sums[]; };
+layout(std430, binding = 2) readonly buffer Views {
+  RsmParams rsm;
+  RsmView views[];
+};
+// per texel, the rsm stage's buffers as they are: flux and normal rgb, depth
+layout(std430, binding = 3) readonly buffer Flux { float flux[]; };
+layout(std430, binding = 4) readonly buffer Normal { float normals[]; };
+layout(std430, binding = 5) readonly buffer Depth { float depths[]; };
 
 void main() {
   // Two-dimensional dispatch: one dimension holds only 65535 groups.
   int v = int(gl_GlobalInvocationID.x + gl_NumWorkGroups.x * 64u * gl_GlobalInvocationID.y);
-  if (v >= params.shape.z) return;
-  Vpl vpl = vpls[v];
+  Vpl vpl;
+  if (uSource == 0) {
+    if (v >= params.shape.z) return;
+    vpl = vpls[v];
+  } else {
+    int r = rsm.shape.x;
+    if (v >= r * r * rsm.shape.y) return;
+    float depth = depths[v];
+    if (depth == 0.0f) return;
+    int row = v / r;
+    vec3 n = vec3(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
+    vec3 f = vec3(flux[3 * v], flux[3 * v + 1], flux[3 * v + 2]);
+    vpl = rsmVpl(views[row / r], ivec2(v - row * r, row % r), r, depth, n, f, params.shape.w == 1);
+  }
   int n = params.shape.x, coefficients = params.shape.y;
   ivec3 cell = vplCell(vpl);
   if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, ivec3(n)))) return;

@@ -4,6 +4,7 @@
 // half the spot angle, falloff on world-space distance.
 #ifndef VOXGI_LIGHTING_H
 #define VOXGI_LIGHTING_H
+#include "approx_math.h"
 #include "vector_math.h"
 
 VOXGI_NAMESPACE_BEGIN
@@ -48,6 +49,13 @@ VOXGI_FN vec3 lightIrradiance(LightData l, vec3 p, float voxelSize, OUT(vec3) to
                           : 1.0f / ((l.falloff.x + l.falloff.y * r) + l.falloff.z * (r * r));
   precise vec3 e = vec3(l.intensity) * att;
   return e;
+}
+
+// The normalised Phong lobe (n + 2) / (2 pi) max(r.l, 0)^n of a light direction at cosine `rl` to
+// the mirror direction: what a light's irradiance contributes to the specular term.
+VOXGI_FN float phongLobe(float rl, float shininess) {
+  precise float lobe = (shininess + 2.0f) * (0.5f * kInvPi) * powApprox(rl, shininess);
+  return lobe;
 }
 
 // Villegas' normal-weighted attenuation ([Villegas 2017, §2.1]): per-face cosines D = (l.x, l.y,

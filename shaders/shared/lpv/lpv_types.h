@@ -16,7 +16,8 @@ struct Vpl {
 
 // inject_lpv's block: the VPLs follow it.
 struct InjectParams {
-  ivec4 shape;  // x: grid resolution N; y: SH coefficients per colour C; z: VPL count; w: 0
+  ivec4 shape;  // x: grid resolution N; y: SH coefficients per colour C; z: VPL count; w: 1 to
+                // shift the RSM texels' VPLs (inject.shift; the emitters' are shifted on the host)
   vec4 scale;   // rgb: fixed-point units per unit of intensity (powers of two); w: 0
 };
 
@@ -36,10 +37,29 @@ struct PropagateParams {
   ivec4 options;  // x: 1 to clamp each face's intensity at 0; yzw: 0
 };
 
+// One view of a reflective shadow map (common/lpv/rsm.cpp): a cube face of a point light (or of a
+// spot wider than 120 degrees), a spot's frustum, or a directional light's orthographic box. Its
+// rsm.resolution^2 texels are rows of texel rays, row 0 at the top as the camera's. 80 bytes.
+struct RsmView {
+  vec4 origin;   // xyz: voxel-local position (the light; a directional view's corner plane centre)
+                 // w: 1 perspective, 0 orthographic
+  vec4 forward;  // xyz: unit view axis; w: tan(half field of view) or the box's half width (cells)
+  vec4 right;    // xyz: unit
+  vec4 up;       // xyz: unit
+  ivec4 info;    // x: light index; y: the light's first view; z: its view count (1 or 6); w: 0
+};
+
+// The rsm stage's block: the views follow it.
+struct RsmParams {
+  ivec4 shape;  // x: rsm.resolution R; y: view count; z: light count; w: 0
+  vec4 scale;   // x: voxel size (world units); y: rsm.bias in texels; zw: 0
+};
+
 // shade_lpv's uniforms.
 struct ShadeParams {
-  ivec4 shape;  // x: N; y: C; zw: 0
+  ivec4 shape;  // x: N; y: C; z: analytic light count (direct light from the RSM); w: 0
   vec4 scale;   // x: 1 / (cell size^2) (world units); y: shade.offset in cells; zw: 0
+  vec4 camera;  // xyz: voxel-local camera position (the specular lobe's view direction)
 };
 
 VOXGI_NAMESPACE_END

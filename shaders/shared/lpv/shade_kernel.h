@@ -4,10 +4,15 @@
 // Martin's Eq. 3.4 writes +n) and 1 / s^2 turns a cell's radiant intensity into radiance (Eq. 3.4
 // omits it, so its result depends on the cell size): docs/lpv.md.
 //
-// Reads FETCH(accumulatedAt)(cell, word) -> float, 0 outside the grid.
+// Direct light from the analytic lights is shaded per pixel with the RSM depth as shadow map.
+//
+// Reads FETCH(accumulatedAt)(cell, word) -> float, 0 outside the grid; with lights also
+// FETCH(lightAt)(i) -> LightData, FETCH(rsmViewAt)(i) -> RsmView and FETCH(rsmDepthAt)(view, texel)
+// -> float, 0 where the texel saw nothing.
 #ifndef VOXGI_LPV_SHADE_KERNEL_H
 #define VOXGI_LPV_SHADE_KERNEL_H
 #include "lpv_types.h"
+#include "rsm_kernel.h"
 #include "sh.h"
 
 VOXGI_NAMESPACE_BEGIN
@@ -42,6 +47,66 @@ VOLUME_FN vec3 lpvIrradiance(VOLUMES_IN vec3 position, vec3 normal, ShadeParams 
   }
   precise vec3 irradiance = sum * p.scale.x;
   return irradiance * 0.318309886f;  // / pi
+}
+
+// Whether light `light` reaches p, a surface point whose normal is at cosine `cosine` to it: p's
+// depth against the RSM's in the texel p falls in, of the light's view that p lies most squarely
+// in front of (a cube face by p's major axis). The bias is rsm.bias texel footprints over the
+// cosine, since a surface at angle theta spans footprint x tan(theta) of depth within one texel.
+// A point outside every view (beside a spot's cone, outside a directional light's box) is lit.
+VOLUME_FN float rsmVisibility(VOLUMES_IN RsmParams rp, int light, vec3 p, float cosine) {
+  int resolution = rp.shape.x;
+  int best = -1;
+  vec3 at = vec3(0.0f);
+  float bestAxis = 0.0f;
+  for (int i = 0; i < rp.shape.y; ++i) {
+    RsmView v = FETCH(rsmViewAt)(i);
+    if (v.info.x != light) continue;
+    vec3 q = rsmProject(v, p);
+    if (q.z <= 0.0f) continue;
+    precise float axis = v.origin.w == 1.0f ? q.z / length3(p - vec3(v.origin)) : 1.0f;
+    if (best == -1 || axis > bestAxis) {
+      best = i;
+      bestAxis = axis;
+      at = q;
+    }
+  }
+  if (best == -1 || abs(at.x) > 1.0f || abs(at.y) > 1.0f) return 1.0f;
+  RsmView v = FETCH(rsmViewAt)(best);
+  precise float fx = (at.x + 1.0f) * 0.5f * float(resolution);
+  precise float fy = (1.0f - at.y) * 0.5f * float(resolution);
+  ivec2 texel = clamp(ivec2(int(floor(fx)), int(floor(fy))), ivec2(0), ivec2(resolution - 1));
+  float depth = FETCH(rsmDepthAt)(best, texel);
+  if (depth == 0.0f) return 1.0f;
+  precise float footprint =
+      2.0f * v.forward.w / float(resolution) * (v.origin.w == 1.0f ? at.z : 1.0f);
+  precise float bias = rp.scale.y * footprint / max(cosine, 0.1f);
+  return at.z <= depth + bias ? 1.0f : 0.0f;
+}
+
+// Direct light at p (normal n facing the camera) from the p.shape.z analytic lights, as trace_cones
+// computes it but with the shadow map's visibility instead of a shadow cone: diffuse gets the sum
+// of E cos V / pi, specular the sum of E cos V times the Phong lobe about the mirror direction.
+VOLUME_FN void lpvDirect(VOLUMES_IN vec3 position, vec3 normal, float shininess, ShadeParams p,
+                         RsmParams rp, OUT(vec3) diffuse, OUT(vec3) specular) {
+  diffuse = vec3(0.0f);
+  specular = vec3(0.0f);
+  precise vec3 view = normalize3(vec3(p.camera) - position);
+  precise vec3 mirror = normal * (2.0f * dot3(normal, view)) - view;
+  for (int i = 0; i < p.shape.z; ++i) {
+    LightData l = FETCH(lightAt)(i);
+    vec3 toLight;
+    float distance;
+    vec3 e = lightIrradiance(l, position, rp.scale.x, toLight, distance);
+    if (e == vec3(0.0f)) continue;
+    float cosine = dot3(normal, toLight);
+    if (cosine <= 0.0f) continue;
+    float visibility = l.info.y == 1u ? rsmVisibility(VOLUMES rp, i, position, cosine) : 1.0f;
+    if (visibility == 0.0f) continue;
+    precise vec3 arriving = e * (cosine * visibility);
+    diffuse = diffuse + arriving * kInvPi;
+    specular = specular + arriving * phongLobe(dot3(mirror, toLight), shininess);
+  }
 }
 
 VOXGI_NAMESPACE_END

@@ -46,8 +46,7 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
     r.directDiffuse = r.directDiffuse + arriving * kInvPi;
     if (specular) {
       precise float rl = dot3(mirror, toLight);
-      precise float lobe = (shininess + 2.0f) * (0.5f * kInvPi) * powApprox(rl, shininess);
-      r.directSpecular = r.directSpecular + arriving * lobe;
+      r.directSpecular = r.directSpecular + arriving * phongLobe(rl, shininess);
       if (params.modes.w == 1) {
         // [Kahl 2019, eq. 5.6]: (1 - max(0, angle - grace) / pi)^q with grace = 0.008 pi shininess.
         precise float late = max(acosApprox(rl) - params.specular.y * shininess, 0.0f);

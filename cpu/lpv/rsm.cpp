@@ -1,0 +1,53 @@
+// CPU rsm stage: one Embree ray through every texel centre of every view (as the gbuffer stage
+// casts its pixel rays); the nearest hit's flux, facing normal, depth and triangle go to the maps.
+// Rows of all views are independent tasks.
+#include "common/camera_geometry.h"
+#include "common/lights.h"
+#include "common/lpv/rsm.h"
+#include "common/parallel.h"
+#include "common/ray_scene.h"
+#include "cpu/stages.h"
+#include "shaders/shared/lpv/rsm_kernel.h"
+
+namespace voxgi::cpu {
+
+void lpv::rsm(const StageContext& ctx, BufferSet& buffers) {
+  checkStageMemory(ctx, StageId::lpv_rsm);
+  const voxgi::lpv::RsmSetup setup = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings.lpv);
+  const std::vector<shared::LightData> lights = voxelLights(ctx.scene);
+  const CameraGeometry g = prepareCameraGeometry(ctx.scene);
+  RayScene rays;
+  rays.addTriangleSoup(0, g.vertices);
+  rays.commit();
+  const int r = setup.params.shape.x, views = setup.params.shape.y;
+  const float voxelSize = setup.params.scale.x;
+  const glm::ivec3 extent(r, r * views, 1);
+  using enum BufferId;
+  Buffer flux(lpv_rsm_flux, extent), normal(lpv_rsm_normal, extent), depth(lpv_rsm_depth, extent),
+      primitive(lpv_rsm_primitive_id, extent);
+  parallelFor(0, r * views, [&](int row) {
+    const shared::RsmView& v = setup.views[size_t(row / r)];
+    const shared::LightData& light = lights[size_t(v.info.x)];
+    for (int x = 0; x < r; ++x) {
+      glm::vec3 origin, dir;
+      shared::rsmTexelRay(v, {x, row % r}, r, origin, dir);
+      const RayScene::Hit hit = rays.intersect(origin, dir);
+      if (!hit.found) continue;
+      const SurfaceTriangle& s = g.triangles[hit.primitive];
+      const glm::vec3 p = origin + dir * hit.t;
+      const float footprint = shared::rsmFootprint(v, dir, hit.t, r, voxelSize);
+      const glm::vec3 albedo = ctx.scene.materials[s.info.y].albedo;
+      const size_t e = size_t(row) * size_t(r) + size_t(x);
+      flux.setVec3(e, shared::rsmFlux(light, p, albedo, footprint, voxelSize));
+      normal.setVec3(e, shared::facingNormal(glm::vec3(s.normal), dir));
+      depth.set(e, 0, hit.t);
+      primitive.set<uint32_t>(e, 0, hit.primitive + 1u);
+    }
+  });
+  buffers.put(std::move(flux));
+  buffers.put(std::move(normal));
+  buffers.put(std::move(depth));
+  buffers.put(std::move(primitive));
+}
+
+}  // namespace voxgi::cpu

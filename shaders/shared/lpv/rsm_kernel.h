@@ -1,0 +1,88 @@
+// The reflective shadow map's arithmetic [Dachsbacher & Stamminger 2005; Martin 2012, §3.1],
+// shared by the rsm stage (CPU rays, GPU rasterizer), inject_lpv (a VPL per texel) and shade_lpv
+// (the depth as a shadow map): the ray of a texel, the flux its surface reflects, and where a
+// point falls in a view.
+//
+// A texel's flux is rho E_perp A_perp: the irradiance on a plane facing the light times the
+// texel's cross-section perpendicular to its ray, so the surface's cosine is in the footprint and
+// not applied again (Martin's Φ = A_s I_s Ω_s (n_s·l)+ counts it twice, specs A4: docs/lpv.md).
+//
+#ifndef VOXGI_LPV_RSM_KERNEL_H
+#define VOXGI_LPV_RSM_KERNEL_H
+#include "../lighting.h"
+#include "lpv_types.h"
+
+VOXGI_NAMESPACE_BEGIN
+
+// Texel (x, y)'s centre on the view's [-1, 1]^2 image plane, row 0 at the top.
+VOXGI_FN vec2 rsmTexelPlane(ivec2 texel, int resolution) {
+  precise float px = 2.0f * (float(texel.x) + 0.5f) / float(resolution) - 1.0f;
+  precise float py = 1.0f - 2.0f * (float(texel.y) + 0.5f) / float(resolution);
+  return vec2(px, py);
+}
+
+// The texel's ray origin + t dir: dir's component along forward is 1, so t is the depth along
+// the view's axis (the rsm_depth buffer), in cells.
+VOXGI_FN void rsmTexelRay(RsmView v, ivec2 texel, int resolution, OUT(vec3) origin, OUT(vec3) dir) {
+  vec2 plane = rsmTexelPlane(texel, resolution);
+  precise float px = plane.x * v.forward.w, py = plane.y * v.forward.w;
+  if (v.origin.w == 1.0f) {
+    origin = vec3(v.origin);
+    dir = (vec3(v.forward) + vec3(v.right) * px) + vec3(v.up) * py;
+  } else {
+    origin = (vec3(v.origin) + vec3(v.right) * px) + vec3(v.up) * py;
+    dir = vec3(v.forward);
+  }
+}
+
+// The texel's cross-section perpendicular to its ray at depth t, in world units^2: a perspective
+// texel of side a = 2 tan / R on the plane at depth 1 subtends a^2 / |dir|^3 steradians (the
+// midpoint rule), times the squared distance (t |dir|)^2.
+VOXGI_FN float rsmFootprint(RsmView v, vec3 dir, float depth, int resolution, float voxelSize) {
+  if (v.origin.w == 1.0f) {
+    precise float side = (2.0f * v.forward.w / float(resolution)) * depth * voxelSize;
+    precise float area = side * side / length3(dir);
+    return area;
+  }
+  precise float side = (2.0f * v.forward.w / float(resolution)) * voxelSize;
+  return side * side;
+}
+
+// The flux the texel's surface at p (albedo rho) reflects: rho E_perp(p) A_perp. Zero outside a
+// spot's cone.
+VOXGI_FN vec3 rsmFlux(LightData l, vec3 p, vec3 albedo, float footprint, float voxelSize) {
+  vec3 toLight;
+  float distance;
+  vec3 e = lightIrradiance(l, p, voxelSize, toLight, distance);
+  precise vec3 flux = albedo * (e * footprint);
+  return flux;
+}
+
+// The VPL of a texel that saw a surface (depth > 0): at the hit, about the normal facing the
+// light, with the texel's flux, moved half a cell along the normal when `shift`.
+VOXGI_FN Vpl rsmVpl(RsmView v, ivec2 texel, int resolution, float depth, vec3 normal, vec3 flux,
+                    bool shift) {
+  vec3 origin, dir;
+  rsmTexelRay(v, texel, resolution, origin, dir);
+  precise vec3 p = origin + dir * depth;
+  if (shift) p = p + normal * 0.5f;
+  Vpl vpl;
+  vpl.position = vec4(p, 0.0f);
+  vpl.normal = vec4(normal, 0.0f);
+  vpl.flux = vec4(flux, 0.0f);
+  return vpl;
+}
+
+// Where p falls in view v: xy on the [-1, 1]^2 image plane, z its depth along the axis (<= 0:
+// behind a perspective view).
+VOXGI_FN vec3 rsmProject(RsmView v, vec3 p) {
+  precise vec3 d = p - vec3(v.origin);
+  precise float z = dot3(d, vec3(v.forward));
+  precise float scale = v.origin.w == 1.0f ? z * v.forward.w : v.forward.w;
+  if (!(scale > 0.0f)) return vec3(0.0f, 0.0f, -1.0f);
+  precise vec2 xy = vec2(dot3(d, vec3(v.right)), dot3(d, vec3(v.up))) / scale;
+  return vec3(xy, z);
+}
+
+VOXGI_NAMESPACE_END
+#endif
