@@ -37,7 +37,8 @@ SurfaceRaster::SurfaceRaster(const Gl& gl, const Scene& scene, const CameraGeome
   gl.TextureStorage3D(textures_.back(), 1, GL_DEPTH_COMPONENT32F, size.x, size.y, layers);
   gl.CreateFramebuffers(1, &fbo_);
   std::vector<GLenum> drawBuffers;
-  for (size_t i = 0; i < targets_.size(); ++i) drawBuffers.push_back(GL_COLOR_ATTACHMENT0 + GLenum(i));
+  for (size_t i = 0; i < targets_.size(); ++i)
+    drawBuffers.push_back(GL_COLOR_ATTACHMENT0 + GLenum(i));
   gl.NamedFramebufferDrawBuffers(fbo_, count, drawBuffers.data());
   gl.CreateVertexArrays(1, &vao_);
 }

@@ -108,7 +108,8 @@ INSTANTIATE_TEST_SUITE_P(
       std::string scene = std::string(p.param.scene).substr(7);
       return scene.substr(0, scene.find('.')) + "_" + p.param.technique + "_" +
              (p.param.platform == gpu::GlPlatform::egl ? "egl" : "osmesa") +
-             (p.param.sets.empty() ? "" : "_options") + (p.param.spotAndSun ? "_spot_sun" : "");
+             (p.param.sets.empty() ? "" : "_options" + std::to_string(p.param.sets.size())) +
+             (p.param.spotAndSun ? "_spot_sun" : "");
     });
 
 }  // namespace

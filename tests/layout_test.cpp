@@ -40,6 +40,7 @@ std::vector<std::vector<const ShaderSource*>> stagePrograms() {
           {&lpv_rsm_vert, &lpv_rsm_frag},
           {&lpv_inject_lpv_comp},
           {&lpv_inject_geometry_comp},
+          {&lpv_inject_geometry_rsm_comp},
           {&lpv_propagate_comp},
           {&lpv_shade_lpv_comp}};
 }
@@ -83,6 +84,7 @@ std::vector<Layout> layouts() {
     kRsm,
     kInjectLpv,
     kInjectGeometry,
+    kInjectGeometryRsm,
     kPropagate,
     kShadeLpv
   };
@@ -176,11 +178,15 @@ std::vector<Layout> layouts() {
         VOXGI_FIELD(RsmView, up), VOXGI_FIELD(RsmView, info)},
        {{kRsm, "views[0]", sizeof(RsmParams), true},
         {kInjectLpv, "views[0]", sizeof(RsmParams), true},
-        {kShadeLpv, "views[0]", sizeof(RsmParams), true}}},
+        {kShadeLpv, "views[0]", sizeof(RsmParams), true},
+        {kInjectGeometryRsm, "views[0]", sizeof(RsmParams), true}}},
       {"RsmParams",
        sizeof(RsmParams),
        {VOXGI_FIELD(RsmParams, shape), VOXGI_FIELD(RsmParams, scale)},
-       {{kRsm, "params", 0, false}, {kInjectLpv, "rsm", 0, false}, {kShadeLpv, "rsm", 0, false}}},
+       {{kRsm, "params", 0, false},
+        {kInjectLpv, "rsm", 0, false},
+        {kShadeLpv, "rsm", 0, false},
+        {kInjectGeometryRsm, "rsm", 0, false}}},
   };
 }
 

@@ -38,10 +38,17 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
                           : sources);
   const ShBuffers sh = shBuffers(s);
   p.set(sh.coefficients, true);
+  const bool fromRsm = s.geometry == LpvGeometry::rsm;
+  const std::string source = !fromRsm ? "voxelize's surfaces"
+                             : views > 0
+                                 ? "the RSM texels' surfaces (inject.geometry=rsm)"
+                                 : "inject.geometry=rsm, but no analytic light: nothing blocks";
   p.stage(StageId::lpv_inject_geometry, s.occlusion == LpvOcclusion::on || p.full,
-          s.occlusion == LpvOcclusion::on ? "blockers for propagate (propagate.occlusion=on)"
-          : p.full                        ? "propagate.occlusion=off; plan.mode=full computes it"
-                                          : "propagate.occlusion=off");
+          s.occlusion == LpvOcclusion::on
+              ? "blockers for propagate (propagate.occlusion=on) from " + source
+          : p.full ? "propagate.occlusion=off; plan.mode=full computes it"
+                   : "propagate.occlusion=off");
+  p.set(Effect::rsm_blockers, fromRsm);
   const int steps = propagationSteps(s, scene.grid.resolution);
   std::ostringstream why;
   why << steps << " steps over " << s.directionCount() << " directions, " << s.bands

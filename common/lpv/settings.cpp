@@ -29,6 +29,10 @@ const std::vector<Param>& params() {
                   "spacing of the VPLs sampled on emissive triangles, in cells"),
       choice<lpv>("inject.shift", &LpvSettings::vplShift, {"off", "on"},
                   "move each VPL half a cell along its normal before binning (self-lighting)"),
+      choice<lpv>("inject.geometry", &LpvSettings::geometry, {"voxels", "rsm"},
+                  "the geometry volume's blockers: voxelize's surface area and normals per voxel, "
+                  "or the surfaces the analytic lights' RSM texels see (the light seeing most of a "
+                  "cell wins)"),
       number<lpv>("shade.offset", &LpvSettings::shadeOffset, 0.0f, 2.0f,
                   "cells along the normal at which a pixel samples the accumulated volume"),
       number<lpv>("rsm.resolution", &LpvSettings::rsmResolution, 1, 4096,

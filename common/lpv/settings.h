@@ -13,6 +13,8 @@ enum class LpvDirections {
 enum class LpvNormalization { energy, thesis };
 enum class LpvOcclusion { off, on };
 enum class LpvToggle { off, on };
+// Where the geometry volume's blockers come from: voxelize's surface sums, or the RSM texels.
+enum class LpvGeometry { voxels, rsm };
 
 struct LpvSettings {
   int bands = 2;                                  // SH bands per colour: 2 (4 coeffs) or 3 (9)
@@ -26,8 +28,9 @@ struct LpvSettings {
   float emitterSpacing = 0.25f;         // emitter VPL spacing along a triangle's edges, in cells
   LpvToggle vplShift = LpvToggle::off;  // move each VPL half a cell along its normal before binning
   float shadeOffset = 0.0f;             // cells along the normal where shade_lpv samples the volume
-  int rsmResolution = 256;              // texels per side of each reflective shadow map view
-  float rsmBias = 1.5f;                 // shadow-map depth bias, in texel footprints / cosine
+  LpvGeometry geometry = LpvGeometry::voxels;  // inject_geometry's source
+  int rsmResolution = 256;                     // texels per side of each reflective shadow map view
+  float rsmBias = 1.5f;  // shadow-map depth bias, in texel footprints / cosine
 
   int coefficients() const { return bands * bands; }
   int directionCount() const { return directions == LpvDirections::six ? 6 : 26; }

@@ -1,7 +1,7 @@
 // The reflective shadow map's arithmetic [Dachsbacher & Stamminger 2005; Martin 2012, §3.1],
 // shared by the rsm stage (CPU rays, GPU rasterizer), inject_lpv (a VPL per texel) and shade_lpv
-// (the depth as a shadow map): the ray of a texel, the flux its surface reflects, and where a
-// point falls in a view.
+// (the depth as a shadow map) and inject_geometry (its surfaces as blockers): the ray of a
+// texel, the flux its surface reflects, where a point falls in a view, the texel's blocker.
 //
 // A texel's flux is rho E_perp A_perp: the irradiance on a plane facing the light times the
 // texel's cross-section perpendicular to its ray, so the surface's cosine is in the footprint and
@@ -82,6 +82,30 @@ VOXGI_FN vec3 rsmProject(RsmView v, vec3 p) {
   if (!(scale > 0.0f)) return vec3(0.0f, 0.0f, -1.0f);
   precise vec2 xy = vec2(dot3(d, vec3(v.right)), dot3(d, vec3(v.up))) / scale;
   return vec3(xy, z);
+}
+
+// Fixed-point units of the RSM blocker sums per cell^2. A 256^2 map's texel covers ~1e-3 cells^2,
+// so 2^22 leaves rounding of ~1e-4 per texel; a cell's sum is at most its silhouette seen from
+// one light (< 2 cells^2) over the clamped cosine (x 10), widened by the perspective within the
+// cell (< x 4 beside the light): < 80 cells^2 = 3.4e8 units, a sixth of int32's range.
+const float kBlockerScale = 4194304.0f;
+
+// The surface an RSM texel saw (depth > 0) as fixed-point (area, area x normal) in kBlockerScale
+// units, and the GV cell it lands in: the one centred on the LPV cell corner nearest the hit. The
+// true area is the texel's cross-section over the cosine to its ray, with the cosine clamped at
+// 0.1 (a grazing texel's area grows without bound: past 84 degrees it counts as at 84).
+VOXGI_FN ivec4 rsmBlocker(RsmView v, ivec2 texel, int resolution, float depth, vec3 normal,
+                          OUT(ivec3) cell) {
+  vec3 origin, dir;
+  rsmTexelRay(v, texel, resolution, origin, dir);
+  precise vec3 p = origin + dir * depth;
+  cell = ivec3(floor(p + vec3(0.5f))) - ivec3(1);
+  precise float cosine = abs(dot3(normal, dir)) / length3(dir);
+  precise float units =
+      rsmFootprint(v, dir, depth, resolution, 1.0f) / max(cosine, 0.1f) * kBlockerScale;
+  precise vec3 weighted = normal * units;
+  return ivec4(int(floor(units + 0.5f)), int(floor(weighted.x + 0.5f)),
+               int(floor(weighted.y + 0.5f)), int(floor(weighted.z + 0.5f)));
 }
 
 VOXGI_NAMESPACE_END
