@@ -102,7 +102,9 @@ INSTANTIATE_TEST_SUITE_P(
         LpvCase{"holpv",
                 gpu::GlPlatform::egl,
                 {"propagate.clamp=on", "propagate.accumulate_injection=off", "inject.shift=on"}},
+        LpvCase{"holpv", gpu::GlPlatform::egl, {"lpv.storage=f16"}},
         LpvCase{"lpv", gpu::GlPlatform::egl, {}, "scenes/bunny.json"},
+        LpvCase{"lpv", gpu::GlPlatform::osmesa, {"inject.geometry=rsm"}, "scenes/bunny.json"},
         LpvCase{"holpv", gpu::GlPlatform::osmesa, {"inject.shift=on"}, "scenes/bunny.json", true}),
     [](const testing::TestParamInfo<LpvCase>& p) {
       std::string scene = std::string(p.param.scene).substr(7);

@@ -52,10 +52,11 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   const int steps = propagationSteps(s, scene.grid.resolution);
   std::ostringstream why;
   why << steps << " steps over " << s.directionCount() << " directions, " << s.bands
-      << " SH bands ("
+      << " SH bands, " << settingValue(settings, "lpv.storage") << " volumes ("
       << (s.steps > 0 ? "propagate.steps" : "propagate.steps=0: half the grid's resolution") << ")";
   p.stage(StageId::lpv_propagate, true, why.str());
   p.seriesLength = steps + 1;
+  p.set(Effect::f16, s.storage == LpvStorage::f16);
   const bool history = s.history == LpvToggle::on || settings.inspect || p.full;
   p.effect("every step's volume", sh.history, history,
            s.history == LpvToggle::on ? "propagate.history=on"

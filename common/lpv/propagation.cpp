@@ -1,9 +1,11 @@
 #include "common/lpv/propagation.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/lpv/propagation_faces.h"
 #include "common/lpv/sh_buffers.h"
+#include "shaders/shared/lpv/storage.h"
 #include "shaders/shared/lpv/sh.h"
 
 namespace voxgi::lpv {
@@ -60,6 +62,19 @@ Propagation preparePropagation(const LpvSettings& s, int resolution) {
   out.params.shape = glm::ivec4(resolution, s.coefficients(), int(out.entries.size()), 0);
   out.params.options = glm::ivec4(s.clampNegative == LpvToggle::on ? 1 : 0, 0, 0, 0);
   return out;
+}
+
+void prepareStorage(const LpvSettings& s, shared::PropagateParams& params,
+                    std::vector<float>& volume) {
+  params.storage = glm::vec4(0.0f, 1.0f, 1.0f, 0.0f);
+  if (s.storage == LpvStorage::f32) return;
+  float largest = 0.0f;
+  for (float v : volume) largest = std::max(largest, std::abs(v));
+  int exponent = 0;
+  if (largest > 0.0f) std::frexp(largest, &exponent);  // largest < 2^exponent
+  const float scale = std::ldexp(1.0f, exponent);
+  params.storage = glm::vec4(1.0f, scale, 1.0f / scale, 0.0f);
+  for (float& v : volume) v = shared::storedValue(v, params);
 }
 
 shared::ShadeParams shadeParams(const StageContext& ctx) {

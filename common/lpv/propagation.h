@@ -19,6 +19,12 @@ struct Propagation {
 // Entry weights: Omega_f / pi (propagate.normalization=energy) or Omega_f / (4 pi) (thesis).
 Propagation preparePropagation(const LpvSettings& s, int resolution);
 
+// With lpv.storage=f16, sets params.storage to the power-of-two scale that brings LPV_0's
+// largest |coefficient| to at most 1 and rounds `volume` (LPV_0) to half precision in it, as the
+// thesis's RGBA16F volumes hold it; with f32, leaves both as they are.
+void prepareStorage(const LpvSettings& s, shared::PropagateParams& params,
+                    std::vector<float>& volume);
+
 // Whether step `step` (1 for the step LPV_0 -> LPV_1) is occluded: from the second step on, as
 // [Martin 2012, §3.2.3] and Kaplanyan & Dachsbacher do, since the first would block VPLs by their
 // own surfaces.

@@ -8,6 +8,9 @@ const std::vector<Param>& params() {
   static const std::vector<Param> table{
       number<lpv>("lpv.bands", &LpvSettings::bands, 2, 3,
                   "SH bands per colour: 2 (4 coefficients, LPV) or 3 (9, HOLPV)"),
+      choice<lpv>("lpv.storage", &LpvSettings::storage, {"f32", "f16"},
+                  "precision of the stored volumes: f32, or f16 as the thesis's RGBA16F (each "
+                  "step and the accumulation rounded to half)"),
       choice<lpv>("propagate.directions", &LpvSettings::directions, {"6", "26"},
                   "neighbours light propagates to per step: the 6 face neighbours (30 face "
                   "entries) or all 26 (54)"),

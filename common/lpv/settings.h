@@ -15,8 +15,11 @@ enum class LpvOcclusion { off, on };
 enum class LpvToggle { off, on };
 // Where the geometry volume's blockers come from: voxelize's surface sums, or the RSM texels.
 enum class LpvGeometry { voxels, rsm };
+// The precision the volumes are stored in: f32, or f16 as the thesis's RGBA16F [Martin 2012, §5.8].
+enum class LpvStorage { f32, f16 };
 
 struct LpvSettings {
+  LpvStorage storage = LpvStorage::f32;           // precision of the stored volumes
   int bands = 2;                                  // SH bands per colour: 2 (4 coeffs) or 3 (9)
   LpvDirections directions = LpvDirections::six;  // propagate
   int steps = 0;                                  // 0: half the grid's resolution (the planner)

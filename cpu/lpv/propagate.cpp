@@ -23,6 +23,7 @@ struct PropagateVolumes {
   float* next;
   float* accumulated;
   const Buffer* blocking;  // null without occlusion
+  const shared::PropagateParams& params;
   int n, words;
 
   size_t index(glm::ivec3 v) const {
@@ -45,7 +46,7 @@ struct PropagateVolumes {
   void storeIntensity(glm::ivec3 cell, int word, float value) const {
     const size_t w = index(cell) * size_t(words) + size_t(word);
     next[w] = value;
-    accumulated[w] = accumulated[w] + value;
+    accumulated[w] = shared::accumulatedValue(accumulated[w], value, params);
   }
 };
 
@@ -63,6 +64,7 @@ void lpv::propagate(const StageContext& ctx, BufferSet& buffers) {
   voxgi::lpv::Propagation setup = voxgi::lpv::preparePropagation(s, n);
 
   std::vector<float> previous = voxgi::lpv::injectedVolume(ctx, buffers.at(sh.intensitySum));
+  voxgi::lpv::prepareStorage(s, setup.params, previous);
   std::vector<float> next(count);
   Buffer accumulated(sh.accumulated, glm::ivec3(n));
   const bool history = ctx.plan.on(sh.history);
@@ -85,11 +87,11 @@ void lpv::propagate(const StageContext& ctx, BufferSet& buffers) {
     };
     // The coefficient count as a constant: the compiler unrolls the kernel's loops.
     if (s.coefficients() == 4)
-      run(PropagateVolumes<4>{setup.entries, previous.data(), next.data(), acc, blocking, n,
-                              words});
+      run(PropagateVolumes<4>{setup.entries, previous.data(), next.data(), acc, blocking,
+                              setup.params, n, words});
     else
-      run(PropagateVolumes<9>{setup.entries, previous.data(), next.data(), acc, blocking, n,
-                              words});
+      run(PropagateVolumes<9>{setup.entries, previous.data(), next.data(), acc, blocking,
+                              setup.params, n, words});
     if (history) std::memcpy(steps.words.data() + size_t(step) * count, next.data(), count * 4);
     std::swap(previous, next);
   }

@@ -17,8 +17,9 @@ void lpv::propagate(GlContext& context, const StageContext& ctx, BufferSet& buff
   const LpvSettings& s = ctx.settings.lpv;
   const voxgi::lpv::ShBuffers sh = voxgi::lpv::shBuffers(s);
   const int n = ctx.scene.grid.resolution;
-  const voxgi::lpv::Propagation setup = voxgi::lpv::preparePropagation(s, n);
-  const std::vector<float> initial = voxgi::lpv::injectedVolume(ctx, buffers.at(sh.intensitySum));
+  voxgi::lpv::Propagation setup = voxgi::lpv::preparePropagation(s, n);
+  std::vector<float> initial = voxgi::lpv::injectedVolume(ctx, buffers.at(sh.intensitySum));
+  voxgi::lpv::prepareStorage(s, setup.params, initial);
   const size_t bytes = initial.size() * 4;
   const bool history = ctx.plan.on(sh.history);
 

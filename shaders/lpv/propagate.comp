@@ -3,7 +3,7 @@
 // step's volume into the next, adding it to the accumulated volume; gpu/lpv/propagate.cpp
 // dispatches it propagate.steps times, swapping the two step volumes.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-#include "shared/lpv/lpv_types.h"
+#include "shared/lpv/storage.h"
 
 layout(std430, binding = 0) readonly buffer Entries {
   PropagateParams params;
@@ -33,8 +33,7 @@ vec4 blockingAt(ivec3 g) {
 void storeIntensity(ivec3 cell, int word, float value) {
   int w = cellIndex(cell) * 3 * params.shape.y + word;
   next[w] = value;
-  precise float sum = accumulated[w] + value;
-  accumulated[w] = sum;
+  accumulated[w] = accumulatedValue(accumulated[w], value, params);
 }
 
 #include "shared/lpv/propagate_kernel.h"

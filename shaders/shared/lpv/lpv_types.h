@@ -35,6 +35,8 @@ struct PropagationEntry {
 struct PropagateParams {
   ivec4 shape;    // x: N; y: C; z: entry count; w: 1 to occlude (from the second step on)
   ivec4 options;  // x: 1 to clamp each face's intensity at 0; yzw: 0
+  vec4 storage;   // x: 1 to round stored values to half precision (lpv.storage=f16); y: the
+                  // power-of-two scale they are stored in units of; z: 1 / y; w: 0
 };
 
 // One view of a reflective shadow map (common/lpv/rsm.cpp): a cube face of a point light (or of a

@@ -13,6 +13,7 @@
 #ifndef VOXGI_LPV_PROPAGATE_KERNEL_H
 #define VOXGI_LPV_PROPAGATE_KERNEL_H
 #include "lpv_types.h"
+#include "storage.h"
 
 VOXGI_NAMESPACE_BEGIN
 
@@ -43,7 +44,7 @@ VOLUME_FN vec4 blockingBetween(VOLUMES_IN ivec3 x, ivec3 o) {
   return blend;
 }
 
-// Writes the step's value of cell x through FETCH(storeIntensity)(x, word, value).
+// Writes the step's value of cell x, as stored, through FETCH(storeIntensity)(x, word, value).
 VOLUME_FN void propagateCell(VOLUMES_IN ivec3 x, PropagateParams p) {
   int n = p.shape.x, coefficients = FETCH(coefficientCount)(), colours = FETCH(colourCount)();
   bool occlude = p.shape.w != 0, clampNegative = p.options.x != 0;
@@ -76,7 +77,8 @@ VOLUME_FN void propagateCell(VOLUMES_IN ivec3 x, PropagateParams p) {
         dst[c * coefficients + i] = dst[c * coefficients + i] + flux * f.reprojected[i];
     }
   }
-  for (int w = 0; w < colours * coefficients; ++w) FETCH(storeIntensity)(x, w, dst[w]);
+  for (int w = 0; w < colours * coefficients; ++w)
+    FETCH(storeIntensity)(x, w, storedValue(dst[w], p));
 }
 
 VOXGI_NAMESPACE_END

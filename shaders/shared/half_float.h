@@ -1,0 +1,29 @@
+// Rounding a float to the nearest IEEE half (binary16) value, round-to-nearest-even, overflow to
+// infinity, halves below 2^-14 subnormal: what storing it in an RGBA16F texture does (lpv.storage
+// =f16, [Martin 2012, §5.8]). Written with bit operations and one exactly rounded addition, so the
+// CPU and any GPU give the same bits (GLSL's packHalf2x16 leaves the rounding mode open).
+#ifndef VOXGI_HALF_FLOAT_H
+#define VOXGI_HALF_FLOAT_H
+#include "glsl_cpp.h"
+
+VOXGI_NAMESPACE_BEGIN
+
+VOXGI_FN float roundToHalf(float x) {
+  uint bits = floatBitsToUint(x);
+  uint sign = bits & 0x80000000u;
+  uint magnitude = bits & 0x7fffffffu;
+  if (magnitude >= 0x7f800000u) return x;  // infinity or NaN
+  if (magnitude >= 0x477ff000u) return uintBitsToFloat(sign | 0x7f800000u);  // >= 65520
+  if (magnitude >= 0x38800000u) {  // >= 2^-14: keep 10 of the 23 mantissa bits, ties to even
+    uint rounded = (magnitude + 0x00000fffu + ((magnitude >> 13) & 1u)) & 0xffffe000u;
+    return uintBitsToFloat(sign | rounded);
+  }
+  // Subnormal halves are multiples of 2^-24, the spacing of floats in [0.5, 1): adding 0.5 rounds
+  // to it (ties to even), and subtracting it again is exact.
+  precise float shifted = uintBitsToFloat(magnitude) + 0.5f;
+  precise float q = shifted - 0.5f;
+  return uintBitsToFloat(sign | floatBitsToUint(q));
+}
+
+VOXGI_NAMESPACE_END
+#endif
