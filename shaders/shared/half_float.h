@@ -12,7 +12,7 @@ VOXGI_FN float roundToHalf(float x) {
   uint bits = floatBitsToUint(x);
   uint sign = bits & 0x80000000u;
   uint magnitude = bits & 0x7fffffffu;
-  if (magnitude >= 0x7f800000u) return x;  // infinity or NaN
+  if (magnitude >= 0x7f800000u) return x;                                    // infinity or NaN
   if (magnitude >= 0x477ff000u) return uintBitsToFloat(sign | 0x7f800000u);  // >= 65520
   if (magnitude >= 0x38800000u) {  // >= 2^-14: keep 10 of the 23 mantissa bits, ties to even
     uint rounded = (magnitude + 0x00000fffu + ((magnitude >> 13) & 1u)) & 0xffffe000u;
