@@ -6,6 +6,7 @@
 #ifndef VOXGI_CONE_KERNEL_H
 #define VOXGI_CONE_KERNEL_H
 #include "../approx_math.h"
+#include "../trilinear.h"
 #include "cone_types.h"
 
 VOXGI_NAMESPACE_BEGIN
@@ -22,38 +23,12 @@ const int kMarchFirstHit = 1;  // [Kahl 2019, §5.4.4]: stop at the first sample
 const int kMarchShadow = 2;    // opacity only
 const int kMarchShadowKahl = 3;  // opacity times smoothstep(0, max distance, sqrt(t) strength)
 
-VOXGI_FN vec4 lerp4(vec4 a, vec4 b, float t) {
-  precise vec4 r = a + (b - a) * t;
-  return r;
-}
-
 // Voxel v of `level` (0: the radiance volume) and `face` (directional pyramid); 0 outside the
 // grid unless the caller already knows v is inside.
 VOLUME_FN vec4 pyramidVoxel(VOLUMES_IN int level, int face, ivec3 v, int size, bool inside) {
   if (!inside && (v.x < 0 || v.y < 0 || v.z < 0 || v.x >= size || v.y >= size || v.z >= size))
     return vec4(0.0f);
   return FETCH(pyramidAt)(level, face, v);
-}
-
-// The trilinear cell of `level` around p (level-0 voxel units): its lowest voxel, the weights
-// toward the highest, and whether all 8 voxels lie inside the grid.
-struct TrilinearCell {
-  ivec3 base;
-  vec3 f;
-  bool inside;
-};
-
-VOXGI_FN TrilinearCell trilinearCell(int level, vec3 p, int size) {
-  TrilinearCell c;
-  precise vec3 q = p * (1.0f / float(1 << level)) - vec3(0.5f);
-  precise vec3 lowest = floor(q);
-  precise vec3 f = q - lowest;
-  c.f = f;
-  c.base = ivec3(lowest);
-  // Away from the border (nearly every tap) the 8 voxels skip their bounds tests.
-  c.inside = c.base.x >= 0 && c.base.y >= 0 && c.base.z >= 0 && c.base.x + 1 < size &&
-             c.base.y + 1 < size && c.base.z + 1 < size;
-  return c;
 }
 
 // Trilinear filter of one face of `level` over cell c, zero outside the grid.
@@ -69,9 +44,7 @@ VOLUME_FN vec4 filterCell(VOLUMES_IN int level, int face, TrilinearCell c, int s
   vec4 c101 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 0, 1), size, inside);
   vec4 c011 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 1), size, inside);
   vec4 c111 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 1, 1), size, inside);
-  vec4 y0 = lerp4(lerp4(c000, c100, f.x), lerp4(c010, c110, f.x), f.y);
-  vec4 y1 = lerp4(lerp4(c001, c101, f.x), lerp4(c011, c111, f.x), f.y);
-  return lerp4(y0, y1, f.z);
+  return blendCell(c000, c100, c010, c110, c001, c101, c011, c111, f);
 }
 
 // One level as seen by a cone travelling along `dir`: the isotropic level, or the three faces of

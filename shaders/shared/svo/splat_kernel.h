@@ -1,0 +1,80 @@
+// Region-of-influence splatting of scene samples into the octree's leaves [Salm 2015, §4.3.4],
+// shared by build_svo on both backends. A sample's RoI is an axis-aligned cube of edge r <= 1 leaf
+// cell about its position; it adds to each leaf its opacity density times the volume the cube
+// shares with the leaf's cell (at most 2 cells per axis, 8 leaves; for r = 1 the trilinear tent
+// weights), and the premultiplied albedo, normal and emission in the same proportion. Sums are in
+// fixed point, so the order of the additions cannot change them. Included by C++ and GLSL.
+#ifndef VOXGI_SVO_SPLAT_KERNEL_H
+#define VOXGI_SVO_SPLAT_KERNEL_H
+#include "../glsl_cpp.h"
+
+VOXGI_NAMESPACE_BEGIN
+
+// One scene sample prepared for the build (common/svo/samples.cpp), 64 bytes, std430.
+struct SvoSample {
+  vec4 position;  // xyz: leaf voxel units (leaf (i,j,k) covers [i,i+1) x ...); w: RoI edge r in (0,
+                  // 1]
+  vec4 albedo;    // rgb: albedo in [0, 1]; w: opacity density (1 / r: a surface's samples sum to 1)
+  vec4 normal;    // xyz: unit surface normal; w: 0
+  vec4 emission;  // rgb: emission / the build's emission scale, in [0, 1]; w: 0
+};
+
+// Fixed point: a leaf's sums count units of 2^-16 of opacity x cell volume. A sample adds at most
+// r^2 <= 1 opacity (density 1/r times the cube's r^3), so a leaf overflows 2^31 - 1 units only past
+// 32767 samples; both backends check the opacity sum, which bounds every other sum's magnitude.
+const float kSvoWeightScale = 65536.0f;
+
+// Leaf sums per leaf voxel, in this order (`leaf_sums`, 8 voxels a leaf tile by local id).
+const int kSumOpacity = 0;   // units of opacity x volume
+const int kSumAlbedo = 1;    // 1..3: sum of round(weight x albedo)
+const int kSumNormal = 4;    // 4..6: signed, round(weight x normal)
+const int kSumEmission = 7;  // 7..9: round(weight x scaled emission)
+const int kSumWords = 10;
+
+// The RoI [p - r/2, p + r/2] on one axis against cells lo and lo + 1: the lengths it covers.
+struct SplatAxis {
+  int lo;
+  float w0;
+  float w1;
+};
+
+VOXGI_FN SplatAxis splatAxis(float p, float r) {
+  SplatAxis s;
+  precise float a = p - 0.5f * r;
+  precise float b = p + 0.5f * r;
+  precise float lo = floor(a);
+  precise float mid = lo + 1.0f;
+  precise float w0 = min(b, mid) - a;
+  precise float w1 = max(b - mid, 0.0f);
+  s.lo = int(lo);
+  s.w0 = w0;
+  s.w1 = w1;
+  return s;
+}
+
+// The weight (opacity density x shared volume) corner c (0 or 1 per axis) of the sample's 2x2x2
+// leaf block receives.
+VOXGI_FN float splatWeight(SplatAxis x, SplatAxis y, SplatAxis z, float density, ivec3 c) {
+  precise float wx = c.x == 0 ? x.w0 : x.w1;
+  precise float wy = c.y == 0 ? y.w0 : y.w1;
+  precise float wz = c.z == 0 ? z.w0 : z.w1;
+  precise float w = ((wx * wy) * wz) * density;
+  return w;
+}
+
+// round(weight x value) in units of 2^-16.
+VOXGI_FN int fixedRound(float weight, float value) {
+  precise float x = weight * value;
+  precise float r = floor(x * kSvoWeightScale + 0.5f);
+  return int(r);
+}
+
+// Whether a sample at p (leaf voxel units) can touch a leaf of a domain n leaves wide: a test on
+// floats, before any conversion to int.
+VOXGI_FN bool splatInDomain(vec3 p, float n) {
+  return p.x > -1.0f && p.y > -1.0f && p.z > -1.0f && p.x < n + 1.0f && p.y < n + 1.0f &&
+         p.z < n + 1.0f;
+}
+
+VOXGI_NAMESPACE_END
+#endif

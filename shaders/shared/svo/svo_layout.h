@@ -1,0 +1,94 @@
+// The sparse voxel octree's layout [Salm 2015, §4.3.1], shared by the CPU and GPU stages and the
+// diff (docs/svo.md has the figure). Included by C++ and GLSL.
+//
+// Levels: the root is implicit and not stored; its eight children, the root tile, are level 1,
+// and the leaves are level D = svo.depth, 2^D per axis over the scene's grid cube. Nodes come in
+// tiles of eight, the children of one node; a node's local id in its tile is x | y<<1 | z<<2 of
+// its coordinates' lowest bits (svo/morton.h). A tile at level l is keyed by its coordinate at
+// level l - 1 (its parent node's), as a Morton key.
+//
+// Two address spaces, as in the thesis: node tiles (levels 1 .. D-1; the root tile is tile 0)
+// hold kNodeWords words per node in `nodes`, node n = 8 tile + local id; leaf tiles (level D) are
+// implicit: a leaf parent's child word is the index of its leaf tile, and its flags say which
+// leaves hold samples. Each tile has a brick: 2x2x2 voxels, one per node, stored as 3x3x3 with
+// the positive boundary copied from the neighbouring tiles, so a trilinear sample needs one tile
+// (texel (i, j, k) at i + 3 (j + 3 k)). Leaf bricks are in the leaf pools, node-tile bricks in
+// the mipmap pools, by tile index.
+#ifndef VOXGI_SVO_LAYOUT_H
+#define VOXGI_SVO_LAYOUT_H
+#include "../trilinear.h"
+#include "morton.h"
+
+VOXGI_NAMESPACE_BEGIN
+
+const int kSvoMinDepth = 2;
+const int kSvoMaxDepth = 10;  // 3 bits a level in a uint key
+const uint kSvoNull = 0xffffffffu;
+
+// A node: its child tile (a node tile, or the leaf tile at level D-1), its six neighbours at the
+// same level (node indices of slots whose tiles exist, in the order +x -x +y -y +z -z), and flags.
+const int kNodeWords = 8;
+const int kNodeChild = 0;
+const int kNodeNeighbour = 1;  // + face (0..5 as +x -x +y -y +z -z)
+const int kNodeFlags = 7;
+const uint kNodeReal = 1u;        // a sample lies in the node's cell (else an empty slot)
+const uint kNodeChildShift = 8u;  // bits 8..15: which children are real
+
+// A tile record (`tiles` for node tiles, `leaf_tiles`): its level, key, parent node (kSvoNull for
+// the root tile) and flags.
+const int kTileWords = 4;
+const int kTileLevel = 0;
+const int kTileKey = 1;
+const int kTileParent = 2;
+const int kTileFlags = 3;
+const uint kTileBorder = 1u;  // holds no sample: it only completes a neighbour's brick boundary
+
+const int kBrickTexels = 27;
+
+VOXGI_FN uint brickTexel(ivec3 t) {
+  return uint(t.x + 3 * (t.y + 3 * t.z));
+}
+
+// The tile of `level` at tile coordinate `tile` (node coordinates at level - 1): its index in its
+// address space (leaf tiles for level D), or kSvoNull. Walks down from the root tile through
+// FETCH(svoNodeWord)(word index).
+VOLUME_FN uint svoFindTile(VOLUMES_IN int level, uvec3 tile) {
+  uint t = 0u;
+  for (int l = 1; l < level; ++l) {
+    uvec3 c = tile >> uint(level - 1 - l);
+    uint node = t * 8u + localId(c);
+    t = FETCH(svoNodeWord)(node * uint(kNodeWords) + uint(kNodeChild));
+    if (t == kSvoNull) return kSvoNull;
+  }
+  return t;
+}
+
+// Texel `texel` of the brick of `tile` at `level` (FETCH(svoBrickAt)(level, face, tile, texel
+// index)); 0 without a tile or for a texel left of the brick (outside the grid's low faces).
+VOLUME_FN vec4 svoBrickVoxel(VOLUMES_IN int level, int face, uint tile, ivec3 texel) {
+  if (tile == kSvoNull || texel.x < 0 || texel.y < 0 || texel.z < 0) return vec4(0.0f);
+  return FETCH(svoBrickAt)(level, face, tile, brickTexel(texel));
+}
+
+// Trilinear sample of one face of tree `level` over cell c (from trilinearCell in that level's
+// voxel units): one tile lookup, eight texels of its brick, blended as the dense pyramid blends
+// (trilinear.h). Equals the dense, zero-padded level's sample: the brick of tile floor(base / 2)
+// holds base and base + 1 on each axis, and a cell left of the grid (base -1) reads tile 0's
+// texels with the missing side 0.
+VOLUME_FN vec4 svoFilterCell(VOLUMES_IN int level, int face, TrilinearCell c) {
+  ivec3 t = max(c.base, ivec3(0)) >> 1;
+  uint tile = svoFindTile(VOLUMES level, uvec3(t));
+  ivec3 o = c.base - t * 2;
+  vec4 c000 = svoBrickVoxel(VOLUMES level, face, tile, o);
+  vec4 c100 = svoBrickVoxel(VOLUMES level, face, tile, o + ivec3(1, 0, 0));
+  vec4 c010 = svoBrickVoxel(VOLUMES level, face, tile, o + ivec3(0, 1, 0));
+  vec4 c110 = svoBrickVoxel(VOLUMES level, face, tile, o + ivec3(1, 1, 0));
+  vec4 c001 = svoBrickVoxel(VOLUMES level, face, tile, o + ivec3(0, 0, 1));
+  vec4 c101 = svoBrickVoxel(VOLUMES level, face, tile, o + ivec3(1, 0, 1));
+  vec4 c011 = svoBrickVoxel(VOLUMES level, face, tile, o + ivec3(0, 1, 1));
+  vec4 c111 = svoBrickVoxel(VOLUMES level, face, tile, o + ivec3(1, 1, 1));
+  return blendCell(c000, c100, c010, c110, c001, c101, c011, c111, c.f);
+}
+
+VOXGI_NAMESPACE_END
+#endif
