@@ -1,8 +1,16 @@
 #include "common/effect_plan.h"
 
 #include "common/camera_geometry.h"
+#include "common/error.h"
 
 namespace voxgi {
+
+void refusePointClouds(const Scene& scene, std::string_view technique) {
+  if (scene.pointClouds.empty()) return;
+  throw InputError(scene.file, "point_clouds",
+                   std::string(technique) + " renders triangle meshes; the point cloud " +
+                       scene.pointClouds.front().name + " renders with --technique path");
+}
 
 void EffectPlan::stage(StageId id, bool runs, std::string why) {
   const StageSpec& spec = stageSpec(id);

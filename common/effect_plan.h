@@ -53,6 +53,10 @@ class EffectPlan {
 // Whether the plan produces the buffer: its stage runs and its effect is on.
 bool bufferNeeded(const BufferSpec& spec, const EffectPlan& plan);
 
+// Refuses a scene with point clouds for a technique that renders triangle meshes only (throws
+// InputError naming the scene file and its first cloud), rather than render it without them.
+void refusePointClouds(const Scene& scene, std::string_view technique);
+
 // Whether any triangle of `mesh` can be in the camera's view: false only when its bounding box
 // lies wholly outside one plane of the view frustum (conservative).
 bool meshInView(const Scene& scene, const Mesh& mesh);

@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <fstream>
 
 #include "common/error.h"
 
@@ -25,6 +26,16 @@ uint64_t requireInputFile(const std::string& path, const std::string& field,
   if (access(path.c_str(), R_OK) != 0)
     throw InputError(path, field, "cannot open " + what + ": " + std::strerror(errno));
   return static_cast<uint64_t>(st.st_size);
+}
+
+std::string readInputFile(const std::string& path, const std::string& field,
+                          const std::string& what) {
+  const uint64_t size = requireInputFile(path, field, what);
+  std::ifstream in(path, std::ios::binary);
+  std::string bytes(size, '\0');
+  if (!in.read(bytes.data(), std::streamsize(size)) || in.gcount() != std::streamsize(size))
+    throw InputError(path, field, "cannot read " + what + " (it changed while being read)");
+  return bytes;
 }
 
 }  // namespace voxgi

@@ -13,4 +13,8 @@ namespace voxgi {
 uint64_t requireInputFile(const std::string& path, const std::string& field,
                           const std::string& what);
 
+// requireInputFile, then the whole file in one read.
+std::string readInputFile(const std::string& path, const std::string& field,
+                          const std::string& what);
+
 }  // namespace voxgi

@@ -19,7 +19,9 @@ using Type = PlyProperty::Type;
 
 constexpr size_t kMaxHeaderBytes = 64 * 1024;
 
-size_t typeSize(Type t) {
+}  // namespace
+
+size_t plyTypeSize(Type t) {
   switch (t) {
     case Type::int8:
     case Type::uint8:
@@ -36,6 +38,8 @@ size_t typeSize(Type t) {
   }
   return 0;
 }
+
+namespace {
 
 bool integral(Type t) {
   return t != Type::float32 && t != Type::float64;
@@ -110,7 +114,7 @@ struct BinaryReader {
   bool bigEndian;
 
   bool read(Type type, double& value) {
-    const size_t n = typeSize(type);
+    const size_t n = plyTypeSize(type);
     if (bytes.size() - at < n) return false;
     unsigned char b[8];
     std::memcpy(b, bytes.data() + at, n);
@@ -164,6 +168,10 @@ bool parseAscii(std::string_view word, Type type, double& value) {
 }  // namespace
 
 PlyHeader readPlyHeader(const std::string& path, const std::string& bytes) {
+  return readPlyHeader(path, std::string_view(bytes), bytes.size());
+}
+
+PlyHeader readPlyHeader(const std::string& path, std::string_view bytes, uint64_t fileSize) {
   PlyHeader h;
   size_t at = 0;
   int lineNumber = 0;
@@ -264,12 +272,13 @@ PlyHeader readPlyHeader(const std::string& path, const std::string& bytes) {
       throw InputError(path, "element " + e.name, "declares no properties");
   h.bodyOffset = at;
   // The least the declared elements can take, checked before anything is read or allocated.
-  const uint64_t body = bytes.size() - at;
+  const uint64_t body = fileSize - at;
   long double least = 0.0L;
   for (const PlyElement& e : h.elements) {
     uint64_t perItem = 0;
     for (const PlyProperty& p : e.properties)
-      perItem += h.format == PlyHeader::Format::ascii ? 2 : typeSize(p.list ? p.countType : p.type);
+      perItem +=
+          h.format == PlyHeader::Format::ascii ? 2 : plyTypeSize(p.list ? p.countType : p.type);
     least += static_cast<long double>(e.count) * static_cast<long double>(perItem);
   }
   if (least > static_cast<long double>(body))
@@ -281,9 +290,7 @@ PlyHeader readPlyHeader(const std::string& path, const std::string& bytes) {
 }
 
 PlyHeader checkPly(const std::string& path) {
-  requireInputFile(path, "", "PLY file");
-  std::ifstream in(path, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bytes = readInputFile(path, "", "PLY file");
   const PlyHeader h = readPlyHeader(path, bytes);
   // Assimp sizes its vertex and face arrays by the first element of each kind and writes the
   // instances of a second one past their end: one element of each kind at most.
@@ -379,6 +386,15 @@ PlyHeader checkPly(const std::string& path) {
         std::to_string(bytes.size() - reader.at) + " bytes after the last declared element");
   }
   return h;
+}
+
+PlyHeader readPlyHeaderOfFile(const std::string& path) {
+  const uint64_t size = requireInputFile(path, "", "PLY file");
+  std::ifstream in(path, std::ios::binary);
+  std::string head(std::min<uint64_t>(size, kMaxHeaderBytes), '\0');
+  in.read(head.data(), std::streamsize(head.size()));
+  head.resize(size_t(in.gcount()));
+  return readPlyHeader(path, std::string_view(head), size);
 }
 
 }  // namespace voxgi

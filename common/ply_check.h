@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace voxgi {
@@ -33,9 +34,16 @@ struct PlyHeader {
   uint64_t bodyOffset = 0;  // first byte after end_header's line
 };
 
+// Bytes a value of `type` takes in a binary body.
+size_t plyTypeSize(PlyProperty::Type type);
+
 // Reads and checks the header of `bytes` (the file's content): the magic line, the format,
 // elements and properties, end_header within the first 64 KiB, and counts that fit in the rest.
 PlyHeader readPlyHeader(const std::string& path, const std::string& bytes);
+// The same from the first bytes of a file of `fileSize` bytes (at least its first 64 KiB).
+PlyHeader readPlyHeader(const std::string& path, std::string_view head, uint64_t fileSize);
+// The header of the file at `path`, reading its first 64 KiB only.
+PlyHeader readPlyHeaderOfFile(const std::string& path);
 
 // Checks the whole file: the header as above, then every element — one line of the declared
 // values each in ASCII, exactly the declared bytes in binary, no data left over — and every vertex

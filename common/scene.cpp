@@ -11,6 +11,12 @@ size_t Scene::triangleCount() const {
   return n;
 }
 
+size_t Scene::pointCount() const {
+  size_t n = 0;
+  for (const PointCloud& c : pointClouds) n += c.size();
+  return n;
+}
+
 std::pair<glm::dvec3, glm::dvec3> Scene::bounds() const {
   glm::dvec3 lo(std::numeric_limits<double>::max());
   glm::dvec3 hi(std::numeric_limits<double>::lowest());
@@ -20,6 +26,12 @@ std::pair<glm::dvec3, glm::dvec3> Scene::bounds() const {
         lo = glm::min(lo, m.positions[t[c]]);
         hi = glm::max(hi, m.positions[t[c]]);
       }
+  for (const PointCloud& c : pointClouds)  // with each point's disc
+    for (size_t i = 0; i < c.size(); ++i) {
+      const double r = i < c.radii.size() ? double(c.radii[i]) : 0.0;
+      lo = glm::min(lo, c.positions[i] - r);
+      hi = glm::max(hi, c.positions[i] + r);
+    }
   return {lo, hi};
 }
 

@@ -1,5 +1,6 @@
-// The scene model every technique renders: triangle meshes with materials, lights, a camera,
-// background radiance and the voxel grid. Loaded by common/scene_load.cpp (docs/scene-format.md).
+// The scene model every technique renders: triangle meshes and point clouds with materials, lights,
+// a camera, background radiance and the voxel grid. Loaded by common/scene_load.cpp
+// (docs/scene-format.md).
 #pragma once
 
 #include <optional>
@@ -34,6 +35,19 @@ struct Mesh {
   uint32_t material = 0;
 };
 
+// A point cloud (docs/svo.md, "Point clouds"): world-space points with one material. Every point
+// has a unit normal and a disc radius (from the file, or estimated from its neighbours when the
+// scene asks for it: common/point_neighbours.h); colours are optional.
+struct PointCloud {
+  std::string name;  // the file it came from, for messages
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::vec3> normals;  // unit, world space
+  std::vector<float> radii;        // disc radius, world units, > 0
+  std::vector<glm::vec3> colors;   // linear albedo in [0, 1] per point; empty: the material's
+  uint32_t material = 0;
+  size_t size() const { return positions.size(); }
+};
+
 // Light falloff: inverse square (physical default) or [Kahl 2019]'s constant-linear-quadratic.
 struct Falloff {
   enum class Kind { inverse_square, polynomial } kind = Kind::inverse_square;
@@ -62,6 +76,7 @@ struct Scene {
   std::string file;  // the file it was loaded from, for messages
   std::vector<Material> materials;
   std::vector<Mesh> meshes;
+  std::vector<PointCloud> pointClouds;
   std::vector<Light> lights;
   Camera camera;
   glm::vec3 background{0.0f};
@@ -71,7 +86,8 @@ struct Scene {
   std::vector<std::string> settings;
 
   size_t triangleCount() const;
-  // Bounds of all mesh vertices; min > max when there is no geometry.
+  size_t pointCount() const;
+  // Bounds of all mesh vertices and points; min > max when there is no geometry.
   std::pair<glm::dvec3, glm::dvec3> bounds() const;
 };
 

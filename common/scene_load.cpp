@@ -14,6 +14,7 @@
 
 #include "common/error.h"
 #include "common/input_file.h"
+#include "common/point_cloud_ply.h"
 #include "common/settings.h"
 
 namespace voxgi {
@@ -229,6 +230,67 @@ int readResolution(const std::string& file, const std::string& field, int64_t n)
   return static_cast<int>(n);
 }
 
+namespace {
+
+// A PLY whose header has vertices and no faces is a point cloud (a mesh file otherwise).
+bool isPointCloudFile(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+  if (ext != ".ply") return false;
+  return plyIsPointCloud(readPlyHeaderOfFile(path));
+}
+
+// "point_clouds": [{"file", "material", "transform", "normals", "viewpoint", "colors"}].
+PointCloudOptions readPointCloud(const Field& f, Scene& scene, size_t namedMaterials) {
+  f.allowKeys({"file", "material", "transform", "normals", "viewpoint", "colors"});
+  const Field file = f.at("file");
+  const fs::path cloudPath = fs::path(f.file).parent_path() / file.string();
+  try {
+    requireInputFile(cloudPath.string(), "", "point cloud file");
+    if (!isPointCloudFile(cloudPath.string()))
+      throw InputError(cloudPath.string(), "", "not a point-cloud PLY (vertices and no faces)");
+  } catch (const InputError& e) {
+    file.fail(e.what());
+  }
+  PointCloudOptions options;
+  if (f.has("normals")) {
+    const std::string n = f.at("normals").string();
+    if (n != "file" && n != "estimate") f.at("normals").fail("must be \"file\" or \"estimate\"");
+    options.estimateNormals = n == "estimate";
+  }
+  if (f.has("viewpoint")) options.viewpoint = f.at("viewpoint").position();
+  if (f.has("colors")) {
+    const std::string c = f.at("colors").string();
+    if (c == "srgb")
+      options.colors = PointCloudOptions::Colors::srgb;
+    else if (c == "linear")
+      options.colors = PointCloudOptions::Colors::linear;
+    else if (c == "ignore")
+      options.colors = PointCloudOptions::Colors::ignore;
+    else
+      f.at("colors").fail("must be \"srgb\", \"linear\" or \"ignore\"");
+  }
+  uint32_t material = 0;
+  if (f.has("material")) {
+    const std::string name = f.at("material").string();
+    bool found = false;
+    for (size_t k = 0; k < namedMaterials; ++k)
+      if (scene.materials[k].name == name) material = uint32_t(k), found = true;
+    if (!found) f.at("material").fail("unknown material '" + name + "'");
+  } else {
+    Material fallback;
+    fallback.name = "default";
+    material = uint32_t(scene.materials.size());
+    scene.materials.push_back(fallback);
+  }
+  const glm::dmat4 transform =
+      f.has("transform") ? readTransform(f.at("transform")) : glm::dmat4(1.0);
+  importPointCloud(scene, cloudPath.string(), transform, material, options);
+  return options;
+}
+
+}  // namespace
+
 void checkGrid(const Scene& scene, const std::string& source) {
   const GridSpec& g = scene.grid;
   const double h = g.voxelSize();
@@ -276,6 +338,16 @@ void validateGeometry(const Scene& scene) {
           fail("triangle " + std::to_string(t), "vertex index out of range");
     if (m.material >= scene.materials.size()) fail("material", "index out of range");
   }
+  for (const PointCloud& c : scene.pointClouds) {
+    for (size_t v = 0; v < c.size(); ++v)
+      if (std::max({std::abs(c.positions[v].x), std::abs(c.positions[v].y),
+                    std::abs(c.positions[v].z)}) > kMaxCoordinate)
+        throw InputError(c.name, "vertex " + std::to_string(v),
+                         "lies beyond " + Field::fmt(kMaxCoordinate) +
+                             " of the origin (after the scene's transform)");
+    if (c.material >= scene.materials.size())
+      throw InputError(c.name, "material", "index out of range");
+  }
 }
 
 Scene loadScene(const std::string& path) {
@@ -284,7 +356,14 @@ Scene loadScene(const std::string& path) {
   const std::string ext = fs::path(path).extension().string();
   if (ext != ".json") {
     requireInputFile(path, "", "mesh file");
-    importMeshFile(scene, path, glm::dmat4(1.0), std::nullopt);
+    if (isPointCloudFile(path)) {
+      Material fallback;
+      fallback.name = "default";
+      scene.materials.push_back(fallback);
+      importPointCloud(scene, path, glm::dmat4(1.0), 0, {});
+    } else {
+      importMeshFile(scene, path, glm::dmat4(1.0), std::nullopt);
+    }
     validateGeometry(scene);
     scene.grid = fitGrid(scene.bounds(), 64);
     checkGrid(scene, path);
@@ -293,6 +372,7 @@ Scene loadScene(const std::string& path) {
       scene.camera.lookAt = 0.5 * (lo + hi);
       scene.camera.position = scene.camera.lookAt + glm::dvec3(0.0, 0.0, 2.0 * scene.grid.size);
     }
+    estimatePointCloudProperties(scene, std::vector<PointCloudOptions>(scene.pointClouds.size()));
     return scene;
   }
   requireInputFile(path, "", "scene file");
@@ -305,8 +385,8 @@ Scene loadScene(const std::string& path) {
     throw InputError(path, "", std::string("malformed JSON: ") + e.what());
   }
   const Field root{path, doc, ""};
-  root.allowKeys(
-      {"meshes", "materials", "lights", "camera", "background", "grid", "settings", "description"});
+  root.allowKeys({"meshes", "point_clouds", "materials", "lights", "camera", "background", "grid",
+                  "settings", "description"});
   if (root.has("materials")) {
     const Field mats = root.at("materials");
     if (!mats.value.is_object()) mats.fail("must be an object of name -> material");
@@ -318,7 +398,9 @@ Scene loadScene(const std::string& path) {
     }
   }
   const size_t namedMaterials = scene.materials.size();
-  const Field meshes = root.at("meshes");
+  if (!root.has("meshes") && !root.has("point_clouds")) root.at("meshes");  // names what is missing
+  const json noMeshes = json::array();
+  const Field meshes = root.has("meshes") ? root.at("meshes") : Field{path, noMeshes, "meshes"};
   if (!meshes.value.is_array()) meshes.fail("must be an array");
   for (size_t i = 0; i < meshes.value.size(); ++i) {
     const Field m = meshes.at(i);
@@ -347,6 +429,13 @@ Scene loadScene(const std::string& path) {
         if (scene.materials[k].name == scene.materials[j].name)
           scene.materials[k] = scene.materials[j];
   }
+  std::vector<PointCloudOptions> cloudOptions;
+  if (root.has("point_clouds")) {
+    const Field clouds = root.at("point_clouds");
+    if (!clouds.value.is_array()) clouds.fail("must be an array");
+    for (size_t i = 0; i < clouds.value.size(); ++i)
+      cloudOptions.push_back(readPointCloud(clouds.at(i), scene, namedMaterials));
+  }
   if (root.has("lights")) {
     const Field lights = root.at("lights");
     if (!lights.value.is_array()) lights.fail("must be an array");
@@ -357,6 +446,7 @@ Scene loadScene(const std::string& path) {
   if (root.has("background")) scene.background = root.at("background").color(0.0, 1e9);
   if (root.has("settings")) scene.settings = readSettings(root.at("settings"));
   validateGeometry(scene);
+  estimatePointCloudProperties(scene, cloudOptions);
   int resolution = 64;
   if (root.has("grid")) {
     const Field g = root.at("grid");

@@ -1,9 +1,10 @@
-// Loading scenes: a JSON scene description (docs/scene-format.md) or a bare mesh file
-// (OBJ/MTL, glTF 2.0, PLY via Assimp) with default material, camera and grid.
+// Loading scenes: a JSON scene description (docs/scene-format.md), a bare mesh file (OBJ/MTL,
+// glTF 2.0, PLY via Assimp) or a bare point-cloud PLY, with default material, camera and grid.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -37,6 +38,21 @@ void setImageWidth(Scene& scene, int width, const std::string& source);
 // validateGeometry afterwards (it rejects NaN/Inf vertices and bad materials).
 void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& transform,
                     const std::optional<uint32_t>& materialOverride);
+
+// How a point cloud of the scene file is read (docs/scene-format.md, "point_clouds").
+struct PointCloudOptions {
+  bool estimateNormals = false;         // "normals": "estimate" (else the file must have them)
+  std::optional<glm::dvec3> viewpoint;  // estimated normals face it; default: the camera
+  enum class Colors { srgb, linear, ignore } colors = Colors::srgb;
+};
+
+// Appends the points of a point-cloud PLY (common/point_cloud_ply.h) to `scene`, transformed by
+// `transform`, with material `material`. Throws InputError; a cloud without normals is refused
+// unless the options estimate them. Radii and normals the file lacks are estimated afterwards, once
+// the camera is known, by estimatePointCloudProperties (options per cloud, in order).
+void importPointCloud(Scene& scene, const std::string& path, const glm::dmat4& transform,
+                      uint32_t material, const PointCloudOptions& options);
+void estimatePointCloudProperties(Scene& scene, const std::vector<PointCloudOptions>& options);
 
 // Checks that every vertex and index of `scene` is usable; throws InputError naming the mesh.
 void validateGeometry(const Scene& scene);

@@ -61,7 +61,7 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"billion_vertices.ply", "header: the declared elements need at least"},
         Case{"truncated_binary.ply", "header: the declared elements need at least 37 bytes"},
         Case{"list_count_255.ply", "face 0: the line has too few values"},
-        Case{"points_only.ply", "contains no faces"},
+        Case{"points_only.ply", "element vertex: no normals (nx ny nz)"},
         Case{"stl_named_gltf.gltf", "not a glTF file"},
         Case{"missing_meshes.json", "meshes: missing (this field is required)"},
         Case{"light_without_intensity.json", "lights[0].intensity: missing"},
@@ -83,7 +83,10 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"element_without_properties.ply", "element edge: declares no properties"},
         Case{"unknown_element.ply", "element 'colours': voxgi reads vertex, face"},
         Case{"texcoord_without_indices.ply", "texcoord: 6 values for a face of 0 vertices"},
-        Case{"obj_info_between_properties.ply", "obj_info between the properties of element"}),
+        Case{"obj_info_between_properties.ply", "obj_info between the properties of element"},
+        Case{"cloud_nan_position.ply", "vertex 1: x, y, z: NaN or infinite"},
+        Case{"cloud_bytes_left_over.ply", "element vertex: 3 vertices of 24 bytes take 72 bytes"},
+        Case{"cloud_with_vct.json", "point_clouds: vct renders triangle meshes"}),
     testName);
 
 // Images (references, masks and compare's inputs), compared.

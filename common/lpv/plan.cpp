@@ -8,6 +8,7 @@
 namespace voxgi::lpv {
 
 EffectPlan planEffects(const Scene& scene, const Settings& settings) {
+  refusePointClouds(scene, "lpv");
   const LpvSettings& s = settings.lpv;
   EffectPlan p;
   p.full = settings.planMode == PlanMode::full;

@@ -28,6 +28,7 @@ MeshesWith meshesWith(const Scene& scene, Test test) {
 }  // namespace
 
 EffectPlan planEffects(const Scene& scene, const Settings& settings) {
+  refusePointClouds(scene, "vct");
   const VctSettings& s = settings.vct;
   EffectPlan p;
   p.full = settings.planMode == PlanMode::full;

@@ -1,0 +1,273 @@
+#include "common/point_cloud_ply.h"
+
+#include <algorithm>
+#include <atomic>
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+
+#include <tbb/blocked_range.h>
+
+#include "common/error.h"
+#include "common/input_file.h"
+#include "common/parallel.h"
+
+namespace voxgi {
+namespace {
+
+using Type = PlyProperty::Type;
+
+// Where each property voxgi reads sits in a vertex: its index among the properties (-1: absent).
+struct Layout {
+  int position[3] = {-1, -1, -1};
+  int normal[3] = {-1, -1, -1};
+  int color[3] = {-1, -1, -1};
+  int radius = -1;
+};
+
+bool integral(Type t) {
+  return t != Type::float32 && t != Type::float64;
+}
+
+// The largest value of an unsigned integer colour type (0: not one).
+double colorMaximum(Type t) {
+  return t == Type::uint8 ? 255.0 : t == Type::uint16 ? 65535.0 : 0.0;
+}
+
+Layout layoutOf(const std::string& path, const PlyElement& vertex) {
+  Layout l;
+  const auto find = [&](std::initializer_list<const char*> names) {
+    for (size_t i = 0; i < vertex.properties.size(); ++i)
+      for (const char* n : names)
+        if (vertex.properties[i].name == n) return int(i);
+    return -1;
+  };
+  const char* axes[3] = {"x", "y", "z"};
+  const char* normals[3] = {"nx", "ny", "nz"};
+  for (int a = 0; a < 3; ++a) {
+    l.position[a] = find({axes[a]});
+    l.normal[a] = find({normals[a]});
+  }
+  l.color[0] = find({"red", "diffuse_red"});
+  l.color[1] = find({"green", "diffuse_green"});
+  l.color[2] = find({"blue", "diffuse_blue"});
+  l.radius = find({"radius"});
+  const std::string where = "element vertex";
+  for (const PlyProperty& p : vertex.properties)
+    if (p.list) throw InputError(path, where, "a point cloud's vertices have no list property (" + p.name + ")");
+  for (int a = 0; a < 3; ++a)
+    if (l.position[a] < 0)
+      throw InputError(path, where, std::string("no property ") + axes[a] + " (positions need x, y and z)");
+  const auto allOrNone = [&](const int (&idx)[3], const char* what) {
+    const int present = (idx[0] >= 0) + (idx[1] >= 0) + (idx[2] >= 0);
+    if (present != 0 && present != 3)
+      throw InputError(path, where, std::string("only some of ") + what + " (give all three or none)");
+  };
+  allOrNone(l.normal, "nx, ny, nz");
+  allOrNone(l.color, "red, green, blue");
+  for (const int c : l.color)
+    if (c >= 0) {
+      const Type t = vertex.properties[size_t(c)].type;
+      if (integral(t) && colorMaximum(t) == 0.0)
+        throw InputError(path, where, vertex.properties[size_t(c)].name +
+                                          ": a colour is uchar, ushort, float or double");
+    }
+  return l;
+}
+
+// Values of one property for n vertices `stride` bytes apart, in the file's byte order.
+template <class T>
+void decodeColumn(const unsigned char* at, size_t stride, bool swap, size_t n, double* out) {
+  for (size_t j = 0; j < n; ++j) {
+    unsigned char b[sizeof(T)];
+    std::memcpy(b, at + j * stride, sizeof b);
+    if (swap) std::reverse(b, b + sizeof b);
+    T v;
+    std::memcpy(&v, b, sizeof v);
+    out[j] = double(v);
+  }
+}
+
+void decodeColumn(Type type, const unsigned char* at, size_t stride, bool swap, size_t n,
+                  double* out) {
+  switch (type) {
+    case Type::int8:
+      return decodeColumn<int8_t>(at, stride, swap, n, out);
+    case Type::uint8:
+      return decodeColumn<uint8_t>(at, stride, swap, n, out);
+    case Type::int16:
+      return decodeColumn<int16_t>(at, stride, swap, n, out);
+    case Type::uint16:
+      return decodeColumn<uint16_t>(at, stride, swap, n, out);
+    case Type::int32:
+      return decodeColumn<int32_t>(at, stride, swap, n, out);
+    case Type::uint32:
+      return decodeColumn<uint32_t>(at, stride, swap, n, out);
+    case Type::float32:
+      return decodeColumn<float>(at, stride, swap, n, out);
+    case Type::float64:
+      return decodeColumn<double>(at, stride, swap, n, out);
+  }
+}
+
+// Fills point i from its property values (in header order) and returns what is wrong with them,
+// empty when nothing is.
+std::string store(PlyPoints& out, size_t i, const double* v, const Layout& l,
+                  const PlyElement& vertex) {
+  const glm::dvec3 p(v[l.position[0]], v[l.position[1]], v[l.position[2]]);
+  if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+    return "x, y, z: NaN or infinite";
+  out.positions[i] = p;
+  if (l.normal[0] >= 0) {
+    const glm::dvec3 n(v[l.normal[0]], v[l.normal[1]], v[l.normal[2]]);
+    if (!std::isfinite(n.x) || !std::isfinite(n.y) || !std::isfinite(n.z))
+      return "nx, ny, nz: NaN or infinite";
+    if (n == glm::dvec3(0.0)) return "nx, ny, nz: the zero vector";
+    out.normals[i] = glm::vec3(glm::normalize(n));
+  }
+  if (l.color[0] >= 0)
+    for (int c = 0; c < 3; ++c) {
+      const PlyProperty& prop = vertex.properties[size_t(l.color[c])];
+      const double maximum = colorMaximum(prop.type);
+      const double value = maximum > 0.0 ? v[l.color[c]] / maximum : v[l.color[c]];
+      if (!(value >= 0.0 && value <= 1.0)) return prop.name + ": a float colour must be in [0, 1]";
+      out.colors[i][c] = float(value);
+    }
+  if (l.radius >= 0) {
+    const double r = v[l.radius];
+    if (!(r > 0.0 && r <= 1e15)) return "radius: must be a positive finite number";
+    out.radii[i] = float(r);
+  }
+  return {};
+}
+
+}  // namespace
+
+bool plyIsPointCloud(const PlyHeader& header) {
+  bool vertices = false;
+  for (const PlyElement& e : header.elements) {
+    if (e.name == "vertex") vertices = true;
+    else if (e.count > 0) return false;
+  }
+  return vertices;
+}
+
+PlyPoints readPlyPoints(const std::string& path) {
+  const std::string bytes = readInputFile(path, "", "PLY file");
+  const PlyHeader h = readPlyHeader(path, bytes);
+  if (!plyIsPointCloud(h))
+    throw InputError(path, "", "not a point cloud (one vertex element, no faces)");
+  const auto it = std::find_if(h.elements.begin(), h.elements.end(),
+                               [](const PlyElement& e) { return e.name == "vertex"; });
+  if (std::count_if(h.elements.begin(), h.elements.end(),
+                    [](const PlyElement& e) { return e.name == "vertex"; }) > 1)
+    throw InputError(path, "element vertex", "a second vertex element");
+  const PlyElement& vertex = *it;
+  const Layout l = layoutOf(path, vertex);
+  const size_t count = vertex.count;
+  const size_t props = vertex.properties.size();
+
+  // Sizes are checked before anything is allocated: a binary body must be exactly the vertices.
+  size_t stride = 0;
+  for (const PlyProperty& p : vertex.properties) stride += plyTypeSize(p.type);
+  const bool ascii = h.format == PlyHeader::Format::ascii;
+  const size_t body = bytes.size() - h.bodyOffset;
+  if (!ascii && body != count * stride)
+    throw InputError(path, "element vertex",
+                     std::to_string(count) + " vertices of " + std::to_string(stride) +
+                         " bytes take " + std::to_string(count * stride) + " bytes, the file has " +
+                         std::to_string(body) + " after the header");
+
+  PlyPoints out;
+  out.positions.resize(count);
+  if (l.normal[0] >= 0) out.normals.resize(count);
+  if (l.color[0] >= 0) out.colors.resize(count);
+  if (l.radius >= 0) out.radii.resize(count);
+  const auto fail = [&](size_t i, const std::string& what) {
+    throw InputError(path, "vertex " + std::to_string(i), what);
+  };
+
+  if (!ascii) {
+    std::vector<size_t> offset(props);
+    for (size_t p = 1; p < props; ++p)
+      offset[p] = offset[p - 1] + plyTypeSize(vertex.properties[p - 1].type);
+    const bool swap = (h.format == PlyHeader::Format::binary_big_endian) !=
+                      (std::endian::native == std::endian::big);
+    // Decoded a block at a time, one property after another; the first bad vertex is reported,
+    // whatever order the threads run in.
+    std::atomic<size_t> firstBad{std::numeric_limits<size_t>::max()};
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data() + h.bodyOffset);
+    parallelFor(tbb::blocked_range<size_t>(0, count, 4096), [&](const tbb::blocked_range<size_t>& r) {
+      const size_t n = r.size();
+      std::vector<double> columns(props * n), v(props);
+      for (size_t p = 0; p < props; ++p)
+        decodeColumn(vertex.properties[p].type, data + r.begin() * stride + offset[p], stride, swap,
+                     n, &columns[p * n]);
+      for (size_t j = 0; j < n; ++j) {
+        for (size_t p = 0; p < props; ++p) v[p] = columns[p * n + j];
+        if (const std::string what = store(out, r.begin() + j, v.data(), l, vertex); !what.empty()) {
+          size_t seen = firstBad.load();
+          while (r.begin() + j < seen && !firstBad.compare_exchange_weak(seen, r.begin() + j)) {
+          }
+          return;
+        }
+      }
+    });
+    if (const size_t bad = firstBad.load(); bad != std::numeric_limits<size_t>::max()) {
+      std::vector<double> v(props);
+      for (size_t p = 0; p < props; ++p)
+        decodeColumn(vertex.properties[p].type, data + bad * stride + offset[p], stride, swap, 1,
+                     &v[p]);
+      fail(bad, store(out, bad, v.data(), l, vertex));
+    }
+    return out;
+  }
+
+  // ASCII: one line of exactly the declared values per vertex, whitespace after the last.
+  size_t at = h.bodyOffset;
+  std::vector<double> v(props);
+  for (size_t i = 0; i < count; ++i) {
+    if (at >= bytes.size()) fail(i, "missing: the file ends early");
+    const size_t eol = std::min(bytes.find('\n', at), bytes.size());
+    const char* c = bytes.data() + at;
+    const char* end = bytes.data() + eol;
+    at = eol + 1;
+    for (size_t p = 0; p < props; ++p) {
+      while (c < end && (*c == ' ' || *c == '\t' || *c == '\r')) ++c;
+      if (c == end) fail(i, "the line has too few values");
+      const char* word = c;
+      while (c < end && *c != ' ' && *c != '\t' && *c != '\r') ++c;
+      const Type type = vertex.properties[p].type;
+      bool ok;
+      if (integral(type)) {
+        int64_t n = 0;
+        const auto r = std::from_chars(word, c, n);
+        ok = r.ec == std::errc() && r.ptr == c;
+        v[p] = double(n);
+      } else if (type == Type::float32) {  // a value beyond float's range is not a float
+        float f = 0.0f;
+        const auto r = std::from_chars(word, c, f);
+        ok = r.ec == std::errc() && r.ptr == c;
+        v[p] = double(f);
+      } else {
+        const auto r = std::from_chars(word, c, v[p]);
+        ok = r.ec == std::errc() && r.ptr == c;
+      }
+      if (!ok)
+        fail(i, vertex.properties[p].name + ": '" + std::string(word, size_t(c - word)).substr(0, 32) +
+                    "' is not a valid value of its type");
+    }
+    while (c < end && (*c == ' ' || *c == '\t' || *c == '\r')) ++c;
+    if (c != end) fail(i, "the line has more values than the header declares");
+    if (const std::string what = store(out, i, v.data(), l, vertex); !what.empty()) fail(i, what);
+  }
+  for (; at < bytes.size(); ++at)
+    if (!std::isspace(static_cast<unsigned char>(bytes[at])))
+      throw InputError(path, "body", "data after the last vertex");
+  return out;
+}
+
+}  // namespace voxgi
