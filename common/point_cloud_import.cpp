@@ -5,20 +5,13 @@
 #include <tbb/blocked_range.h>
 
 #include "common/error.h"
+#include "common/image_io.h"
 #include "common/parallel.h"
 #include "common/point_cloud_ply.h"
 #include "common/point_neighbours.h"
 #include "common/scene_load.h"
 
 namespace voxgi {
-namespace {
-
-// The sRGB transfer function, decoded: a colour as displays show it to linear reflectance.
-float srgbToLinear(float c) {
-  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
-
-}  // namespace
 
 void importPointCloud(Scene& scene, const std::string& path, const glm::dmat4& transform,
                       uint32_t material, const PointCloudOptions& options) {
@@ -37,20 +30,20 @@ void importPointCloud(Scene& scene, const std::string& path, const glm::dmat4& t
   cloud.normals = std::move(file.normals);
   cloud.radii = std::move(file.radii);
   if (colors) cloud.colors = std::move(file.colors);
-  parallelFor(tbb::blocked_range<size_t>(0, cloud.size(), 16384),
-              [&](const tbb::blocked_range<size_t>& r) {
-                for (size_t i = r.begin(); i != r.end(); ++i) {
-                  cloud.positions[i] = glm::dvec3(transform * glm::dvec4(cloud.positions[i], 1.0));
-                  if (!cloud.normals.empty())
-                    cloud.normals[i] =
-                        glm::vec3(glm::normalize(normalMatrix * glm::dvec3(cloud.normals[i])));
-                  if (!cloud.radii.empty()) cloud.radii[i] = float(cloud.radii[i] * scale);
-                  if (colors && srgb) {
-                    const glm::vec3 c = cloud.colors[i];
-                    cloud.colors[i] = glm::vec3(srgbToLinear(c.x), srgbToLinear(c.y), srgbToLinear(c.z));
-                  }
-                }
-              });
+  parallelFor(
+      tbb::blocked_range<size_t>(0, cloud.size(), 16384), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+          cloud.positions[i] = glm::dvec3(transform * glm::dvec4(cloud.positions[i], 1.0));
+          if (!cloud.normals.empty())
+            cloud.normals[i] =
+                glm::vec3(glm::normalize(normalMatrix * glm::dvec3(cloud.normals[i])));
+          if (!cloud.radii.empty()) cloud.radii[i] = float(cloud.radii[i] * scale);
+          if (colors && srgb) {
+            const glm::vec3 c = cloud.colors[i];
+            cloud.colors[i] = glm::vec3(srgbToLinear(c.x), srgbToLinear(c.y), srgbToLinear(c.z));
+          }
+        }
+      });
   if (cloud.normals.empty() && !options.estimateNormals)
     throw InputError(path, "element vertex",
                      "no normals (nx ny nz); in a scene file, \"normals\": \"estimate\" estimates "

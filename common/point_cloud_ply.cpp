@@ -57,14 +57,18 @@ Layout layoutOf(const std::string& path, const PlyElement& vertex) {
   l.radius = find({"radius"});
   const std::string where = "element vertex";
   for (const PlyProperty& p : vertex.properties)
-    if (p.list) throw InputError(path, where, "a point cloud's vertices have no list property (" + p.name + ")");
+    if (p.list)
+      throw InputError(path, where,
+                       "a point cloud's vertices have no list property (" + p.name + ")");
   for (int a = 0; a < 3; ++a)
     if (l.position[a] < 0)
-      throw InputError(path, where, std::string("no property ") + axes[a] + " (positions need x, y and z)");
-  const auto allOrNone = [&](const int (&idx)[3], const char* what) {
+      throw InputError(path, where,
+                       std::string("no property ") + axes[a] + " (positions need x, y and z)");
+  const auto allOrNone = [&](const int(&idx)[3], const char* what) {
     const int present = (idx[0] >= 0) + (idx[1] >= 0) + (idx[2] >= 0);
     if (present != 0 && present != 3)
-      throw InputError(path, where, std::string("only some of ") + what + " (give all three or none)");
+      throw InputError(path, where,
+                       std::string("only some of ") + what + " (give all three or none)");
   };
   allOrNone(l.normal, "nx, ny, nz");
   allOrNone(l.color, "red, green, blue");
@@ -72,8 +76,9 @@ Layout layoutOf(const std::string& path, const PlyElement& vertex) {
     if (c >= 0) {
       const Type t = vertex.properties[size_t(c)].type;
       if (integral(t) && colorMaximum(t) == 0.0)
-        throw InputError(path, where, vertex.properties[size_t(c)].name +
-                                          ": a colour is uchar, ushort, float or double");
+        throw InputError(
+            path, where,
+            vertex.properties[size_t(c)].name + ": a colour is uchar, ushort, float or double");
     }
   return l;
 }
@@ -149,8 +154,10 @@ std::string store(PlyPoints& out, size_t i, const double* v, const Layout& l,
 bool plyIsPointCloud(const PlyHeader& header) {
   bool vertices = false;
   for (const PlyElement& e : header.elements) {
-    if (e.name == "vertex") vertices = true;
-    else if (e.count > 0) return false;
+    if (e.name == "vertex")
+      vertices = true;
+    else if (e.count > 0)
+      return false;
   }
   return vertices;
 }
@@ -200,22 +207,24 @@ PlyPoints readPlyPoints(const std::string& path) {
     // whatever order the threads run in.
     std::atomic<size_t> firstBad{std::numeric_limits<size_t>::max()};
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data() + h.bodyOffset);
-    parallelFor(tbb::blocked_range<size_t>(0, count, 4096), [&](const tbb::blocked_range<size_t>& r) {
-      const size_t n = r.size();
-      std::vector<double> columns(props * n), v(props);
-      for (size_t p = 0; p < props; ++p)
-        decodeColumn(vertex.properties[p].type, data + r.begin() * stride + offset[p], stride, swap,
-                     n, &columns[p * n]);
-      for (size_t j = 0; j < n; ++j) {
-        for (size_t p = 0; p < props; ++p) v[p] = columns[p * n + j];
-        if (const std::string what = store(out, r.begin() + j, v.data(), l, vertex); !what.empty()) {
-          size_t seen = firstBad.load();
-          while (r.begin() + j < seen && !firstBad.compare_exchange_weak(seen, r.begin() + j)) {
+    parallelFor(
+        tbb::blocked_range<size_t>(0, count, 4096), [&](const tbb::blocked_range<size_t>& r) {
+          const size_t n = r.size();
+          std::vector<double> columns(props * n), v(props);
+          for (size_t p = 0; p < props; ++p)
+            decodeColumn(vertex.properties[p].type, data + r.begin() * stride + offset[p], stride,
+                         swap, n, &columns[p * n]);
+          for (size_t j = 0; j < n; ++j) {
+            for (size_t p = 0; p < props; ++p) v[p] = columns[p * n + j];
+            if (const std::string what = store(out, r.begin() + j, v.data(), l, vertex);
+                !what.empty()) {
+              size_t seen = firstBad.load();
+              while (r.begin() + j < seen && !firstBad.compare_exchange_weak(seen, r.begin() + j)) {
+              }
+              return;
+            }
           }
-          return;
-        }
-      }
-    });
+        });
     if (const size_t bad = firstBad.load(); bad != std::numeric_limits<size_t>::max()) {
       std::vector<double> v(props);
       for (size_t p = 0; p < props; ++p)
@@ -257,7 +266,8 @@ PlyPoints readPlyPoints(const std::string& path) {
         ok = r.ec == std::errc() && r.ptr == c;
       }
       if (!ok)
-        fail(i, vertex.properties[p].name + ": '" + std::string(word, size_t(c - word)).substr(0, 32) +
+        fail(i, vertex.properties[p].name + ": '" +
+                    std::string(word, size_t(c - word)).substr(0, 32) +
                     "' is not a valid value of its type");
     }
     while (c < end && (*c == ' ' || *c == '\t' || *c == '\r')) ++c;

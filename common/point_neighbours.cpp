@@ -39,17 +39,16 @@ void forEachNeighbourhood(const PointCloud& cloud, const F& f) {
   const Points points{cloud.positions};
   Tree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   tree.buildIndex();
-  parallelFor(tbb::blocked_range<size_t>(0, cloud.size(), 4096),
-              [&](const tbb::blocked_range<size_t>& r) {
-                std::array<uint32_t, kNeighbours> index;
-                std::array<double, kNeighbours> d2;
-                for (size_t i = r.begin(); i != r.end(); ++i) {
-                  const double q[3] = {cloud.positions[i].x, cloud.positions[i].y,
-                                       cloud.positions[i].z};
-                  tree.knnSearch(q, kNeighbours, index.data(), d2.data());
-                  f(i, index, d2);
-                }
-              });
+  parallelFor(
+      tbb::blocked_range<size_t>(0, cloud.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+        std::array<uint32_t, kNeighbours> index;
+        std::array<double, kNeighbours> d2;
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+          const double q[3] = {cloud.positions[i].x, cloud.positions[i].y, cloud.positions[i].z};
+          tree.knnSearch(q, kNeighbours, index.data(), d2.data());
+          f(i, index, d2);
+        }
+      });
 }
 
 }  // namespace
@@ -67,7 +66,8 @@ void estimateRadii(PointCloud& cloud) {
   if (positive.empty())
     throw InputError(cloud.name, "radius",
                      "cannot estimate radii: every point shares its position with 8 others");
-  std::nth_element(positive.begin(), positive.begin() + ptrdiff_t(positive.size() / 2), positive.end());
+  std::nth_element(positive.begin(), positive.begin() + ptrdiff_t(positive.size() / 2),
+                   positive.end());
   const float median = positive[positive.size() / 2];
   for (float& r : radii)
     if (r == 0.0f) r = median;

@@ -44,6 +44,25 @@ void RayScene::addMesh(unsigned id, std::span<const glm::vec3> vertices,
   rtcReleaseGeometry(g);
 }
 
+void RayScene::addDiscs(unsigned id, std::span<const glm::vec3> centres,
+                        std::span<const glm::vec3> normals, std::span<const float> radii) {
+  RTCGeometry g = rtcNewGeometry(handles_->device, RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT);
+  auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+      g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float), centres.size()));
+  auto* n = static_cast<float*>(rtcSetNewGeometryBuffer(
+      g, RTC_BUFFER_TYPE_NORMAL, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), centres.size()));
+  for (size_t i = 0; i < centres.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      v[4 * i + size_t(c)] = centres[i][c];
+      n[3 * i + size_t(c)] = normals[i][c];
+    }
+    v[4 * i + 3] = radii[i];
+  }
+  rtcCommitGeometry(g);
+  rtcAttachGeometryByID(handles_->scene, g, id);
+  rtcReleaseGeometry(g);
+}
+
 void RayScene::addTriangleSoup(unsigned id, std::span<const glm::vec3> vertices) {
   std::vector<glm::uvec3> triangles(vertices.size() / 3);
   for (size_t t = 0; t < triangles.size(); ++t)

@@ -1,5 +1,6 @@
-// An Embree scene of triangle meshes for ray queries, the one place voxgi talks to Embree: the CPU
-// gbuffer stage casts its pixel rays through it and the reference path tracer its paths.
+// An Embree scene of triangle meshes and point-cloud discs for ray queries, the one place voxgi
+// talks to Embree: the CPU gbuffer stage casts its pixel rays through it and the reference path
+// tracer its paths.
 #pragma once
 
 #include <span>
@@ -20,6 +21,10 @@ class RayScene {
   // Adds geometry `id` (ids 0, 1, ... in order): triangles indexing `vertices`. Then commit().
   void addMesh(unsigned id, std::span<const glm::vec3> vertices,
                std::span<const glm::uvec3> triangles);
+  // Adds geometry `id` of oriented discs (primitive i: centre, unit normal, radius), Embree's
+  // RTC_GEOMETRY_TYPE_ORIENTED_DISC_POINT: a ray meets a disc from either side.
+  void addDiscs(unsigned id, std::span<const glm::vec3> centres, std::span<const glm::vec3> normals,
+                std::span<const float> radii);
   // Adds geometry `id` of triangles t = vertices 3t, 3t + 1, 3t + 2 (primitive t).
   void addTriangleSoup(unsigned id, std::span<const glm::vec3> vertices);
   void commit();

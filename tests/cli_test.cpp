@@ -46,6 +46,23 @@ TEST(Cli, BareMeshAndAutoBackend) {
   EXPECT_EQ(r.code, 0) << r.output;
 }
 
+// voxgi sample writes a point cloud the loader reads back, path traces it, and refuses a bad
+// gradient with one line.
+TEST(Cli, SampleWritesAPointCloudThatRenders) {
+  const std::string cloud = testTempDir() + "box.ply";
+  CommandResult r = voxgi("sample " + sourcePath("scenes/cornell_box.json") +
+                          " --points 20000 --noise 0.5 --density-gradient y:0.5 --out " + cloud);
+  ASSERT_EQ(r.code, 0) << r.output;
+  r = voxgi("render " + cloud + " --technique path --spp 1 --image 16 --out " + testTempDir() +
+            "box.exr");
+  EXPECT_EQ(r.code, 0) << r.output;
+  r = voxgi("sample " + sourcePath("scenes/cornell_box.json") +
+            " --points 10 --density-gradient w:2 --out " + cloud);
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("--density-gradient: expected AXIS:RATIO"), std::string::npos)
+      << r.output;
+}
+
 TEST(Cli, BadInputExitsTwoWithOneLine) {
   const std::string scene = sourcePath("scenes/cornell_box.json");
   for (const std::string& args : std::vector<std::string>{

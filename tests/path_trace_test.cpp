@@ -61,6 +61,46 @@ TEST(PathTrace, DiffusePlaneUnderUniformSkyIsAlbedoTimesSky) {
   }
 }
 
+// A point cloud (oriented discs) in the plane y = 0, beside a mesh in the plane: each reflects
+// its own albedo (the points' colour, the mesh's material) times the sky.
+TEST(PathTrace, PointCloudDiscsBesideAMeshReflectTheirOwnAlbedoTimesSky) {
+  Material m;
+  m.albedo = glm::vec3(0.5f, 0.25f, 0.8f);
+  // The mesh covers x < 0 (quad's coordinates are z, x), just below the discs' plane so that the
+  // first column of discs, reaching 0.05 past x = 0, covers it rather than fights it.
+  Scene scene = makeScene(quad(1, -1e-3, {-1e3, -1e3}, {1e3, 0.0}), unitGrid(8), m);
+  PointCloud cloud;
+  cloud.name = "plane cloud";
+  const glm::vec3 colour(0.9f, 0.3f, 0.1f);
+  for (int k = -40; k <= 40; ++k)
+    for (int i = 0; i <= 40; ++i) {
+      cloud.positions.push_back({0.05 * i, 0.0, 0.05 * k});
+      cloud.normals.push_back({0.0f, 1.0f, 0.0f});
+      cloud.radii.push_back(0.05f);  // overlapping: no gaps
+      cloud.colors.push_back(colour);
+    }
+  scene.pointClouds.push_back(cloud);
+  scene.background = {1.0f, 2.0f, 0.5f};
+  scene = withCamera(scene, {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, 60.0, 8);
+  PathTraceOptions o;
+  o.spp = 4;
+  o.bounces = 1;
+  const auto r = pathTrace(scene, o);
+  // Every pixel is the cloud's value, the mesh's, or a mix of them (a pixel across the edge).
+  const glm::vec3 a = colour * scene.background, b = m.albedo * scene.background;
+  int points = 0, mesh = 0;
+  for (const auto& p : r.image.pixels) {
+    const float t = (p.x - b.x) / (a.x - b.x);
+    ASSERT_GE(t, -1e-5f);
+    ASSERT_LE(t, 1.0f + 1e-5f);
+    for (int c = 0; c < 3; ++c) ASSERT_NEAR(p[c], b[c] + t * (a[c] - b[c]), 1e-5);
+    points += t > 1.0f - 1e-5f;
+    mesh += t < 1e-5f;
+  }
+  EXPECT_GT(points, 16);
+  EXPECT_GT(mesh, 16);
+}
+
 TEST(PathTrace, PointLightOverAPlaneFollowsTheCosineOverDistanceSquaredLaw) {
   Material m;
   m.albedo = glm::vec3(0.6f);

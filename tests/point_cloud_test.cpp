@@ -7,11 +7,13 @@
 #include <random>
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include "common/error.h"
 #include "common/point_cloud_ply.h"
 #include "common/point_neighbours.h"
 #include "common/scene_load.h"
+#include "common/surface_sampling.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {
@@ -64,10 +66,9 @@ std::string writeText(const std::string& name, const std::string& text) {
   return testTempDir() + name;
 }
 
-const std::vector<Prop> kFull = {{"x", "double"}, {"y", "float"},  {"z", "int"},
-                                 {"nx", "float"}, {"ny", "float"}, {"nz", "float"},
-                                 {"red", "uchar"}, {"green", "uchar"}, {"blue", "uchar"},
-                                 {"radius", "float"}};
+const std::vector<Prop> kFull = {
+    {"x", "double"}, {"y", "float"},   {"z", "int"},       {"nx", "float"},   {"ny", "float"},
+    {"nz", "float"}, {"red", "uchar"}, {"green", "uchar"}, {"blue", "uchar"}, {"radius", "float"}};
 const std::vector<std::vector<double>> kRows = {{0.5, 1.25, 2, 0, 0, 3, 255, 0, 51, 0.125},
                                                 {-1, 0, 7, 1, 1, 0, 10, 20, 30, 0.5}};
 
@@ -86,11 +87,14 @@ TEST(PointCloudPly, AsciiAndBothBinaryOrdersReadTheSameValues) {
 }
 
 TEST(PointCloudPly, OptionalPropertiesStayEmptyAndUshortColoursScaleBy65535) {
-  const PlyPoints p = readPlyPoints(writePly(
-      "ushort.ply", "binary_little_endian",
-      {{"x", "float"}, {"y", "float"}, {"z", "float"}, {"red", "ushort"}, {"green", "ushort"},
-       {"blue", "ushort"}},
-      {{1, 2, 3, 65535, 0, 13107}}));
+  const PlyPoints p = readPlyPoints(writePly("ushort.ply", "binary_little_endian",
+                                             {{"x", "float"},
+                                              {"y", "float"},
+                                              {"z", "float"},
+                                              {"red", "ushort"},
+                                              {"green", "ushort"},
+                                              {"blue", "ushort"}},
+                                             {{1, 2, 3, 65535, 0, 13107}}));
   EXPECT_TRUE(p.normals.empty());
   EXPECT_TRUE(p.radii.empty());
   EXPECT_EQ(p.colors[0], glm::vec3(1.0f, 0.0f, 0.2f));
@@ -118,13 +122,21 @@ TEST(PointCloudPly, MalformedFilesAreOneErrorNamingTheFileAndVertex) {
                 {{"x", "float"}, {"y", "float"}, {"z", "float"}, {"nx", "float"}}, {{0, 0, 0, 1}}),
        "element vertex: only some of nx, ny, nz"},
       {writePly("float_colour.ply", "ascii",
-                {{"x", "float"}, {"y", "float"}, {"z", "float"}, {"red", "float"},
-                 {"green", "float"}, {"blue", "float"}},
+                {{"x", "float"},
+                 {"y", "float"},
+                 {"z", "float"},
+                 {"red", "float"},
+                 {"green", "float"},
+                 {"blue", "float"}},
                 {{0, 0, 0, 0.5, 2, 0}}),
        "vertex 0: green: a float colour must be in [0, 1]"},
       {writePly("int_colour.ply", "ascii",
-                {{"x", "float"}, {"y", "float"}, {"z", "float"}, {"red", "int"},
-                 {"green", "int"}, {"blue", "int"}},
+                {{"x", "float"},
+                 {"y", "float"},
+                 {"z", "float"},
+                 {"red", "int"},
+                 {"green", "int"},
+                 {"blue", "int"}},
                 {{0, 0, 0, 1, 2, 0}}),
        "red: a colour is uchar, ushort, float or double"},
       {writePly("negative_radius.ply", "binary_little_endian",
@@ -166,13 +178,15 @@ TEST(PointCloudPly, CountsThatDoNotMatchTheFileSizeAreRefused) {
       << "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\n"
          "property float y\nproperty float z\nend_header\n"
       << std::string(25, '\0');
-  std::ofstream(dir + "extra_ascii.ply") << "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
-                                            "property float y\nproperty float z\nend_header\n0 0 0\n1 1 1\n";
+  std::ofstream(dir + "extra_ascii.ply")
+      << "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+         "property float y\nproperty float z\nend_header\n0 0 0\n1 1 1\n";
   const struct {
     std::string file, says;
-  } cases[] = {{dir + "billion.ply", "header: the declared elements need at least 12000000000"},
-               {dir + "extra.ply", "element vertex: 2 vertices of 12 bytes take 24 bytes, the file has 25"},
-               {dir + "extra_ascii.ply", "body: data after the last vertex"}};
+  } cases[] = {
+      {dir + "billion.ply", "header: the declared elements need at least 12000000000"},
+      {dir + "extra.ply", "element vertex: 2 vertices of 12 bytes take 24 bytes, the file has 25"},
+      {dir + "extra_ascii.ply", "body: data after the last vertex"}};
   for (const auto& c : cases) {
     try {
       readPlyPoints(c.file);
@@ -199,7 +213,7 @@ TEST(PointCloudScene, TransformColoursAndMaterialFromTheSceneFile) {
   EXPECT_EQ(a.positions[0], glm::dvec3(2.0, 1.25, 2.0));  // scaled in x, then moved
   // The normal (1, 1, 0)/sqrt 2 under scale (2, 1, 1): the inverse transpose, (1/2, 1, 0).
   EXPECT_NEAR(a.normals[1].x, 0.5 / std::sqrt(1.25), 1e-6);
-  EXPECT_NEAR(a.radii[0], 0.125 * std::cbrt(2.0), 1e-7);  // the mean scale
+  EXPECT_NEAR(a.radii[0], 0.125 * std::cbrt(2.0), 1e-7);                   // the mean scale
   EXPECT_NEAR(a.colors[0].z, std::pow((0.2 + 0.055) / 1.055, 2.4), 1e-6);  // sRGB decoded
   EXPECT_EQ(s.pointClouds[1].colors[0], glm::vec3(1.0f, 0.0f, 0.2f));
   EXPECT_TRUE(s.pointClouds[2].colors.empty());
@@ -285,6 +299,50 @@ TEST(PointNeighbours, SphereNormalsFaceAnInsideViewpointAndDuplicatesTakeTheMedi
     ASSERT_GT(cloud.radii[i], 0.0f);
     ASSERT_LT(glm::dot(glm::dvec3(cloud.normals[i]), cloud.positions[i]), -0.98) << i;
   }
+}
+
+// Sampling a mesh: every point on its triangle's plane with its normal, colours from the material,
+// discs twice the area per point; the same points whatever the thread count; a density gradient
+// puts the expected share of points in each half.
+TEST(SurfaceSampling, PointsLieOnTheSurfaceWithAreasAndDensityAsAsked) {
+  Material m;
+  m.albedo = glm::vec3(0.25f, 0.5f, 0.75f);
+  Scene scene = makeScene(quad(1, 2.0, {0.0, 0.0}, {4.0, 1.0}), unitGrid(8, 8.0), m);
+  SurfaceSampling sampling;
+  sampling.points = 20000;
+  const PointCloud a = sampleSurfaces(scene, sampling);
+  ASSERT_EQ(a.size(), 20000u);
+  double discs = 0.0;
+  for (size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a.positions[i].y, 2.0);
+    ASSERT_NEAR(std::abs(a.normals[i].y), 1.0f, 1e-6f);
+    ASSERT_EQ(a.colors[i], m.albedo);
+    discs += 3.14159265358979 * double(a.radii[i]) * a.radii[i];
+  }
+  EXPECT_NEAR(discs, 2.0 * 4.0, 1e-6 * 8.0);  // twice the quad's area
+  {
+    tbb::global_control one(tbb::global_control::max_allowed_parallelism, 1);
+    const PointCloud b = sampleSurfaces(scene, sampling);
+    EXPECT_EQ(a.positions, b.positions);
+  }
+  // Density from 1 at z = 0 to 3 at z = 4 (the quad spans z in [0, 4]): the upper half holds
+  // (2 + 3) / (1 + 2 + 2 + 3) = 5/8 of the points; binomial sigma is 0.0034.
+  sampling.gradientAxis = 2;
+  sampling.gradientRatio = 3.0;
+  sampling.noise = 0.01;
+  const PointCloud c = sampleSurfaces(scene, sampling);
+  size_t upper = 0;
+  double offset2 = 0.0;
+  for (size_t i = 0; i < c.size(); ++i) {
+    upper += c.positions[i].z > 2.0;
+    offset2 += (c.positions[i].y - 2.0) * (c.positions[i].y - 2.0);
+  }
+  EXPECT_NEAR(double(upper) / double(c.size()), 5.0 / 8.0, 0.02);
+  EXPECT_NEAR(std::sqrt(offset2 / double(c.size())), 0.01, 0.0005);  // the noise's sigma
+  // The radii follow the density: pi r^2 sums to twice the area still.
+  double cDiscs = 0.0;
+  for (const float r : c.radii) cDiscs += 3.14159265358979 * double(r) * r;
+  EXPECT_NEAR(cDiscs, 8.0, 0.2);
 }
 
 }  // namespace

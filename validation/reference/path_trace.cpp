@@ -7,6 +7,7 @@
 #include <numbers>
 #include <vector>
 
+#include "common/counter_random.h"
 #include "common/memory.h"
 #include "common/parallel.h"
 #include "common/ray_scene.h"
@@ -18,21 +19,8 @@ using glm::dvec3;
 using glm::vec3;
 constexpr float kPi = std::numbers::pi_v<float>;
 
-// splitmix64 finaliser: the counter-based hash behind every random number.
-uint64_t mix(uint64_t z) {
-  z += 0x9e3779b97f4a7c15ull;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-  return z ^ (z >> 31);
-}
-
-// Random numbers of one (pixel, sample): dimension d is the d-th output of SplitMix64 seeded with
-// key = hash(seed, pixel, sample), independent of threads. One finaliser per number.
-struct Sampler {
-  uint64_t key;
-  uint64_t dimension = 0;
-  float next() { return float(mix(key + 0x9e3779b97f4a7c15ull * ++dimension) >> 40) * 0x1p-24f; }
-};
+// Random numbers of one (pixel, sample): key = hash(seed, pixel, sample), independent of threads.
+using Sampler = CounterRandom;
 
 float luminance(vec3 c) {
   return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
@@ -61,6 +49,17 @@ struct Emitter {
   vec3 p0, e1, e2, normal, emission;
   float area;
 };
+
+// The reflectance and emission at a hit: its material's, with a point's own colour as albedo.
+struct Shading {
+  vec3 albedo, specular, emission;
+  float shininess;
+  bool emissive() const { return maxComponent(emission) > 0.0f; }
+};
+
+Shading shadingOf(const Material& m) {
+  return {m.albedo, m.specular, m.emission, m.shininess};
+}
 
 // Everything the tracer sees is relative to the centre of the scene's bounds, subtracted in double
 // before anything becomes float, so that a scene 1e12 units from the origin renders as it does at
@@ -107,6 +106,13 @@ struct Setup {
         }
       }
     }
+    // Point clouds as discs, geometry ids after the meshes'.
+    for (size_t c = 0; c < scene.pointClouds.size(); ++c) {
+      const PointCloud& cloud = scene.pointClouds[c];
+      std::vector<vec3> centres(cloud.size());
+      for (size_t i = 0; i < cloud.size(); ++i) centres[i] = local(cloud.positions[i]);
+      rays.addDiscs(unsigned(scene.meshes.size() + c), centres, cloud.normals, cloud.radii);
+    }
     rays.commit();
   }
 };
@@ -137,15 +143,19 @@ class Tracer {
     float lastPdf = 0.0f;       // solid-angle pdf of the BSDF sample that found `hit`
     vec3 lastPoint = o;
     for (int depth = 0;; ++depth) {
-      const Material& m = scene_.materials[scene_.meshes[hit.geometry].material];
+      vec3 ng;
+      const Shading m = shadingAt(hit, ng);
       const vec3 x = o + hit.t * d;
-      const vec3 ng = s_.normals[hit.geometry][hit.primitive];
       if (m.emissive() && glm::dot(ng, -d) > 0.0f) {  // emitters are one-sided (front face)
         if (countEmission) {
           result += throughput * m.emission;
         } else {  // found by BSDF sampling: weigh against light sampling (power heuristic)
           const float d2 = glm::dot(x - lastPoint, x - lastPoint);
-          const float lightPdf = luminance(m.emission) / s_.emitterWeight * d2 / glm::dot(ng, -d);
+          // Emissive points are not light-sampled: BSDF sampling alone finds them.
+          const float lightPdf =
+              hit.geometry < scene_.meshes.size()
+                  ? luminance(m.emission) / s_.emitterWeight * d2 / glm::dot(ng, -d)
+                  : 0.0f;
           result += throughput * m.emission * powerWeight(lastPdf, lightPdf);
         }
       }
@@ -186,7 +196,21 @@ class Tracer {
  private:
   static float powerWeight(float a, float b) { return a * a / (a * a + b * b); }
 
-  vec3 evalBsdf(const Material& m, vec3 n, vec3 wo, vec3 wi) const {
+  // The shading of a hit and its unit normal: a triangle's right-hand normal, or a point's.
+  Shading shadingAt(const RayScene::Hit& hit, vec3& normal) const {
+    const size_t meshes = scene_.meshes.size();
+    if (hit.geometry < meshes) {
+      normal = s_.normals[hit.geometry][hit.primitive];
+      return shadingOf(scene_.materials[scene_.meshes[hit.geometry].material]);
+    }
+    const PointCloud& cloud = scene_.pointClouds[hit.geometry - meshes];
+    normal = cloud.normals[hit.primitive];
+    Shading s = shadingOf(scene_.materials[cloud.material]);
+    if (!cloud.colors.empty()) s.albedo = cloud.colors[hit.primitive];
+    return s;
+  }
+
+  vec3 evalBsdf(const Shading& m, vec3 n, vec3 wo, vec3 wi) const {
     if (glm::dot(n, wi) <= 0.0f) return vec3(0.0f);
     vec3 f = m.albedo / kPi;
     if (m.shininess > 0.0f && maxComponent(m.specular) > 0.0f) {
@@ -197,7 +221,7 @@ class Tracer {
     return f;
   }
 
-  float bsdfPdf(const Material& m, vec3 n, vec3 wo, vec3 wi) const {
+  float bsdfPdf(const Shading& m, vec3 n, vec3 wo, vec3 wi) const {
     const float cosTheta = glm::dot(n, wi);
     if (cosTheta <= 0.0f) return 0.0f;
     const float ps = specularProbability(m);
@@ -210,13 +234,13 @@ class Tracer {
     return pdf;
   }
 
-  static float specularProbability(const Material& m) {
+  static float specularProbability(const Shading& m) {
     if (m.shininess <= 0.0f) return 0.0f;
     const float s = luminance(m.specular), d = luminance(m.albedo);
     return s + d > 0.0f ? s / (s + d) : 0.0f;
   }
 
-  vec3 sampleBsdf(const Material& m, vec3 n, vec3 wo, Sampler& rng, vec3& wi, float& pdf) const {
+  vec3 sampleBsdf(const Shading& m, vec3 n, vec3 wo, Sampler& rng, vec3& wi, float& pdf) const {
     const float choice = rng.next(), u1 = rng.next(), u2 = rng.next();
     if (choice < specularProbability(m)) {  // Phong lobe around the mirror direction
       const vec3 r = 2.0f * glm::dot(n, wo) * n - wo;
@@ -236,7 +260,7 @@ class Tracer {
 
   // Next-event estimation: one sample of the emissive triangles (MIS-weighted) plus every
   // point, spot and directional light.
-  vec3 directLight(vec3 x, vec3 n, vec3 wo, const Material& m, Sampler& rng) {
+  vec3 directLight(vec3 x, vec3 n, vec3 wo, const Shading& m, Sampler& rng) {
     vec3 sum(0.0f);
     const float pick = rng.next(), u1 = rng.next(), u2 = rng.next();
     if (!s_.emitters.empty()) {
@@ -323,7 +347,8 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
       const uint64_t pixel = uint64_t(y) * uint64_t(w) + uint64_t(x);
       glm::dvec3 sum(0.0), sum2(0.0);
       for (int s = 0; s < options.spp; ++s) {
-        Sampler rng{mix(options.seed ^ mix(pixel ^ mix(uint64_t(s) + 0x632be59bd9b4e019ull)))};
+        Sampler rng{
+            mix64(options.seed ^ mix64(pixel ^ mix64(uint64_t(s) + 0x632be59bd9b4e019ull)))};
         const float px = (2.0f * (float(x) + rng.next()) / float(w) - 1.0f) * tanHalf * aspect;
         const float py = (1.0f - 2.0f * (float(y) + rng.next()) / float(h)) * tanHalf;
         const vec3 dir = glm::normalize(forward + px * right + py * up);

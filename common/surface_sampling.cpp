@@ -1,0 +1,124 @@
+#include "common/surface_sampling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numbers>
+#include <sstream>
+
+#include <tbb/blocked_range.h>
+
+#include "common/counter_random.h"
+#include "common/error.h"
+#include "common/image_io.h"
+#include "common/output_file.h"
+#include "common/parallel.h"
+
+namespace voxgi {
+namespace {
+
+struct Triangle {
+  glm::dvec3 a, ab, ac;
+  glm::vec3 normal;
+  uint32_t material;
+};
+
+}  // namespace
+
+PointCloud sampleSurfaces(const Scene& scene, const SurfaceSampling& sampling) {
+  std::vector<Triangle> triangles;
+  std::vector<double> cdf;  // running sum of the areas
+  double area = 0.0;
+  for (const Mesh& m : scene.meshes) {
+    if (scene.materials[m.material].emissive()) continue;
+    for (const glm::uvec3& t : m.triangles) {
+      const glm::dvec3 a = m.positions[t.x], ab = m.positions[t.y] - a, ac = m.positions[t.z] - a;
+      const glm::dvec3 n = glm::cross(ab, ac);
+      const double twice = glm::length(n);
+      if (!(twice > 0.0)) continue;
+      triangles.push_back({a, ab, ac, glm::vec3(n / twice), m.material});
+      area += 0.5 * twice;
+      cdf.push_back(area);
+    }
+  }
+  if (triangles.empty())
+    throw InputError(scene.file, "meshes", "no triangle with area and without emission to sample");
+  const auto [lo, hi] = scene.bounds();
+  // Density w(p) in [min(1, ratio), max(1, ratio)]; a candidate is kept with probability w / max.
+  const auto density = [&](const glm::dvec3& p) {
+    if (sampling.gradientAxis < 0) return 1.0;
+    const int a = sampling.gradientAxis;
+    const double span = hi[a] - lo[a];
+    const double f = span > 0.0 ? std::clamp((p[a] - lo[a]) / span, 0.0, 1.0) : 0.0;
+    return 1.0 + f * (sampling.gradientRatio - 1.0);
+  };
+  const double wMax = std::max(1.0, sampling.gradientRatio);
+  // The mean density over the surface, to turn a point's density into its share of the area.
+  double weighted = 0.0;
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const Triangle& tri = triangles[t];
+    weighted += (cdf[t] - (t ? cdf[t - 1] : 0.0)) * density(tri.a + (tri.ab + tri.ac) / 3.0);
+  }
+  const double meanDensity = weighted / area;
+
+  PointCloud cloud;
+  cloud.name = scene.file + " (sampled)";
+  const size_t n = sampling.points;
+  cloud.positions.resize(n);
+  cloud.normals.resize(n);
+  cloud.colors.resize(n);
+  cloud.radii.resize(n);
+  parallelFor(tbb::blocked_range<size_t>(0, n, 4096), [&](const tbb::blocked_range<size_t>& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i) {
+      CounterRandom rng{mix64(sampling.seed ^ mix64(i + 0x2545f4914f6cdd1dull))};
+      for (;;) {  // rejection by density; at most wMax / min(w) tries on average
+        const double u = rng.nextDouble() * area;
+        const size_t t = size_t(std::upper_bound(cdf.begin(), cdf.end(), u) - cdf.begin());
+        const Triangle& tri = triangles[std::min(t, triangles.size() - 1)];
+        const double s = std::sqrt(rng.nextDouble()), v = rng.nextDouble();
+        glm::dvec3 p = tri.a + tri.ab * (s * (1.0 - v)) + tri.ac * (s * v);
+        const double w = density(p);
+        if (rng.nextDouble() * wMax >= w) continue;
+        if (sampling.noise > 0.0) {  // Box-Muller
+          const double g = std::sqrt(-2.0 * std::log(1.0 - rng.nextDouble())) *
+                           std::cos(2.0 * std::numbers::pi * rng.nextDouble());
+          p += glm::dvec3(tri.normal) * (g * sampling.noise);
+        }
+        const double share = area / double(n) * meanDensity / w;  // area per point here
+        cloud.positions[i] = p;
+        cloud.normals[i] = tri.normal;
+        cloud.colors[i] = scene.materials[tri.material].albedo;
+        cloud.radii[i] = float(std::sqrt(2.0 * share / std::numbers::pi));
+        break;
+      }
+    }
+  });
+  return cloud;
+}
+
+void writePointCloudPly(const PointCloud& cloud, const std::string& path) {
+  std::ostringstream header;
+  header << "ply\nformat binary_little_endian 1.0\ncomment voxgi sample\nelement vertex "
+         << cloud.size()
+         << "\nproperty double x\nproperty double y\nproperty double z\nproperty float nx\n"
+            "property float ny\nproperty float nz\nproperty float red\nproperty float green\n"
+            "property float blue\nproperty float radius\nend_header\n";
+  constexpr size_t kRecord = 3 * 8 + 7 * 4;
+  std::string bytes = header.str();
+  const size_t start = bytes.size();
+  bytes.resize(start + cloud.size() * kRecord);
+  static_assert(std::endian::native == std::endian::little, "writes little-endian PLY natively");
+  parallelFor(size_t(0), cloud.size(), [&](size_t i) {
+    char* at = bytes.data() + start + i * kRecord;
+    const double p[3] = {cloud.positions[i].x, cloud.positions[i].y, cloud.positions[i].z};
+    const glm::vec3 l = cloud.colors.empty() ? glm::vec3(0.8f) : cloud.colors[i];
+    const glm::vec3 c(linearToSrgb(l.x), linearToSrgb(l.y), linearToSrgb(l.z));
+    const float rest[7] = {cloud.normals[i].x, cloud.normals[i].y, cloud.normals[i].z,
+                           c.x, c.y, c.z, cloud.radii[i]};
+    std::memcpy(at, p, sizeof p);
+    std::memcpy(at + sizeof p, rest, sizeof rest);
+  });
+  writeFileAtomically(path, bytes);
+}
+
+}  // namespace voxgi
