@@ -30,7 +30,9 @@ PointCloud sampleSurfaces(const Scene& scene, const SurfaceSampling& sampling) {
   std::vector<double> cdf;  // running sum of the areas
   double area = 0.0;
   for (const Mesh& m : scene.meshes) {
-    if (scene.materials[m.material].emissive()) continue;
+    if (sampling.material < 0 ? scene.materials[m.material].emissive()
+                              : m.material != uint32_t(sampling.material))
+      continue;
     for (const glm::uvec3& t : m.triangles) {
       const glm::dvec3 a = m.positions[t.x], ab = m.positions[t.y] - a, ac = m.positions[t.z] - a;
       const glm::dvec3 n = glm::cross(ab, ac);
@@ -63,6 +65,7 @@ PointCloud sampleSurfaces(const Scene& scene, const SurfaceSampling& sampling) {
 
   PointCloud cloud;
   cloud.name = scene.file + " (sampled)";
+  cloud.material = sampling.material >= 0 ? uint32_t(sampling.material) : 0u;
   const size_t n = sampling.points;
   cloud.positions.resize(n);
   cloud.normals.resize(n);
@@ -96,6 +99,18 @@ PointCloud sampleSurfaces(const Scene& scene, const SurfaceSampling& sampling) {
   return cloud;
 }
 
+double sampledArea(const Scene& scene, int material) {
+  double area = 0.0;
+  for (const Mesh& m : scene.meshes) {
+    if (material < 0 ? scene.materials[m.material].emissive() : m.material != uint32_t(material))
+      continue;
+    for (const glm::uvec3& t : m.triangles)
+      area += 0.5 * glm::length(glm::cross(m.positions[t.y] - m.positions[t.x],
+                                           m.positions[t.z] - m.positions[t.x]));
+  }
+  return area;
+}
+
 void writePointCloudPly(const PointCloud& cloud, const std::string& path) {
   std::ostringstream header;
   header << "ply\nformat binary_little_endian 1.0\ncomment voxgi sample\nelement vertex "
@@ -113,8 +128,8 @@ void writePointCloudPly(const PointCloud& cloud, const std::string& path) {
     const double p[3] = {cloud.positions[i].x, cloud.positions[i].y, cloud.positions[i].z};
     const glm::vec3 l = cloud.colors.empty() ? glm::vec3(0.8f) : cloud.colors[i];
     const glm::vec3 c(linearToSrgb(l.x), linearToSrgb(l.y), linearToSrgb(l.z));
-    const float rest[7] = {cloud.normals[i].x, cloud.normals[i].y, cloud.normals[i].z,
-                           c.x, c.y, c.z, cloud.radii[i]};
+    const float rest[7] = {
+        cloud.normals[i].x, cloud.normals[i].y, cloud.normals[i].z, c.x, c.y, c.z, cloud.radii[i]};
     std::memcpy(at, p, sizeof p);
     std::memcpy(at + sizeof p, rest, sizeof rest);
   });

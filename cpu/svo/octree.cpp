@@ -224,7 +224,7 @@ Octree buildOctree(std::span<const shared::SvoSample> samples, int depth) {
 }
 
 Words accumulateLeaves(const Octree& octree, std::span<const shared::SvoSample> samples,
-                       const std::string& source) {
+                       float scale, const std::string& source) {
   using namespace shared;
   Words sums(octree.leafTileCount() * 8 * kSumWords);
   std::atomic<bool> overflow{false};
@@ -239,22 +239,22 @@ Words accumulateLeaves(const Octree& octree, std::span<const shared::SvoSample> 
                       return std::atomic_ref<uint32_t>(v[c]).fetch_add(uint32_t(value),
                                                                        std::memory_order_relaxed);
                     };
-                    const int opacity = fixedRound(w, 1.0f);
+                    const int opacity = fixedRound(w, 1.0f, scale);
                     const auto before = int32_t(add(kSumOpacity, opacity));
                     if (before > std::numeric_limits<int32_t>::max() - opacity)
                       overflow.store(true, std::memory_order_relaxed);
                     for (int c = 0; c < 3; ++c) {
-                      add(kSumAlbedo + c, fixedRound(w, s.albedo[c]));
-                      add(kSumNormal + c, fixedRound(w, s.normal[c]));
-                      add(kSumEmission + c, fixedRound(w, s.emission[c]));
+                      add(kSumAlbedo + c, fixedRound(w, s.albedo[c], scale));
+                      add(kSumNormal + c, fixedRound(w, s.normal[c], scale));
+                      add(kSumEmission + c, fixedRound(w, s.emission[c], scale));
                     }
                   });
                 }
               });
   if (overflow.load())
     throw InputError(source, "svo.depth",
-                     "a leaf holds more than 32767 samples' opacity (2^31 fixed-point units); "
-                     "raise svo.depth or thin the point cloud");
+                     "a leaf's opacity passes 2^31 fixed-point units; raise svo.depth or thin "
+                     "the point cloud");
   return sums;
 }
 

@@ -37,10 +37,10 @@ struct Octree {
 Octree buildOctree(std::span<const shared::SvoSample> samples, int depth);
 
 // The fixed-point sums the samples add to the leaves (kSumWords per leaf voxel, 8 per leaf tile
-// in local-id order). Throws InputError naming `source` when a leaf's opacity sum would pass
-// 2^31 - 1 units.
+// in local-id order), in units of 1/scale. Throws InputError naming `source` when a leaf's
+// opacity sum would pass 2^31 - 1 units.
 Words accumulateLeaves(const Octree& octree, std::span<const shared::SvoSample> samples,
-                       const std::string& source);
+                       float scale, const std::string& source);
 
 // Bricks of the tiles of `level` (leaf tiles for level == depth): from `interior`, `components`
 // words per voxel, 8 voxels a tile in local-id order, to 27 texels a tile with the positive

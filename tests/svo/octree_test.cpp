@@ -191,7 +191,7 @@ TEST(SvoBuild, StructureDoesNotDependOnSampleOrderOrThreads) {
   const int depth = 6;
   auto samples = scatteredSamples(depth, 4000, 2);
   const Octree reference = cpu::svo::buildOctree(samples, depth);
-  const Words referenceSums = cpu::svo::accumulateLeaves(reference, samples, "test");
+  const Words referenceSums = cpu::svo::accumulateLeaves(reference, samples, 65536.0f, "test");
   std::mt19937 rng(5);
   for (int i = 0; i < 10; ++i) {
     std::shuffle(samples.begin(), samples.end(), rng);
@@ -200,7 +200,7 @@ TEST(SvoBuild, StructureDoesNotDependOnSampleOrderOrThreads) {
     ASSERT_EQ(o.nodes, reference.nodes);
     ASSERT_EQ(o.tiles, reference.tiles);
     ASSERT_EQ(o.leafTiles, reference.leafTiles);
-    ASSERT_EQ(cpu::svo::accumulateLeaves(o, samples, "test"), referenceSums);
+    ASSERT_EQ(cpu::svo::accumulateLeaves(o, samples, 65536.0f, "test"), referenceSums);
   }
 }
 
@@ -481,7 +481,7 @@ TEST(SvoSplat, UniformLatticeGivesTheSameOpacityInEveryInteriorLeaf) {
     for (float y = 0.125f; y < 8.0f; y += h)
       for (float x = 0.125f; x < 8.0f; x += h) samples.push_back(sampleAt({x, y, z}, h));
   const Octree o = cpu::svo::buildOctree(samples, depth);
-  const Words sums = cpu::svo::accumulateLeaves(o, samples, "test");
+  const Words sums = cpu::svo::accumulateLeaves(o, samples, 65536.0f, "test");
   ASSERT_EQ(o.leafTileCount(), 64u);
   for (size_t v = 0; v < sums.size() / shared::kSumWords; ++v)
     ASSERT_EQ(int32_t(sums[v * shared::kSumWords + shared::kSumOpacity]), 65536 * 4)
@@ -497,7 +497,7 @@ TEST(SvoSplat, PremultipliedAlbedoOverOpacityIsTheAlbedoWhateverTheOpacity) {
   for (int i = 0; i < 2000; ++i)
     samples.push_back(sampleAt({u(rng), u(rng), u(rng)}, ur(rng), rho));
   const Octree o = cpu::svo::buildOctree(samples, depth);
-  const Words sums = cpu::svo::accumulateLeaves(o, samples, "test");
+  const Words sums = cpu::svo::accumulateLeaves(o, samples, 65536.0f, "test");
   for (size_t v = 0; v < sums.size() / shared::kSumWords; ++v) {
     const auto opacity = double(int32_t(sums[v * shared::kSumWords]));
     if (opacity < 64) continue;  // rounding dominates below 2^-10 opacity
@@ -515,7 +515,7 @@ TEST(SvoSplat, OpacityOverflowIsRefusedNamingTheSource) {
   std::vector<SvoSample> samples(40000, sampleAt({1.5f, 1.5f, 1.5f}, 1.0f));
   const Octree o = cpu::svo::buildOctree(samples, 2);
   try {
-    cpu::svo::accumulateLeaves(o, samples, "cloud.ply");
+    cpu::svo::accumulateLeaves(o, samples, 65536.0f, "cloud.ply");
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("cloud.ply: svo.depth"), std::string::npos) << e.what();

@@ -19,10 +19,10 @@ struct SvoSample {
   vec4 emission;  // rgb: emission / the build's emission scale, in [0, 1]; w: 0
 };
 
-// Fixed point: a leaf's sums count units of 2^-16 of opacity x cell volume. A sample adds at most
-// r^2 <= 1 opacity (density 1/r times the cube's r^3), so a leaf overflows 2^31 - 1 units only past
-// 32767 samples; both backends check the opacity sum, which bounds every other sum's magnitude.
-const float kSvoWeightScale = 65536.0f;
+// Fixed point: a leaf's sums count units of 1/scale of opacity x cell volume, with a power-of-two
+// scale the host chooses for the samples (common/svo/samples.h) so that no leaf's sum can pass
+// 2^31 - 1; both backends still check the opacity sum, which bounds every other sum's magnitude
+// (|albedo|, |normal| and the scaled emission are at most 1).
 
 // Leaf sums per leaf voxel, in this order (`leaf_sums`, 8 voxels a leaf tile by local id).
 const int kSumOpacity = 0;   // units of opacity x volume
@@ -62,10 +62,10 @@ VOXGI_FN float splatWeight(SplatAxis x, SplatAxis y, SplatAxis z, float density,
   return w;
 }
 
-// round(weight x value) in units of 2^-16.
-VOXGI_FN int fixedRound(float weight, float value) {
+// round(weight x value x scale).
+VOXGI_FN int fixedRound(float weight, float value, float scale) {
   precise float x = weight * value;
-  precise float r = floor(x * kSvoWeightScale + 0.5f);
+  precise float r = floor(x * scale + 0.5f);
   return int(r);
 }
 

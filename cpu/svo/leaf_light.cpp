@@ -1,0 +1,182 @@
+#include "cpu/svo/leaf_light.h"
+
+#include <bit>
+
+#include "shaders/shared/vct/bounce_kernel.h"
+#include "shaders/shared/vct/mip_kernel.h"
+
+namespace voxgi::cpu::svo {
+namespace {
+
+using shared::kSvoNull;
+
+// The tiles of a node level in tile order: [first, first + count).
+std::pair<size_t, size_t> levelRange(const Octree& o, int level) {
+  return {o.levelStart[size_t(level)],
+          o.levelStart[size_t(level) + 1] - o.levelStart[size_t(level)]};
+}
+
+// A leaf's unpremultiplied value: sum / opacity (0 for an empty leaf).
+template <class V>
+V perOpacity(const V& premultiplied, float opacity) {
+  return opacity > 0.0f ? premultiplied / opacity : V(0.0f);
+}
+
+// The 8 children of one node for the shared mip kernel: leaves (one value, optionally weighted
+// per face by its normal) or a node level's six faces.
+struct Children {
+  const glm::vec4* values;
+  const glm::vec3* normals;  // leaves under FirstStep::ndf, else nullptr
+  bool leaves;
+  glm::vec4 childAt(int face, glm::ivec3 c) const {
+    const int local = c.x + 2 * c.y + 4 * c.z;
+    if (!leaves) return values[local * shared::kFaces + face];
+    const glm::vec4 v = values[local];
+    if (normals == nullptr || normals[local] == glm::vec3(0.0f)) return v;
+    const glm::vec3 n = glm::normalize(normals[local]);
+    const float along = face % 2 == 0 ? n[face / 2] : -n[face / 2];  // n . f
+    return v * ((1.0f - along) * 0.5f);
+  }
+};
+
+}  // namespace
+
+int64_t SvoVolumes::slot(int level, glm::ivec3 v) const {
+  const glm::uvec3 tile(v >> 1);
+  uint32_t t;
+  if (level == memoLevel && tile == memoTile) {
+    t = memoIndex;
+  } else {
+    t = shared::svoFindTile(*this, level, tile);
+    memoLevel = level, memoTile = tile, memoIndex = t;
+  }
+  if (t == kSvoNull) return -1;
+  const size_t first = level == octree.depth ? 0 : octree.levelStart[size_t(level)];
+  return int64_t((t - first) * 8 + shared::localId(glm::uvec3(v)));
+}
+
+float SvoVolumes::opacityAt(glm::ivec3 v) const {
+  const int64_t s = slot(octree.depth, v);
+  return s < 0 ? 0.0f : std::min(leaves.albedo[size_t(s)].a, 1.0f);
+}
+
+glm::vec3 SvoVolumes::albedoAt(glm::ivec3 v) const {
+  const int64_t s = slot(octree.depth, v);
+  if (s < 0) return glm::vec3(0.0f);
+  const glm::vec4 a = leaves.albedo[size_t(s)];
+  return perOpacity(glm::vec3(a), a.a);
+}
+
+glm::vec3 SvoVolumes::normalAt(glm::ivec3 v) const {
+  const int64_t s = slot(octree.depth, v);
+  return s < 0 ? glm::vec3(0.0f) : leaves.normal[size_t(s)];
+}
+
+glm::vec3 SvoVolumes::emissionAt(glm::ivec3 v) const {
+  const int64_t s = slot(octree.depth, v);
+  return s < 0 ? glm::vec3(0.0f)
+               : perOpacity(leaves.emission[size_t(s)], leaves.albedo[size_t(s)].a);
+}
+
+glm::vec4 SvoVolumes::directAt(glm::ivec3 v) const {
+  const int64_t s = slot(octree.depth, v);
+  return s < 0 ? glm::vec4(0.0f) : (*direct)[size_t(s)];
+}
+
+glm::vec4 SvoVolumes::pyramidAt(int level, int face, glm::ivec3 v) const {
+  const int tree = octree.depth - level;
+  const int64_t s = slot(tree, v);
+  if (s < 0) return glm::vec4(0.0f);
+  if (level == 0) return (*radiance)[size_t(s)];
+  return nodes->levels[size_t(tree)][size_t(s) * shared::kFaces + size_t(face)];
+}
+
+Leaves resolveLeaves(const Octree& octree, const Words& sums, float weightScale,
+                     float emissionScale) {
+  using namespace shared;
+  const size_t n = octree.leafTileCount() * 8;
+  Leaves out;
+  out.albedo.resize(n);
+  out.normal.resize(n);
+  out.emission.resize(n);
+  const float unit = 1.0f / weightScale;  // a power of two: exact
+  parallelFor(size_t(0), n, [&](size_t i) {
+    const auto at = [&](int c) { return float(int32_t(sums[i * kSumWords + size_t(c)])) * unit; };
+    out.albedo[i] =
+        glm::vec4(at(kSumAlbedo), at(kSumAlbedo + 1), at(kSumAlbedo + 2), at(kSumOpacity));
+    out.normal[i] = glm::vec3(at(kSumNormal), at(kSumNormal + 1), at(kSumNormal + 2));
+    out.emission[i] =
+        glm::vec3(at(kSumEmission), at(kSumEmission + 1), at(kSumEmission + 2)) * emissionScale;
+  });
+  return out;
+}
+
+LeafRadiance injectLeaves(const Octree& octree, const Leaves& leaves,
+                          const std::vector<shared::LightData>& lights,
+                          const shared::LightVoxelsParams& params) {
+  LeafRadiance out(octree.leafTileCount() * 8, glm::vec4(0.0f));
+  forEachRealLeaf(octree, [&](size_t slot, glm::ivec3 v) {
+    const SvoVolumes volumes{octree, leaves, nullptr, nullptr, nullptr, &lights};
+    out[slot] = shared::lightVoxel(volumes, v, params);
+  });
+  return out;
+}
+
+NodeLevels mipTree(const Octree& octree, const Leaves& leaves, const LeafRadiance& radiance,
+                   FirstStep first) {
+  NodeLevels out;
+  out.levels.resize(size_t(octree.depth));
+  for (int level = octree.depth - 1; level >= 1; --level) {
+    const auto [firstTile, count] = levelRange(octree, level);
+    std::vector<glm::vec4>& values = out.levels[size_t(level)];
+    values.assign(count * 8 * shared::kFaces, glm::vec4(0.0f));
+    const bool fromLeaves = level + 1 == octree.depth;
+    parallelFor(size_t(0), count, [&](size_t i) {
+      for (size_t local = 0; local < 8; ++local) {
+        const size_t node = (firstTile + i) * 8 + local;
+        const uint32_t child = octree.nodes[node * shared::kNodeWords + shared::kNodeChild];
+        if (child == kSvoNull) continue;
+        Children c{};
+        c.leaves = fromLeaves;
+        if (fromLeaves) {
+          c.values = &radiance[size_t(child) * 8];
+          c.normals = first == FirstStep::ndf ? &leaves.normal[size_t(child) * 8] : nullptr;
+        } else {
+          const size_t childRank = child - octree.levelStart[size_t(level) + 1];
+          c.values = &out.levels[size_t(level) + 1][childRank * 8 * shared::kFaces];
+        }
+        for (int face = 0; face < shared::kFaces; ++face)
+          values[(i * 8 + local) * shared::kFaces + size_t(face)] =
+              shared::mipAnisotropic(c, glm::ivec3(0), face);
+      }
+    });
+  }
+  return out;
+}
+
+LeafRadiance bounceOnce(const Octree& octree, const Leaves& leaves, const LeafRadiance& direct,
+                        const LeafRadiance& source, const std::vector<shared::ConeData>& cones,
+                        const shared::ConeTraceParams& params, FirstStep first,
+                        NodeLevels* pyramid) {
+  const NodeLevels mips = mipTree(octree, leaves, source, first);
+  LeafRadiance next(source.size(), glm::vec4(0.0f));
+  forEachRealLeaf(octree, [&](size_t slot, glm::ivec3 v) {
+    const SvoVolumes volumes{octree, leaves, &source, &mips, &direct, nullptr, &cones};
+    next[slot] = shared::bounceVoxel(volumes, v, params);
+  });
+  if (pyramid != nullptr) *pyramid = mips;
+  return next;
+}
+
+LeafRadiance propagateFrames(const Octree& octree, const Leaves& leaves, const LeafRadiance& direct,
+                             const std::vector<shared::ConeData>& cones,
+                             const shared::ConeTraceParams& params, int frames, bool clearEachFrame,
+                             FirstStep first, NodeLevels* pyramid) {
+  LeafRadiance current = direct;
+  for (int frame = 0; frame < frames; ++frame)
+    current = bounceOnce(octree, leaves, direct, clearEachFrame ? direct : current, cones, params,
+                         first, frame + 1 == frames ? pyramid : nullptr);
+  return current;
+}
+
+}  // namespace voxgi::cpu::svo

@@ -1,0 +1,116 @@
+// Light in the sparse voxel octree on the CPU (docs/svo.md): the leaves' resolved attributes, the
+// direct light injected into them, the anisotropic mipmap up the tree and the progressive bounces,
+// each through the dense technique's shared kernels (light_voxels_kernel.h, mip_kernel.h,
+// bounce_kernel.h) reading the octree through SvoVolumes.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "common/parallel.h"
+#include "cpu/svo/octree.h"
+#include "shaders/shared/svo/svo_layout.h"
+#include "shaders/shared/vct/cone_types.h"
+#include "shaders/shared/vct/light_voxels_kernel.h"
+
+namespace voxgi::cpu::svo {
+
+// Values of the leaves, 8 a leaf tile in local-id order (0 for the empty leaves of a tile).
+struct Leaves {
+  std::vector<glm::vec4> albedo;    // rgb: sum of weight x albedo; a: opacity (may pass 1)
+  std::vector<glm::vec3> normal;    // sum of weight x normal (the NDF, premultiplied)
+  std::vector<glm::vec3> emission;  // sum of weight x emission, radiance units
+};
+
+// The leaf sums in floats: sums / weightScale (times emissionScale for the emission).
+Leaves resolveLeaves(const Octree& octree, const Words& sums, float weightScale,
+                     float emissionScale);
+
+// Outgoing radiance per leaf, premultiplied by the leaf's opacity clamped to 1 (a: that opacity),
+// 8 a leaf tile; what pyramid level 0 holds.
+using LeafRadiance = std::vector<glm::vec4>;
+
+// The node levels' six faces (+x -x +y -y +z -z as cone travel directions, mip_kernel.h): levels[l]
+// for l = 1 .. depth-1 holds 8 nodes x 6 faces per node tile of the level, in tile order.
+struct NodeLevels {
+  std::vector<std::vector<glm::vec4>> levels;
+};
+
+// How the first step from the isotropic leaves weights a leaf per face: not at all (the dense
+// mip's compositing), or by (1 - n.f)/2 of its mean normal n and the face's travel direction f
+// ([Salm 2015, §4.4.2]; radiance leaving along -f).
+enum class FirstStep { plain, ndf };
+
+// What the shared kernels read: the leaves (pyramid level 0) and node levels (pyramid level m is
+// tree level depth - m), found by walking the tree (svo_layout.h) with the last tile remembered.
+// One per task: the memo is not shared.
+struct SvoVolumes {
+  const Octree& octree;
+  const Leaves& leaves;
+  const LeafRadiance* radiance = nullptr;  // pyramid level 0
+  const NodeLevels* nodes = nullptr;       // pyramid levels 1 ..
+  const LeafRadiance* direct = nullptr;    // the bounce's directAt
+  const std::vector<shared::LightData>* lights = nullptr;
+  const std::vector<shared::ConeData>* cones = nullptr;
+  mutable int memoLevel = -1;
+  mutable glm::uvec3 memoTile{0};
+  mutable uint32_t memoIndex = shared::kSvoNull;
+
+  uint svoNodeWord(uint i) const { return octree.nodes[i]; }
+  // The value index (tile slot x 8 + local id) of voxel v of tree level `level`; -1 if its tile
+  // does not exist.
+  int64_t slot(int level, glm::ivec3 v) const;
+  float opacityAt(glm::ivec3 v) const;
+  glm::vec3 albedoAt(glm::ivec3 v) const;
+  glm::vec3 normalAt(glm::ivec3 v) const;
+  glm::vec3 emissionAt(glm::ivec3 v) const;
+  glm::vec4 directAt(glm::ivec3 v) const;
+  glm::vec4 pyramidAt(int level, int face, glm::ivec3 v) const;
+  bool cellEmpty(int, glm::ivec3) const { return false; }
+  shared::LightData lightAt(int i) const { return (*lights)[size_t(i)]; }
+  shared::ConeData coneAt(int i) const { return (*cones)[size_t(i)]; }
+};
+
+// Calls f(leaf slot, leaf coordinate) for every leaf that holds samples, in parallel over tiles.
+template <class F>
+void forEachRealLeaf(const Octree& octree, const F& f) {
+  parallelFor(size_t(0), octree.leafTileCount(), [&](size_t t) {
+    const uint32_t key = octree.leafTiles[t * shared::kTileWords + shared::kTileKey];
+    const uint32_t parent = octree.leafTiles[t * shared::kTileWords + shared::kTileParent];
+    const uint32_t mask = (octree.nodes[size_t(parent) * shared::kNodeWords + shared::kNodeFlags] >>
+                           shared::kNodeChildShift) &
+                          255u;
+    for (uint32_t local = 0; local < 8; ++local)
+      if ((mask >> local) & 1u)
+        f(t * 8 + local, glm::ivec3(shared::mortonDecode((key << 3) | local)));
+  });
+}
+
+// Radiance the leaves send out before any bounce: emission plus the analytic lights' diffuse
+// reflection with the voxel visibility of light_voxels_kernel.h, premultiplied by the clamped
+// opacity.
+LeafRadiance injectLeaves(const Octree& octree, const Leaves& leaves,
+                          const std::vector<shared::LightData>& lights,
+                          const shared::LightVoxelsParams& params);
+
+// The six faces of every node, from the leaves' radiance up to the root tile.
+NodeLevels mipTree(const Octree& octree, const Leaves& leaves, const LeafRadiance& radiance,
+                   FirstStep first);
+
+// One gather at every real leaf (bounce_kernel.h): direct + albedo x the diffuse cones over the
+// mipmap of `source`; `pyramid` gets that mipmap.
+LeafRadiance bounceOnce(const Octree& octree, const Leaves& leaves, const LeafRadiance& direct,
+                        const LeafRadiance& source, const std::vector<shared::ConeData>& cones,
+                        const shared::ConeTraceParams& params, FirstStep first,
+                        NodeLevels* pyramid = nullptr);
+
+// `frames` progressive bounces [Salm 2015, §4.4.3]: each frame gathers, at every real leaf, the
+// diffuse cones over the previous frame's mipmap (bounce_kernel.h), so L_{t+1} = direct +
+// albedo x gather(L_t); with `clearEachFrame`, every frame gathers from `direct` alone (one
+// bounce). Returns the last frame's radiance; `pyramid` gets the mipmap it was gathered from.
+LeafRadiance propagateFrames(const Octree& octree, const Leaves& leaves, const LeafRadiance& direct,
+                             const std::vector<shared::ConeData>& cones,
+                             const shared::ConeTraceParams& params, int frames, bool clearEachFrame,
+                             FirstStep first, NodeLevels* pyramid = nullptr);
+
+}  // namespace voxgi::cpu::svo

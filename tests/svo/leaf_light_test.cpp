@@ -1,0 +1,304 @@
+// Light in the octree (docs/svo.md, tests S9-S11, S15, S17 and the dense oracle): the shared
+// kernels read through the tree give the dense pyramid's results on the same voxels; the
+// anisotropic mip's golden values; progressive bounces as the explicit sum; injection.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+
+#include "common/stage.h"
+#include "common/vct/cone_sets.h"
+#include "common/vct/kernel_params.h"
+#include "cpu/svo/leaf_light.h"
+#include "cpu/vct/cone_volumes.h"
+#include "shaders/shared/vct/bounce_kernel.h"
+#include "tests/test_scenes.h"
+
+namespace voxgi::test {
+namespace {
+
+using cpu::svo::FirstStep;
+using cpu::svo::LeafRadiance;
+using cpu::svo::Leaves;
+using cpu::svo::NodeLevels;
+using cpu::svo::Octree;
+using cpu::svo::SvoVolumes;
+
+// A sample filling leaf v exactly (RoI = the cell), so the tree's leaves are the given voxels.
+shared::SvoSample cellSample(glm::ivec3 v) {
+  shared::SvoSample s{};
+  s.position = glm::vec4(glm::vec3(v) + 0.5f, 1.0f);
+  s.albedo = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
+  s.normal = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
+  return s;
+}
+
+// Six inward-facing walls of a closed box, every one emitting (as tests/vct/bounce_test.cpp).
+Scene closedBox(int n) {
+  std::vector<Triangle> tris;
+  const double lo = 2.5 / n, hi = (n - 2.5) / n;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const Triangle& t : quad(axis, lo, {lo, lo}, {hi, hi})) tris.push_back(t);
+    for (Triangle t : quad(axis, hi, {lo, lo}, {hi, hi})) {
+      std::swap(t[1], t[2]);
+      tris.push_back(t);
+    }
+  }
+  Material m;
+  m.albedo = glm::vec3(0.5f, 0.6f, 0.7f);
+  m.emission = glm::vec3(1.0f, 0.5f, 0.25f);
+  return makeScene(tris, unitGrid(n), m);
+}
+
+// The dense side of the oracle: the bounce kernel's reads from the voxelize, light_voxels and
+// mip buffers.
+struct DenseVolumes {
+  const cpu::ConeVolumes& pyramid;
+  const Buffer& direct;
+  const Buffer& albedo;
+  const Buffer& normal;
+  const GridSpec& grid;
+  glm::vec4 pyramidAt(int level, int face, glm::ivec3 v) const {
+    return pyramid.pyramidAt(level, face, v);
+  }
+  bool cellEmpty(int, glm::ivec3) const { return false; }
+  shared::ConeData coneAt(int i) const { return pyramid.coneAt(i); }
+  glm::vec4 directAt(glm::ivec3 v) const { return voxelValue(direct, v); }
+  glm::vec3 albedoAt(glm::ivec3 v) const { return glm::vec3(voxelValue(albedo, v)); }
+  glm::vec3 normalAt(glm::ivec3 v) const { return glm::vec3(voxelValue(normal, v)); }
+};
+
+bool sameBits(glm::vec4 a, glm::vec4 b) {
+  for (int c = 0; c < 4; ++c)
+    if (std::bit_cast<uint32_t>(a[c]) != std::bit_cast<uint32_t>(b[c])) return false;
+  return true;
+}
+
+// An octree whose leaves are the occupied voxels of the dense pipeline's grid (run up to `last`),
+// holding their values: the albedo with opacity 1 (so that the kernels' albedo is the dense albedo
+// bit for bit), the normal sum, and light_voxels' radiance (which carries the dense opacity).
+struct DenseTree {
+  BufferSet dense;
+  std::vector<shared::SvoSample> samples;
+  Octree octree;
+  Leaves leaves;
+  LeafRadiance radiance;
+};
+
+DenseTree denseTree(const Scene& scene, const Settings& settings, int depth, const char* last) {
+  const int n = 1 << depth;
+  DenseTree t;
+  t.dense = runCpuUntil(scene, settings, last);
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x)
+        if (voxelValue(t.dense.at(BufferId::common_voxelize_opacity), {x, y, z}).x > 0.0f)
+          t.samples.push_back(cellSample({x, y, z}));
+  t.octree = cpu::svo::buildOctree(t.samples, depth);
+  const size_t slots = t.octree.leafTileCount() * 8;
+  t.leaves.albedo.assign(slots, glm::vec4(0.0f));
+  t.leaves.normal.assign(slots, glm::vec3(0.0f));
+  t.leaves.emission.assign(slots, glm::vec3(0.0f));
+  t.radiance.assign(slots, glm::vec4(0.0f));
+  cpu::svo::forEachRealLeaf(t.octree, [&](size_t slot, glm::ivec3 v) {
+    t.leaves.albedo[slot] =
+        glm::vec4(glm::vec3(voxelValue(t.dense.at(BufferId::common_voxelize_albedo), v)), 1.0f);
+    t.leaves.normal[slot] = glm::vec3(voxelValue(t.dense.at(BufferId::common_voxelize_normal), v));
+    t.radiance[slot] = voxelValue(t.dense.at(BufferId::vct_light_voxels_radiance), v);
+  });
+  return t;
+}
+
+// The end-to-end oracle: an octree whose leaves hold the dense grid's occupied voxels mips to the
+// dense directional pyramid bit for bit on every level it has, and the shared bounce kernel reads
+// the same cone results through it at every leaf.
+TEST(SvoLight, OctreeOfADenseGridGivesTheDensePyramidAndConeResults) {
+  constexpr int kDepth = 5, kN = 1 << kDepth;
+  const Scene scene = closedBox(kN);
+  Settings settings;
+  settings.vct.mip = MipMode::anisotropic;
+  const DenseTree t = denseTree(scene, settings, kDepth, "mip");
+  const BufferSet& dense = t.dense;
+  const Buffer& radiance = dense.at(BufferId::vct_light_voxels_radiance);
+  const auto& samples = t.samples;
+  const Octree& o = t.octree;
+  const Leaves& leaves = t.leaves;
+  const LeafRadiance& leafRadiance = t.radiance;
+  ASSERT_GT(samples.size(), 1000u);
+
+  const NodeLevels mips = cpu::svo::mipTree(o, leaves, leafRadiance, FirstStep::plain);
+  const auto tris = prepareVoxelTriangles(scene, scene.grid);
+  const StageContext ctx(vct(), scene, settings, tris);
+  ConeTraceSetup setup = prepareBounce(ctx);
+  setup.params.grid.y = kDepth - 1;  // the octree's top is the root tile, 2^3 voxels
+  const cpu::ConeVolumes pyramid(radiance, dense.at(BufferId::vct_mip_radiance_mips6),
+                                 MipMode::anisotropic, kN, setup.lights, setup.cones);
+  const SvoVolumes tree{o, leaves, &leafRadiance, &mips, &leafRadiance, nullptr, &setup.cones};
+  for (int level = 1; level < kDepth; ++level) {
+    const int s = kN >> level;
+    for (int z = 0; z < s; ++z)
+      for (int y = 0; y < s; ++y)
+        for (int x = 0; x < s; ++x)
+          for (int face = 0; face < 6; ++face)
+            ASSERT_TRUE(sameBits(tree.pyramidAt(level, face, {x, y, z}),
+                                 pyramid.pyramidAt(level, face, {x, y, z})))
+                << "level " << level << " voxel " << x << " " << y << " " << z << " face " << face;
+  }
+  const DenseVolumes denseVolumes{pyramid, radiance, dense.at(BufferId::common_voxelize_albedo),
+                                  dense.at(BufferId::common_voxelize_normal), scene.grid};
+  size_t gathered = 0;
+  for (const auto& sample : samples) {
+    const glm::ivec3 v(glm::floor(glm::vec3(sample.position)));
+    const glm::vec4 a = shared::bounceVoxel(tree, v, setup.params);
+    const glm::vec4 b = shared::bounceVoxel(denseVolumes, v, setup.params);
+    ASSERT_TRUE(sameBits(a, b)) << v.x << " " << v.y << " " << v.z;
+    gathered += a.x > voxelValue(radiance, v).x;
+  }
+  EXPECT_GT(gathered, samples.size() / 2);  // the bounce added light, not only passed it on
+}
+
+// A tree over one leaf tile's neighbourhood with chosen leaf values, for the mip golden values.
+struct OneTile {
+  Octree octree;
+  Leaves leaves;
+  LeafRadiance radiance;
+};
+
+// Leaves (local ids of the tile at the grid's origin) with premultiplied values and normals.
+OneTile oneTile(const std::vector<std::pair<int, glm::vec4>>& values, glm::vec3 normal) {
+  std::vector<shared::SvoSample> samples;
+  for (const auto& [local, value] : values)
+    samples.push_back(cellSample({local & 1, (local >> 1) & 1, local >> 2}));
+  OneTile t{cpu::svo::buildOctree(samples, 2), {}, {}};
+  const size_t slots = t.octree.leafTileCount() * 8;
+  t.leaves.albedo.assign(slots, glm::vec4(0.0f));
+  t.leaves.normal.assign(slots, glm::vec3(0.0f));
+  t.leaves.emission.assign(slots, glm::vec3(0.0f));
+  t.radiance.assign(slots, glm::vec4(0.0f));
+  for (const auto& [local, value] : values) {
+    t.radiance[size_t(local)] = value;  // the tile at the origin is leaf tile 0
+    t.leaves.normal[size_t(local)] = normal;
+  }
+  return t;
+}
+
+// Node (0,0,0) of tree level 1 (the one above the leaves at depth 2), face f.
+glm::vec4 parentFace(const OneTile& t, FirstStep first, int face) {
+  const NodeLevels m = cpu::svo::mipTree(t.octree, t.leaves, t.radiance, first);
+  return m.levels[1][size_t(face)];
+}
+
+// [Salm 2015, §4.4.2] golden values (the extraction's S10, S11), in voxgi's face labels: face f is
+// what a cone travelling along f sees, Salm's value for the opposite direction.
+TEST(SvoMip, AnisotropicGoldenValues) {
+  constexpr int kPx = 0, kMx = 1, kPy = 2, kMy = 3, kPz = 4, kMz = 5;
+  // One opaque child of radiance 1: a quarter in every face.
+  OneTile one = oneTile({{0, glm::vec4(1.0f)}}, glm::vec3(0.0f));
+  for (int f = 0; f < 6; ++f) EXPECT_EQ(parentFace(one, FirstStep::plain, f), glm::vec4(0.25f));
+  // Two opaque children along x: radiance 1 at x = 0, 10 at x = 1.
+  OneTile two = oneTile({{0, glm::vec4(1, 1, 1, 1)}, {1, glm::vec4(10, 10, 10, 1)}}, glm::vec3(0));
+  EXPECT_EQ(parentFace(two, FirstStep::plain, kMx), glm::vec4(2.5f, 2.5f, 2.5f, 0.25f));
+  EXPECT_EQ(parentFace(two, FirstStep::plain, kPx), glm::vec4(0.25f));
+  for (const int f : {kPy, kMy, kPz, kMz})
+    EXPECT_EQ(parentFace(two, FirstStep::plain, f), glm::vec4(2.75f, 2.75f, 2.75f, 0.5f));
+  // Uniform opacity 0.3, radiance 2 in all eight: 1 - 0.7^2 along every face, radiance kept.
+  std::vector<std::pair<int, glm::vec4>> all;
+  for (int l = 0; l < 8; ++l) all.push_back({l, glm::vec4(0.6f, 0.6f, 0.6f, 0.3f)});
+  const glm::vec4 uniform = parentFace(oneTile(all, glm::vec3(0.0f)), FirstStep::plain, kPz);
+  EXPECT_NEAR(uniform.a, 1.0f - 0.7f * 0.7f, 1e-6f);
+  EXPECT_NEAR(uniform.x / uniform.a, 2.0f, 1e-6f);
+  // The NDF-weighted first step: an opaque wall in the x = 1 children facing +x.
+  OneTile wall =
+      oneTile({{1, glm::vec4(1)}, {3, glm::vec4(1)}, {5, glm::vec4(1)}, {7, glm::vec4(1)}},
+              glm::vec3(1, 0, 0));
+  EXPECT_EQ(parentFace(wall, FirstStep::ndf, kMx), glm::vec4(1.0f));  // seen from +x
+  EXPECT_EQ(parentFace(wall, FirstStep::ndf, kPx), glm::vec4(0.0f));  // its back
+  for (const int f : {kPy, kMy, kPz, kMz})
+    EXPECT_EQ(parentFace(wall, FirstStep::ndf, f), glm::vec4(0.375f));
+}
+
+// Progressive bounces [Salm 2015, §4.4.3]: with static light, frame t's radiance is the explicit
+// sum of T^j(direct) for j <= t, with T one gather of the previous frame (linear for fixed
+// geometry), and the increments shrink geometrically; clearing every frame gives one bounce.
+TEST(SvoLight, ProgressiveBouncesAreTheExplicitSumAndConverge) {
+  constexpr int kDepth = 4, kN = 1 << kDepth;
+  const Scene scene = closedBox(kN);
+  Settings settings;
+  settings.vct.mip = MipMode::anisotropic;
+  const DenseTree t = denseTree(scene, settings, kDepth, "light_voxels");
+  const Octree& o = t.octree;
+  const Leaves& leaves = t.leaves;
+  const LeafRadiance& direct = t.radiance;
+  const size_t slots = direct.size();
+  LeafRadiance zero(slots, glm::vec4(0.0f));  // T alone: no direct term, the leaves' opacity
+  for (size_t slot = 0; slot < slots; ++slot) zero[slot].a = direct[slot].a;
+  const auto tris = prepareVoxelTriangles(scene, scene.grid);
+  const StageContext ctx(vct(), scene, settings, tris);
+  ConeTraceSetup setup = prepareBounce(ctx);
+  setup.params.grid.y = kDepth - 1;
+  const auto T = [&](const LeafRadiance& x) {
+    return cpu::svo::bounceOnce(o, leaves, zero, x, setup.cones, setup.params, FirstStep::plain);
+  };
+  const LeafRadiance t1 = T(direct), t2 = T(t1), t3 = T(t2);
+  const LeafRadiance l3 = cpu::svo::propagateFrames(o, leaves, direct, setup.cones, setup.params, 3,
+                                                    false, FirstStep::plain);
+  const LeafRadiance once = cpu::svo::propagateFrames(o, leaves, direct, setup.cones, setup.params,
+                                                      5, true, FirstStep::plain);
+  double d1 = 0, d2 = 0, d3 = 0;
+  for (size_t slot = 0; slot < slots; ++slot) {
+    if (direct[slot].a <= 0.0f) continue;
+    const glm::vec4 sum = direct[slot] + t1[slot] + t2[slot] + t3[slot];
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_NEAR(l3[slot][c], sum[c], 2e-6f * sum[c] + 1e-7f) << slot;
+      ASSERT_NEAR(once[slot][c], direct[slot][c] + t1[slot][c], 2e-6f * sum[c] + 1e-7f) << slot;
+    }
+    d1 += t1[slot].x, d2 += t2[slot].x, d3 += t3[slot].x;
+  }
+  EXPECT_GT(d1, 0.0);
+  EXPECT_LT(d2, 0.6 * d1);  // each bounce at most the albedo (0.5 in red) times the previous
+  EXPECT_LT(d3, 0.6 * d2);
+  EXPECT_GT(d3, 0.0);
+}
+
+// Injection [S17]: samples of a plane at leaf centres under a point light straight above one of
+// them: that leaf's radiance is (albedo / pi) E, premultiplied by its clamped opacity; emissive
+// samples' premultiplied emission sums to sum of density x r^3 x emission over the samples.
+TEST(SvoLight, InjectionIsTheAnalyticDirectLightAndTheSplattedEmission) {
+  constexpr int kDepth = 4;
+  std::vector<shared::SvoSample> samples;
+  for (int z = 0; z < 16; ++z)
+    for (int x = 0; x < 16; ++x) {
+      shared::SvoSample s = cellSample({x, 3, z});
+      s.albedo = glm::vec4(0.8f, 0.4f, 0.2f, 1.0f);
+      s.emission = glm::vec4(0.25f, 0.5f, 1.0f, 0.0f);  // scaled: emissionScale 4 below
+      samples.push_back(s);
+    }
+  const Octree o = cpu::svo::buildOctree(samples, kDepth);
+  const Words sums = cpu::svo::accumulateLeaves(o, samples, 65536.0f, "test");
+  const Leaves leaves = cpu::svo::resolveLeaves(o, sums, 65536.0f, 4.0f);
+  glm::dvec3 emitted(0.0);
+  for (const glm::vec3& e : leaves.emission) emitted += glm::dvec3(e);
+  EXPECT_NEAR(emitted.x, 256 * 1.0, 1e-3);  // 256 samples, density 1, r^3 = 1, emission 1
+  EXPECT_NEAR(emitted.z, 256 * 4.0, 1e-3);
+
+  shared::LightData light{};
+  light.position = glm::vec4(5.5f, 9.5f, 7.5f, 0.0f);  // 6 leaves above leaf (5, 3, 7)'s centre
+  light.intensity = glm::vec4(36.0f, 36.0f, 36.0f, 0.0f);
+  light.info = glm::uvec4(shared::kLightPoint, 1u, 0u, 0u);
+  const shared::LightVoxelsParams params{glm::ivec4(16, 1, 0, shared::kVoxelShadowHard),
+                                         glm::vec4(1.0f, 0.0f, 1.0f, 0.0f)};
+  const LeafRadiance l = cpu::svo::injectLeaves(o, leaves, {light}, params);
+  bool found = false;
+  cpu::svo::forEachRealLeaf(o, [&](size_t slot, glm::ivec3 v) {
+    if (v != glm::ivec3(5, 3, 7)) return;
+    found = true;
+    // E = 36 / 6^2 = 1 along the normal; opacity 1.
+    EXPECT_NEAR(l[slot].x, 0.8f / 3.14159265f, 1e-6f);
+    EXPECT_NEAR(l[slot].z, 0.2f / 3.14159265f, 1e-6f);
+    EXPECT_EQ(l[slot].a, 1.0f);
+  });
+  EXPECT_TRUE(found);
+}
+
+}  // namespace
+}  // namespace voxgi::test
