@@ -157,25 +157,28 @@ NodeLevels mipTree(const Octree& octree, const Leaves& leaves, const LeafRadianc
 LeafRadiance bounceOnce(const Octree& octree, const Leaves& leaves, const LeafRadiance& direct,
                         const LeafRadiance& source, const std::vector<shared::ConeData>& cones,
                         const shared::ConeTraceParams& params, FirstStep first,
-                        NodeLevels* pyramid) {
-  const NodeLevels mips = mipTree(octree, leaves, source, first);
+                        FrameOutputs* outputs) {
+  NodeLevels mips = mipTree(octree, leaves, source, first);
   LeafRadiance next(source.size(), glm::vec4(0.0f));
+  LeafRadiance gathered(outputs != nullptr ? source.size() : 0, glm::vec4(0.0f));
   forEachRealLeaf(octree, [&](size_t slot, glm::ivec3 v) {
     const SvoVolumes volumes{octree, leaves, &source, &mips, &direct, nullptr, &cones};
-    next[slot] = shared::bounceVoxel(volumes, v, params);
+    const glm::vec3 g = shared::gatherVoxel(volumes, v, params);
+    next[slot] = shared::addReflected(direct[slot], volumes.albedoAt(v), g);
+    if (outputs != nullptr) gathered[slot] = glm::vec4(g * direct[slot].a, direct[slot].a);
   });
-  if (pyramid != nullptr) *pyramid = mips;
+  if (outputs != nullptr) *outputs = {std::move(mips), std::move(gathered)};
   return next;
 }
 
 LeafRadiance propagateFrames(const Octree& octree, const Leaves& leaves, const LeafRadiance& direct,
                              const std::vector<shared::ConeData>& cones,
                              const shared::ConeTraceParams& params, int frames, bool clearEachFrame,
-                             FirstStep first, NodeLevels* pyramid) {
+                             FirstStep first, FrameOutputs* outputs) {
   LeafRadiance current = direct;
   for (int frame = 0; frame < frames; ++frame)
     current = bounceOnce(octree, leaves, direct, clearEachFrame ? direct : current, cones, params,
-                         first, frame + 1 == frames ? pyramid : nullptr);
+                         first, frame + 1 == frames ? outputs : nullptr);
   return current;
 }
 

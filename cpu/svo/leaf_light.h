@@ -4,6 +4,7 @@
 // bounce_kernel.h) reading the octree through SvoVolumes.
 #pragma once
 
+#include <bit>
 #include <optional>
 #include <vector>
 
@@ -52,6 +53,7 @@ struct SvoVolumes {
   const LeafRadiance* direct = nullptr;    // the bounce's directAt
   const std::vector<shared::LightData>* lights = nullptr;
   const std::vector<shared::ConeData>* cones = nullptr;
+  const Words* leafBricks = nullptr;  // svoBrickAt's leaf bricks, 4 floats a texel
   mutable int memoLevel = -1;
   mutable glm::uvec3 memoTile{0};
   mutable uint32_t memoIndex = shared::kSvoNull;
@@ -69,6 +71,11 @@ struct SvoVolumes {
   bool cellEmpty(int, glm::ivec3) const { return false; }
   shared::LightData lightAt(int i) const { return (*lights)[size_t(i)]; }
   shared::ConeData coneAt(int i) const { return (*cones)[size_t(i)]; }
+  glm::vec4 svoBrickAt(int, int, uint tile, uint texel) const {
+    const uint32_t* w = leafBricks->data() + (size_t(tile) * shared::kBrickTexels + texel) * 4;
+    return {std::bit_cast<float>(w[0]), std::bit_cast<float>(w[1]), std::bit_cast<float>(w[2]),
+            std::bit_cast<float>(w[3])};
+  }
 };
 
 // Calls f(leaf slot, leaf coordinate) for every leaf that holds samples, in parallel over tiles.
@@ -97,20 +104,27 @@ LeafRadiance injectLeaves(const Octree& octree, const Leaves& leaves,
 NodeLevels mipTree(const Octree& octree, const Leaves& leaves, const LeafRadiance& radiance,
                    FirstStep first);
 
+// What a frame leaves besides the radiance: the mipmap it gathered from, and per leaf the gathered
+// E / pi premultiplied by the clamped opacity (a: that opacity), which shading interpolates.
+struct FrameOutputs {
+  NodeLevels pyramid;
+  LeafRadiance gathered;
+};
+
 // One gather at every real leaf (bounce_kernel.h): direct + albedo x the diffuse cones over the
-// mipmap of `source`; `pyramid` gets that mipmap.
+// mipmap of `source`.
 LeafRadiance bounceOnce(const Octree& octree, const Leaves& leaves, const LeafRadiance& direct,
                         const LeafRadiance& source, const std::vector<shared::ConeData>& cones,
                         const shared::ConeTraceParams& params, FirstStep first,
-                        NodeLevels* pyramid = nullptr);
+                        FrameOutputs* outputs = nullptr);
 
 // `frames` progressive bounces [Salm 2015, §4.4.3]: each frame gathers, at every real leaf, the
 // diffuse cones over the previous frame's mipmap (bounce_kernel.h), so L_{t+1} = direct +
 // albedo x gather(L_t); with `clearEachFrame`, every frame gathers from `direct` alone (one
-// bounce). Returns the last frame's radiance; `pyramid` gets the mipmap it was gathered from.
+// bounce). Returns the last frame's radiance; `outputs` gets that frame's.
 LeafRadiance propagateFrames(const Octree& octree, const Leaves& leaves, const LeafRadiance& direct,
                              const std::vector<shared::ConeData>& cones,
                              const shared::ConeTraceParams& params, int frames, bool clearEachFrame,
-                             FirstStep first, NodeLevels* pyramid = nullptr);
+                             FirstStep first, FrameOutputs* outputs = nullptr);
 
 }  // namespace voxgi::cpu::svo
