@@ -135,11 +135,19 @@ void addBorderTiles(LevelTiles& level) {
 
 }  // namespace
 
+TileIndex::TileIndex(const std::vector<uint32_t>& sortedKeys, uint64_t keySpace)
+    : bits_(size_t((keySpace + 63) / 64)), before_(bits_.size()) {
+  for (const uint32_t k : sortedKeys) bits_[k >> 6] |= uint64_t(1) << (k & 63u);
+  uint32_t count = 0;
+  for (size_t w = 0; w < bits_.size(); ++w) {
+    before_[w] = count;
+    count += uint32_t(std::popcount(bits_[w]));
+  }
+}
+
 uint32_t Octree::findTile(int level, uint32_t key) const {
-  const std::vector<uint32_t>& keys = levelKeys[size_t(level)];
-  const auto it = std::lower_bound(keys.begin(), keys.end(), key);
-  if (it == keys.end() || *it != key) return kSvoNull;
-  const auto rank = uint32_t(it - keys.begin());
+  const uint32_t rank = levelIndex[size_t(level)].rank(key);
+  if (rank == kSvoNull) return kSvoNull;
   return level == depth ? rank : levelStart[size_t(level)] + rank;
 }
 
@@ -157,10 +165,11 @@ Octree buildOctree(std::span<const shared::SvoSample> samples, int depth) {
   Octree o;
   o.depth = depth;
   o.levelStart.assign(size_t(depth) + 1, 0);
-  o.levelKeys.resize(size_t(depth) + 1);
+  o.levelIndex.resize(size_t(depth) + 1);
   for (int l = 1; l < depth; ++l)
     o.levelStart[size_t(l) + 1] = o.levelStart[size_t(l)] + uint32_t(levels[size_t(l)].keys.size());
-  for (int l = 1; l <= depth; ++l) o.levelKeys[size_t(l)] = levels[size_t(l)].keys;
+  for (int l = 1; l <= depth; ++l)  // tile keys of level l have l - 1 bits per axis
+    o.levelIndex[size_t(l)] = TileIndex(levels[size_t(l)].keys, uint64_t(1) << (3 * (l - 1)));
 
   // Tile records: level, key, parent node, flags.
   const auto writeTiles = [&](int l, Words& words) {
@@ -226,31 +235,110 @@ Octree buildOctree(std::span<const shared::SvoSample> samples, int depth) {
 Words accumulateLeaves(const Octree& octree, std::span<const shared::SvoSample> samples,
                        float scale, const std::string& source) {
   using namespace shared;
-  Words sums(octree.leafTileCount() * 8 * kSumWords);
-  std::atomic<bool> overflow{false};
-  parallelFor(tbb::blocked_range<size_t>(0, samples.size(), 4096),
+  const int n = 1 << octree.depth;
+  const size_t tiles = octree.leafTileCount();
+  const TileIndex& index = octree.levelIndex[size_t(octree.depth)];
+  // Each sample's home: the leaf tile of its first touched leaf on each axis (its touched leaves
+  // lie in that tile or the next one along each axis). Samples go to their home's bucket, and each
+  // tile then sums the samples of its own and its seven lower neighbours' buckets: every leaf is
+  // written by one task, without atomics.
+  const auto firstLeaf = [&](const SplatAxis& a) {
+    if (a.w0 > 0.0f && a.lo >= 0 && a.lo < n) return a.lo;
+    if (a.w1 > 0.0f && a.lo + 1 >= 0 && a.lo + 1 < n) return a.lo + 1;
+    return -1;
+  };
+  std::vector<uint32_t> home(samples.size(), kSvoNull);
+  // Bit a of reach: the sample's leaves reach into the next tile along axis a.
+  std::vector<uint8_t> reach(samples.size(), 0);
+  std::vector<std::atomic<uint32_t>> counts(tiles + 1);
+  parallelFor(tbb::blocked_range<size_t>(0, samples.size(), 16384),
               [&](const tbb::blocked_range<size_t>& range) {
                 for (size_t i = range.begin(); i != range.end(); ++i) {
                   const SvoSample& s = samples[i];
-                  forEachLeaf(s, octree.depth, [&](uint32_t key, float w) {
-                    const uint32_t tile = octree.findTile(octree.depth, key >> 3);
-                    uint32_t* v = &sums[(size_t(tile) * 8 + (key & 7u)) * kSumWords];
-                    const auto add = [&](int c, int value) {
-                      return std::atomic_ref<uint32_t>(v[c]).fetch_add(uint32_t(value),
-                                                                       std::memory_order_relaxed);
-                    };
-                    const int opacity = fixedRound(w, 1.0f, scale);
-                    const auto before = int32_t(add(kSumOpacity, opacity));
-                    if (before > std::numeric_limits<int32_t>::max() - opacity)
-                      overflow.store(true, std::memory_order_relaxed);
-                    for (int c = 0; c < 3; ++c) {
-                      add(kSumAlbedo + c, fixedRound(w, s.albedo[c], scale));
-                      add(kSumNormal + c, fixedRound(w, s.normal[c], scale));
-                      add(kSumEmission + c, fixedRound(w, s.emission[c], scale));
-                    }
-                  });
+                  if (!splatInDomain(glm::vec3(s.position), float(n))) continue;
+                  glm::ivec3 first;
+                  uint8_t bits = 0;
+                  for (int a = 0; a < 3; ++a) {
+                    const SplatAxis axis = splatAxis(s.position[a], s.position.w);
+                    first[a] = firstLeaf(axis);
+                    const int last = axis.w1 > 0.0f && axis.lo + 1 < n ? axis.lo + 1 : axis.lo;
+                    if (first[a] >= 0 && (last >> 1) > (first[a] >> 1))
+                      bits = uint8_t(bits | (1 << a));
+                  }
+                  if (first.x < 0 || first.y < 0 || first.z < 0) continue;
+                  home[i] = index.rank(mortonEncode(glm::uvec3(first >> 1)));
+                  reach[i] = bits;
+                  counts[home[i]].fetch_add(1, std::memory_order_relaxed);
                 }
               });
+  std::vector<uint32_t> start(tiles + 1, 0);
+  for (size_t t = 0; t < tiles; ++t) start[t + 1] = start[t] + counts[t].load();
+  std::vector<uint32_t> order(start[tiles]);
+  for (size_t t = 0; t < tiles; ++t) counts[t].store(start[t]);
+  parallelFor(tbb::blocked_range<size_t>(0, samples.size(), 16384),
+              [&](const tbb::blocked_range<size_t>& range) {
+                for (size_t i = range.begin(); i != range.end(); ++i)
+                  if (home[i] != kSvoNull) order[counts[home[i]].fetch_add(1)] = uint32_t(i);
+              });
+
+  // The samples in bucket order: each tile then reads its buckets from consecutive memory (a
+  // cloud's points come in any order; read through `order`, every one was a cache miss per tile).
+  std::vector<SvoSample> sorted(order.size());
+  std::vector<uint8_t> sortedReach(order.size());
+  parallelFor(tbb::blocked_range<size_t>(0, order.size(), 16384),
+              [&](const tbb::blocked_range<size_t>& range) {
+                for (size_t k = range.begin(); k != range.end(); ++k) {
+                  sorted[k] = samples[order[k]];
+                  sortedReach[k] = reach[order[k]];
+                }
+              });
+
+  Words sums(tiles * 8 * kSumWords);
+  std::atomic<bool> overflow{false};
+  parallelFor(size_t(0), tiles, [&](size_t t) {
+    const glm::ivec3 tile(mortonDecode(octree.leafTiles[t * kTileWords + kTileKey]));
+    int32_t local[8][kSumWords] = {};
+    for (int o = 0; o < 8; ++o) {
+      const glm::ivec3 h = tile - glm::ivec3(o & 1, (o >> 1) & 1, o >> 2);
+      if (h.x < 0 || h.y < 0 || h.z < 0) continue;
+      const uint32_t bucket = index.rank(mortonEncode(glm::uvec3(h)));
+      if (bucket == kSvoNull) continue;
+      for (uint32_t k = start[bucket]; k < start[bucket + 1]; ++k) {
+        if ((sortedReach[k] & o) != o) continue;  // its leaves stop short of this tile
+        const SvoSample& s = sorted[k];
+        const float r = s.position.w;
+        const SplatAxis a[3] = {splatAxis(s.position.x, r), splatAxis(s.position.y, r),
+                                splatAxis(s.position.z, r)};
+        for (int c = 0; c < 8; ++c) {
+          const glm::ivec3 corner(c & 1, (c >> 1) & 1, c >> 2);
+          bool inside = true;
+          glm::ivec3 leaf;
+          for (int axis = 0; axis < 3 && inside; ++axis) {
+            leaf[axis] = a[axis].lo + corner[axis];
+            inside = (corner[axis] == 0 ? a[axis].w0 : a[axis].w1) > 0.0f && leaf[axis] >= 0 &&
+                     leaf[axis] < n && (leaf[axis] >> 1) == tile[axis];
+          }
+          if (!inside) continue;
+          const float w = splatWeight(a[0], a[1], a[2], s.albedo.w, corner);
+          int32_t* v = local[localId(glm::uvec3(leaf))];
+          const int opacity = fixedRound(w, 1.0f, scale);
+          if (v[kSumOpacity] > std::numeric_limits<int32_t>::max() - opacity) {
+            overflow.store(true, std::memory_order_relaxed);
+            return;
+          }
+          v[kSumOpacity] += opacity;
+          for (int ch = 0; ch < 3; ++ch) {
+            v[kSumAlbedo + ch] += fixedRound(w, s.albedo[ch], scale);
+            v[kSumNormal + ch] += fixedRound(w, s.normal[ch], scale);
+            v[kSumEmission + ch] += fixedRound(w, s.emission[ch], scale);
+          }
+        }
+      }
+    }
+    for (int leaf = 0; leaf < 8; ++leaf)
+      for (int c = 0; c < kSumWords; ++c)
+        sums[(t * 8 + size_t(leaf)) * kSumWords + size_t(c)] = uint32_t(local[leaf][c]);
+  });
   if (overflow.load())
     throw InputError(source, "svo.depth",
                      "a leaf's opacity passes 2^31 fixed-point units; raise svo.depth or thin "

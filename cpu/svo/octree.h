@@ -4,6 +4,7 @@
 // in whatever order its threads run; the diff compares both in this form, per key.
 #pragma once
 
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -14,6 +15,28 @@
 
 namespace voxgi::cpu::svo {
 
+// Which keys of a level have a tile, and each one's rank among them (its index in the level,
+// tiles being in key order): a bit per possible key and a running count per 64 keys, so a lookup
+// is two reads, where a binary search over 10^5 tiles took 17 dependent ones.
+class TileIndex {
+ public:
+  TileIndex() = default;
+  TileIndex(const std::vector<uint32_t>& sortedKeys, uint64_t keySpace);
+  // The rank of `key`, or kSvoNull when it has no tile.
+  uint32_t rank(uint32_t key) const {
+    const uint64_t word = bits_[key >> 6], bit = uint64_t(1) << (key & 63u);
+    if ((word & bit) == 0) return 0xffffffffu;
+    return before_[key >> 6] + uint32_t(std::popcount(word & (bit - 1)));
+  }
+  bool contains(uint32_t key) const {
+    return key < bits_.size() * 64 && ((bits_[key >> 6] >> (key & 63u)) & 1u);
+  }
+
+ private:
+  std::vector<uint64_t> bits_;
+  std::vector<uint32_t> before_;
+};
+
 struct Octree {
   int depth = 0;
   Words nodes;      // kNodeWords per node, 8 nodes a node tile (levels 1 .. depth-1)
@@ -22,12 +45,12 @@ struct Octree {
   // First node tile of each level: levelStart[l] for l = 1 .. depth-1, levelStart[depth] = the
   // node tile count (index 0 unused).
   std::vector<uint32_t> levelStart;
-  std::vector<std::vector<uint32_t>> levelKeys;  // each level's tile keys, sorted (index 1..depth)
+  std::vector<TileIndex> levelIndex;  // each level's tiles by key (index 1 .. depth)
 
   size_t tileCount() const { return tiles.size() / 4; }
   size_t leafTileCount() const { return leafTiles.size() / 4; }
   // The node tile of `level` (< depth) or leaf tile (level == depth) keyed `key`; kSvoNull if
-  // none. Binary search in the level's sorted keys.
+  // none.
   uint32_t findTile(int level, uint32_t key) const;
 };
 

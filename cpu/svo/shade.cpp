@@ -8,8 +8,7 @@ namespace voxgi::cpu::svo {
 
 PixelShading shadePixels(const BufferSet& gbuffer, const Octree& octree, const Leaves& leaves,
                          const LeafRadiance& radiance, const NodeLevels& mips,
-                         const Words& gatheredBricks,
-                         const std::vector<shared::LightData>& lights,
+                         const Words& gatheredBricks, const std::vector<shared::LightData>& lights,
                          const std::vector<shared::ObjectData>& objects,
                          const shared::ConeTraceParams& params, glm::vec3 background) {
   const Buffer& position = gbuffer.at(BufferId::common_gbuffer_pixel_position);
@@ -40,8 +39,7 @@ PixelShading shadePixels(const BufferSet& gbuffer, const Octree& octree, const L
     const glm::vec4 s(specular.vec3At(i), 0.0f);
     out.color[i] = shared::composePixel(
         id, albedo.vec3At(i), glm::vec3(s), emission ? emission->vec3At(i) : glm::vec3(0.0f),
-        l.directDiffuse, l.directSpecular, l.indirectDiffuse, l.indirectSpecular, 0.0f,
-        background);
+        l.directDiffuse, l.directSpecular, l.indirectDiffuse, l.indirectSpecular, 0.0f, background);
   });
   return out;
 }

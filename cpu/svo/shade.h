@@ -22,8 +22,7 @@ struct PixelShading {
 // tree's last frame: its leaf radiance (pyramid level 0), mipmap and gathered-light bricks.
 PixelShading shadePixels(const BufferSet& gbuffer, const Octree& octree, const Leaves& leaves,
                          const LeafRadiance& radiance, const NodeLevels& mips,
-                         const Words& gatheredBricks,
-                         const std::vector<shared::LightData>& lights,
+                         const Words& gatheredBricks, const std::vector<shared::LightData>& lights,
                          const std::vector<shared::ObjectData>& objects,
                          const shared::ConeTraceParams& params, glm::vec3 background);
 

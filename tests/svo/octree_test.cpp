@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <random>
 #include <set>
@@ -202,6 +203,61 @@ TEST(SvoBuild, StructureDoesNotDependOnSampleOrderOrThreads) {
     ASSERT_EQ(o.leafTiles, reference.leafTiles);
     ASSERT_EQ(cpu::svo::accumulateLeaves(o, samples, 65536.0f, "test"), referenceSums);
   }
+}
+
+// The sums against a plain loop over every sample's eight corners into a map by leaf: samples
+// whose RoI crosses a tile's faces add to both tiles.
+TEST(SvoBuild, LeafSumsAreEverySampleCornerAddedOnce) {
+  const int depth = 5, n = 1 << depth;
+  const auto samples = scatteredSamples(depth, 5000, 15);
+  const Octree o = cpu::svo::buildOctree(samples, depth);
+  const float scale = 4096.0f;
+  const Words sums = cpu::svo::accumulateLeaves(o, samples, scale, "test");
+  std::map<uint32_t, std::array<int64_t, shared::kSumWords>> expected;
+  size_t crossing = 0;
+  for (const SvoSample& s : samples) {
+    const float r = s.position.w;
+    const shared::SplatAxis a[3] = {shared::splatAxis(s.position.x, r),
+                                    shared::splatAxis(s.position.y, r),
+                                    shared::splatAxis(s.position.z, r)};
+    std::set<uint32_t> tiles;
+    for (int c = 0; c < 8; ++c) {
+      const glm::ivec3 corner(c & 1, (c >> 1) & 1, c >> 2);
+      glm::ivec3 leaf;
+      bool inside = true;
+      for (int axis = 0; axis < 3; ++axis) {
+        leaf[axis] = a[axis].lo + corner[axis];
+        inside = inside && (corner[axis] ? a[axis].w1 : a[axis].w0) > 0.0f && leaf[axis] >= 0 &&
+                 leaf[axis] < n;
+      }
+      if (!inside) continue;
+      const float w = shared::splatWeight(a[0], a[1], a[2], s.albedo.w, corner);
+      auto& v = expected[shared::mortonEncode(glm::uvec3(leaf))];
+      v[shared::kSumOpacity] += shared::fixedRound(w, 1.0f, scale);
+      for (int ch = 0; ch < 3; ++ch) {
+        v[size_t(shared::kSumAlbedo + ch)] += shared::fixedRound(w, s.albedo[ch], scale);
+        v[size_t(shared::kSumNormal + ch)] += shared::fixedRound(w, s.normal[ch], scale);
+        v[size_t(shared::kSumEmission + ch)] += shared::fixedRound(w, s.emission[ch], scale);
+      }
+      tiles.insert(shared::mortonEncode(glm::uvec3(leaf >> 1)));
+    }
+    crossing += tiles.size() > 1;
+  }
+  EXPECT_GT(crossing, 1000u);  // the case the buckets of neighbouring tiles are for
+  size_t checked = 0;
+  for (size_t t = 0; t < o.leafTileCount(); ++t) {
+    const uint32_t key = word(o.leafTiles, t, shared::kTileKey, shared::kTileWords);
+    for (uint32_t local = 0; local < 8; ++local) {
+      const auto it = expected.find((key << 3) | local);
+      for (int c = 0; c < shared::kSumWords; ++c) {
+        const int64_t want = it == expected.end() ? 0 : it->second[size_t(c)];
+        ASSERT_EQ(int32_t(sums[(t * 8 + local) * shared::kSumWords + size_t(c)]), want)
+            << "leaf tile " << t << " local " << local << " sum " << c;
+      }
+      checked += it != expected.end();
+    }
+  }
+  EXPECT_EQ(checked, expected.size());
 }
 
 TEST(SvoBuild, TilesAreAllocatedLevelByLevelInKeyOrder) {

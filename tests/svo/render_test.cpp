@@ -41,12 +41,13 @@ SvoImage renderSvo(const Scene& scene, int frames) {
   ConeTraceSetup bounce = prepareBounce(ctx);
   bounce.params.grid.y = depth - 1;
   cpu::svo::FrameOutputs last;
-  const cpu::svo::LeafRadiance radiance = cpu::svo::propagateFrames(
-      o, leaves, direct, bounce.cones, bounce.params, frames, false, cpu::svo::FirstStep::plain,
-      &last);
+  const cpu::svo::LeafRadiance radiance =
+      cpu::svo::propagateFrames(o, leaves, direct, bounce.cones, bounce.params, frames, false,
+                                cpu::svo::FirstStep::plain, &last);
   Words interior(last.gathered.size() * 4);
   for (size_t i = 0; i < last.gathered.size(); ++i)
-    for (int c = 0; c < 4; ++c) interior[i * 4 + size_t(c)] = std::bit_cast<uint32_t>(last.gathered[i][c]);
+    for (int c = 0; c < 4; ++c)
+      interior[i * 4 + size_t(c)] = std::bit_cast<uint32_t>(last.gathered[i][c]);
   const Words bricks = cpu::svo::completeBricks(o, depth, interior, 4);
   const cpu::svo::PixelShading shading =
       cpu::svo::shadePixels(g, o, leaves, radiance, last.pyramid, bricks, trace.lights,
