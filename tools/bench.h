@@ -1,7 +1,8 @@
 // Benchmarks (docs/benchmarks.md), wall-clock medians measured side by side in one run:
 // `voxgi bench voxelize` against OpenVDB's tools::meshToVolume on the same mesh and voxel size;
 // `voxgi bench vct` per-stage times of the VCT pipeline, plus mip against a memcpy of its input;
-// `voxgi bench lpv` per-stage times of lpv and holpv, propagation against the bytes it moves.
+// `voxgi bench lpv` per-stage times of lpv and holpv, propagation against the bytes it moves;
+// `voxgi bench svo` the octree's build from a point cloud against OpenVDB's point rasterisation.
 #pragma once
 
 #include <functional>
@@ -54,6 +55,18 @@ struct BenchLpvOptions {
 
 void addBenchLpvOptions(CLI::App& cmd, BenchLpvOptions& options);
 int runBenchLpv(const BenchLpvOptions& options);
+
+struct BenchSvoOptions {
+  std::string cloud;         // empty: generate one from the Cornell box
+  int64_t points = 1400000;  // [Salm 2015]'s CaveCloud
+  std::vector<int> depths{7, 8};
+  std::vector<int> threads{1, 2};
+  int repeats = 3;
+  std::string json;
+};
+
+void addBenchSvoOptions(CLI::App& cmd, BenchSvoOptions& options);
+int runBenchSvo(const BenchSvoOptions& options);
 
 // The median time of each stage the plan runs after voxelize on `backend`, each from the CPU's
 // outputs of the stages before it (voxelize has its own benchmark); stage -> seconds.

@@ -476,6 +476,12 @@ int main(int argc, char** argv) {
       "lpv and holpv, every stage after voxelize: CPU per thread count, GPU (OSMesa); "
       "propagate vs memcpy");
   tools::addBenchLpvOptions(*benchLpvCmd, benchLpv);
+  tools::BenchSvoOptions benchSvo;
+  auto* benchSvoCmd = benchCmd->add_subcommand(
+      "svo",
+      "the octree's build from a 1.4M-point cloud: CPU per depth and thread count, "
+      "OpenVDB's point rasterisation beside it");
+  tools::addBenchSvoOptions(*benchSvoCmd, benchSvo);
 
   try {
     app.parse(argc, argv);
@@ -504,6 +510,7 @@ int main(int argc, char** argv) {
     if (*benchVoxelize) return tools::runBenchVoxelize(bench);
     if (*benchVctCmd) return tools::runBenchVct(benchVct);
     if (*benchLpvCmd) return tools::runBenchLpv(benchLpv);
+    if (*benchSvoCmd) return tools::runBenchSvo(benchSvo);
   } catch (const InputError& e) {
     std::cerr << "voxgi: " << e.what() << "\n";
     return kExitBadInput;

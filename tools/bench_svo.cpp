@@ -1,0 +1,127 @@
+// voxgi bench svo (docs/benchmarks.md): the point cloud's way into the octree on the CPU — PLY
+// load, samples, structure, leaf sums — at each depth and thread count, side by side with
+// OpenVDB's point rasterisation (createPointDataGrid, then rasterizeTrilinear of the colour) at
+// the same voxel size, and the octree's memory against [Salm 2015, Table 5.3]'s.
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+#include <tbb/global_control.h>
+
+#include "common/output_file.h"
+#include "common/scene_load.h"
+#include "common/surface_sampling.h"
+#include "common/svo/samples.h"
+#include "cpu/svo/octree.h"
+#include "tools/bench.h"
+#include "tools/openvdb_points.h"
+
+namespace voxgi::tools {
+namespace {
+
+// Bytes of the octree as built now: the structure's words, the leaf sums and the f32 pools the
+// technique keeps per leaf tile (albedo and opacity, normal, emission, radiance and gathered
+// light as 3^3 bricks) and per node tile (six faces as 3^3 bricks).
+uint64_t octreeBytes(const cpu::svo::Octree& o) {
+  const uint64_t structure = (o.nodes.size() + o.tiles.size() + o.leafTiles.size()) * 4;
+  const uint64_t perLeafTile = 8 * 10 * 4 + 27 * (4 + 3 + 3 + 4 + 4) * 4;
+  const uint64_t perNodeTile = 27 * 6 * 4 * 4;
+  return structure + o.leafTileCount() * perLeafTile + o.tileCount() * perNodeTile;
+}
+
+double seconds(const std::function<void()>& run) {
+  const auto start = std::chrono::steady_clock::now();
+  run();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+void addBenchSvoOptions(CLI::App& cmd, BenchSvoOptions& o) {
+  cmd.add_option("--cloud", o.cloud,
+                 "point-cloud PLY (default: scenes/cornell_box.json sampled with voxgi sample's "
+                 "noise and density gradient)");
+  cmd.add_option("--points", o.points, "points of the generated cloud")
+      ->check(CLI::Range(int64_t(1000), int64_t(1) << 28));
+  cmd.add_option("--depths", o.depths, "octree depths (leaves 2^depth per side)")
+      ->delimiter(',')
+      ->check(CLI::Range(2, 10));
+  cmd.add_option("--threads-list", o.threads, "CPU thread counts")->delimiter(',');
+  cmd.add_option("--repeat", o.repeats, "runs per measurement (the median is reported)")
+      ->check(CLI::Range(1, 100));
+  cmd.add_option("--json", o.json, "also write the figures as JSON");
+}
+
+int runBenchSvo(const BenchSvoOptions& o) {
+  std::string cloudFile = o.cloud;
+  if (cloudFile.empty()) {
+    const Scene box = loadScene("scenes/cornell_box.json");
+    SurfaceSampling sampling;
+    sampling.points = size_t(o.points);
+    sampling.noise = 0.5;  // mm: a scanner's
+    sampling.gradientAxis = 1;
+    sampling.gradientRatio = 0.5;
+    cloudFile = (std::filesystem::temp_directory_path() / "voxgi_bench_svo.ply").string();
+    writePointCloudPly(sampleSurfaces(box, sampling), cloudFile);
+  }
+  Scene scene;
+  const double loadSeconds = medianSeconds(o.repeats, [&] { scene = loadScene(cloudFile); });
+  const double millions = double(scene.pointCount()) / 1e6;
+  std::cout << "PLY load: " << scene.pointCount() << " points from " << cloudFile << " in "
+            << std::fixed << std::setprecision(3) << loadSeconds << " s, "
+            << loadSeconds / millions << " s per million points\n\n";
+  std::cout << "| depth | threads | samples s | structure s | leaf sums s | build s | OpenVDB "
+               "points s | build / OpenVDB | node tiles | leaf tiles | octree MB | / Salm's 134 MB |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  nlohmann::json rows = nlohmann::json::array();
+  for (const int depth : o.depths) {
+    scene.grid = fitGrid(scene.bounds(), 1 << depth);
+    const double leaf = scene.grid.size / double(1 << depth);
+    for (const int threads : o.threads) {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+      svo::SampleSet set;
+      const double samplesSeconds =
+          medianSeconds(o.repeats, [&] { set = svo::prepareSamples(scene, depth, 4.0, 1); });
+      std::vector<double> structure, sums;
+      cpu::svo::Octree octree;
+      for (int r = 0; r < o.repeats; ++r) {
+        structure.push_back(seconds([&] { octree = cpu::svo::buildOctree(set.samples, depth); }));
+        sums.push_back(seconds([&] {
+          cpu::svo::accumulateLeaves(octree, set.samples, set.weightScale, cloudFile);
+        }));
+      }
+      const double build = median(structure) + median(sums);
+      const double peer = openVdbPointsSeconds(scene.pointClouds.front(), leaf, o.repeats);
+      const double megabytes = double(octreeBytes(octree)) / 1e6;
+      std::cout << std::setprecision(3) << "| " << depth << " | " << threads << " | "
+                << samplesSeconds << " | " << median(structure) << " | " << median(sums) << " | "
+                << build << " | " << peer << " | " << std::setprecision(2) << build / peer
+                << " | " << octree.tileCount() << " | " << octree.leafTileCount() << " | "
+                << std::setprecision(1) << megabytes << " | " << std::setprecision(2)
+                << megabytes / 134.0 << " |\n"
+                << std::flush;
+      rows.push_back({{"depth", depth},
+                      {"threads", threads},
+                      {"points", scene.pointCount()},
+                      {"samples_s", samplesSeconds},
+                      {"structure_s", median(structure)},
+                      {"leaf_sums_s", median(sums)},
+                      {"openvdb_points_s", std::isnan(peer) ? nlohmann::json() : nlohmann::json(peer)},
+                      {"node_tiles", octree.tileCount()},
+                      {"leaf_tiles", octree.leafTileCount()},
+                      {"octree_bytes", octreeBytes(octree)}});
+    }
+  }
+  if (!o.json.empty())
+    writeFileAtomically(o.json, nlohmann::json({{"ply_load_s", loadSeconds},
+                                                {"points", scene.pointCount()},
+                                                {"rows", rows}})
+                                        .dump(2) +
+                                    "\n");
+  return 0;
+}
+
+}  // namespace voxgi::tools
