@@ -45,7 +45,8 @@ PointCloud sampleSurfaces(const Scene& scene, const SurfaceSampling& sampling) {
   }
   if (triangles.empty())
     throw InputError(scene.file, "meshes", "no triangle with area and without emission to sample");
-  const auto [lo, hi] = scene.bounds();
+  // Named copies: a lambda may not capture structured bindings (clang 14).
+  const glm::dvec3 lo = scene.bounds().first, hi = scene.bounds().second;
   // Density w(p) in [min(1, ratio), max(1, ratio)]; a candidate is kept with probability w / max.
   const auto density = [&](const glm::dvec3& p) {
     if (sampling.gradientAxis < 0) return 1.0;

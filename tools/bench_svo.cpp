@@ -71,11 +71,12 @@ int runBenchSvo(const BenchSvoOptions& o) {
   const double loadSeconds = medianSeconds(o.repeats, [&] { scene = loadScene(cloudFile); });
   const double millions = double(scene.pointCount()) / 1e6;
   std::cout << "PLY load: " << scene.pointCount() << " points from " << cloudFile << " in "
-            << std::fixed << std::setprecision(3) << loadSeconds << " s, "
-            << loadSeconds / millions << " s per million points\n\n";
-  std::cout << "| depth | threads | samples s | structure s | leaf sums s | build s | OpenVDB "
-               "points s | build / OpenVDB | node tiles | leaf tiles | octree MB | / Salm's 134 MB |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+            << std::fixed << std::setprecision(3) << loadSeconds << " s, " << loadSeconds / millions
+            << " s per million points\n\n";
+  std::cout
+      << "| depth | threads | samples s | structure s | leaf sums s | build s | OpenVDB "
+         "points s | build / OpenVDB | node tiles | leaf tiles | octree MB | / Salm's 134 MB |\n"
+      << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   nlohmann::json rows = nlohmann::json::array();
   for (const int depth : o.depths) {
     scene.grid = fitGrid(scene.bounds(), 1 << depth);
@@ -89,38 +90,38 @@ int runBenchSvo(const BenchSvoOptions& o) {
       cpu::svo::Octree octree;
       for (int r = 0; r < o.repeats; ++r) {
         structure.push_back(seconds([&] { octree = cpu::svo::buildOctree(set.samples, depth); }));
-        sums.push_back(seconds([&] {
-          cpu::svo::accumulateLeaves(octree, set.samples, set.weightScale, cloudFile);
-        }));
+        sums.push_back(seconds(
+            [&] { cpu::svo::accumulateLeaves(octree, set.samples, set.weightScale, cloudFile); }));
       }
       const double build = median(structure) + median(sums);
       const double peer = openVdbPointsSeconds(scene.pointClouds.front(), leaf, o.repeats);
       const double megabytes = double(octreeBytes(octree)) / 1e6;
       std::cout << std::setprecision(3) << "| " << depth << " | " << threads << " | "
                 << samplesSeconds << " | " << median(structure) << " | " << median(sums) << " | "
-                << build << " | " << peer << " | " << std::setprecision(2) << build / peer
-                << " | " << octree.tileCount() << " | " << octree.leafTileCount() << " | "
+                << build << " | " << peer << " | " << std::setprecision(2) << build / peer << " | "
+                << octree.tileCount() << " | " << octree.leafTileCount() << " | "
                 << std::setprecision(1) << megabytes << " | " << std::setprecision(2)
                 << megabytes / 134.0 << " |\n"
                 << std::flush;
-      rows.push_back({{"depth", depth},
-                      {"threads", threads},
-                      {"points", scene.pointCount()},
-                      {"samples_s", samplesSeconds},
-                      {"structure_s", median(structure)},
-                      {"leaf_sums_s", median(sums)},
-                      {"openvdb_points_s", std::isnan(peer) ? nlohmann::json() : nlohmann::json(peer)},
-                      {"node_tiles", octree.tileCount()},
-                      {"leaf_tiles", octree.leafTileCount()},
-                      {"octree_bytes", octreeBytes(octree)}});
+      rows.push_back(
+          {{"depth", depth},
+           {"threads", threads},
+           {"points", scene.pointCount()},
+           {"samples_s", samplesSeconds},
+           {"structure_s", median(structure)},
+           {"leaf_sums_s", median(sums)},
+           {"openvdb_points_s", std::isnan(peer) ? nlohmann::json() : nlohmann::json(peer)},
+           {"node_tiles", octree.tileCount()},
+           {"leaf_tiles", octree.leafTileCount()},
+           {"octree_bytes", octreeBytes(octree)}});
     }
   }
   if (!o.json.empty())
-    writeFileAtomically(o.json, nlohmann::json({{"ply_load_s", loadSeconds},
-                                                {"points", scene.pointCount()},
-                                                {"rows", rows}})
-                                        .dump(2) +
-                                    "\n");
+    writeFileAtomically(
+        o.json, nlohmann::json(
+                    {{"ply_load_s", loadSeconds}, {"points", scene.pointCount()}, {"rows", rows}})
+                        .dump(2) +
+                    "\n");
   return 0;
 }
 

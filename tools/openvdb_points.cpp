@@ -28,8 +28,8 @@ double openVdbPointsSeconds(const PointCloud& cloud, double leaf, int repeats) {
   const openvdb::points::PointAttributeVector<openvdb::Vec3R> wrapper(positions);
   const auto transform = openvdb::math::Transform::createLinearTransform(leaf);
   return medianSeconds(repeats, [&] {
-    const auto index = openvdb::tools::createPointIndexGrid<openvdb::tools::PointIndexGrid>(
-        wrapper, *transform);
+    const auto index =
+        openvdb::tools::createPointIndexGrid<openvdb::tools::PointIndexGrid>(wrapper, *transform);
     auto grid = openvdb::points::createPointDataGrid<openvdb::points::NullCodec,
                                                      openvdb::points::PointDataGrid>(
         *index, wrapper, *transform);
@@ -37,7 +37,7 @@ double openVdbPointsSeconds(const PointCloud& cloud, double leaf, int repeats) {
     const openvdb::points::PointAttributeVector<openvdb::Vec3f> cd(colors);
     openvdb::points::populateAttribute<openvdb::points::PointDataTree,
                                        openvdb::tools::PointIndexTree,
-                                       openvdb::points::PointAttributeVector<openvdb::Vec3f>>(
+                                       openvdb::points::PointAttributeVector<openvdb::Vec3f> >(
         grid->tree(), index->tree(), "Cd", cd);
     const auto raster =
         openvdb::points::rasterizeTrilinear<false, openvdb::Vec3f>(grid->tree(), "Cd");

@@ -127,7 +127,8 @@ NodeLevels mipTree(const Octree& octree, const Leaves& leaves, const LeafRadianc
   NodeLevels out;
   out.levels.resize(size_t(octree.depth));
   for (int level = octree.depth - 1; level >= 1; --level) {
-    const auto [firstTile, count] = levelRange(octree, level);
+    const size_t firstTile = levelRange(octree, level).first;
+    const size_t count = levelRange(octree, level).second;
     std::vector<glm::vec4>& values = out.levels[size_t(level)];
     values.assign(count * 8 * shared::kFaces, glm::vec4(0.0f));
     const bool fromLeaves = level + 1 == octree.depth;

@@ -369,7 +369,7 @@ Words completeBricks(const Octree& octree, int level, const Words& interior, int
             const int on[3] = {i, j, k};
             for (int a = 0; a < 3 && node != kSvoNull; ++a)
               if (on[a] == 2)
-                node = octree.nodes[size_t(node) * kNodeWords + kNodeNeighbour + 2 * a];
+                node = octree.nodes[size_t(node) * kNodeWords + kNodeNeighbour + size_t(2 * a)];
             const uint32_t child =
                 node == kSvoNull ? kSvoNull : octree.nodes[size_t(node) * kNodeWords + kNodeChild];
             if (child == kSvoNull) continue;  // the texel stays 0

@@ -306,7 +306,8 @@ TEST(SvoBuild, NeighbourPointersAreSymmetricAndExactlyTheExistingSlots) {
     const auto [level, key] = levelKey;
     const glm::ivec3 x(shared::mortonDecode(key));
     for (int f = 0; f < 6; ++f) {
-      const uint32_t ptr = o.nodes[node * shared::kNodeWords + shared::kNodeNeighbour + f];
+      const uint32_t ptr =
+          o.nodes[node * shared::kNodeWords + shared::kNodeNeighbour + uint32_t(f)];
       glm::ivec3 y = x;
       y[f / 2] += f % 2 == 0 ? 1 : -1;
       const bool inside = y[f / 2] >= 0 && y[f / 2] < (1 << level);
@@ -314,7 +315,8 @@ TEST(SvoBuild, NeighbourPointersAreSymmetricAndExactlyTheExistingSlots) {
           inside ? slots.find({level, shared::mortonEncode(glm::uvec3(y))}) : slots.end();
       ASSERT_EQ(ptr, it == slots.end() ? shared::kSvoNull : it->second);
       if (ptr != shared::kSvoNull) {  // n.+a.-a = n
-        ASSERT_EQ(o.nodes[ptr * shared::kNodeWords + shared::kNodeNeighbour + (f ^ 1)], node);
+        ASSERT_EQ(o.nodes[ptr * shared::kNodeWords + shared::kNodeNeighbour + uint32_t(f ^ 1)],
+                  node);
       }
     }
   }
