@@ -10,7 +10,7 @@
 
 #include "common/parallel.h"
 #include "cpu/svo/octree.h"
-#include "shaders/shared/svo/svo_layout.h"
+#include "shaders/shared/svo/svo_sample.h"
 #include "shaders/shared/vct/cone_types.h"
 #include "shaders/shared/vct/light_voxels_kernel.h"
 

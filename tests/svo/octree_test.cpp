@@ -5,14 +5,16 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <numeric>
 #include <random>
 #include <set>
 
 #include <tbb/global_control.h>
 
 #include "common/error.h"
+#include "common/svo/canonical.h"
 #include "cpu/svo/octree.h"
-#include "shaders/shared/svo/svo_layout.h"
+#include "shaders/shared/svo/svo_sample.h"
 
 namespace voxgi {
 namespace {
@@ -276,6 +278,59 @@ TEST(SvoBuild, TilesAreAllocatedLevelByLevelInKeyOrder) {
   for (size_t t = 1; t < o.leafTileCount(); ++t)
     ASSERT_LT(word(o.leafTiles, t - 1, shared::kTileKey, shared::kTileWords),
               word(o.leafTiles, t, shared::kTileKey, shared::kTileWords));
+}
+
+// The canonical form undoes any order of allocation: the CPU build with its tiles shuffled (the
+// root tile kept first, as the GPU allocates it) and every reference renumbered comes back as it
+// was.
+TEST(SvoBuild, CanonicalFormUndoesAnyTileOrder) {
+  const int depth = 5;
+  const auto samples = scatteredSamples(depth, 2000, 16);
+  const Octree o = cpu::svo::buildOctree(samples, depth);
+  const Words sums = cpu::svo::accumulateLeaves(o, samples, 4096.0f, "test");
+  std::mt19937 rng(17);
+  std::vector<uint32_t> nodeTo(o.tileCount()), leafTo(o.leafTileCount());
+  std::iota(nodeTo.begin(), nodeTo.end(), 0u);
+  std::iota(leafTo.begin(), leafTo.end(), 0u);
+  std::shuffle(nodeTo.begin() + 1, nodeTo.end(), rng);
+  std::shuffle(leafTo.begin(), leafTo.end(), rng);
+  const auto node = [&](uint32_t n) {
+    return n == shared::kSvoNull ? n : nodeTo[n / 8] * 8 + n % 8;
+  };
+  svo::OctreeWords shuffled{Words(o.nodes.size()), Words(o.tiles.size()), Words(o.leafTiles.size()),
+                            Words(sums.size())};
+  for (size_t t = 0; t < o.tileCount(); ++t) {
+    const bool leafParents = tileLevel(o, t) == depth - 1;
+    for (size_t w = 0; w < 8 * shared::kNodeWords; ++w) {
+      uint32_t v = o.nodes[t * 8 * shared::kNodeWords + w];
+      const size_t field = w % shared::kNodeWords;
+      if (field == shared::kNodeChild && v != shared::kSvoNull)
+        v = leafParents ? leafTo[v] : nodeTo[v];
+      if (field >= shared::kNodeNeighbour && field < shared::kNodeFlags) v = node(v);
+      shuffled.nodes[size_t(nodeTo[t]) * 8 * shared::kNodeWords + w] = v;
+    }
+    for (int f = 0; f < shared::kTileWords; ++f) {
+      const uint32_t v = o.tiles[t * shared::kTileWords + size_t(f)];
+      shuffled.tiles[size_t(nodeTo[t]) * shared::kTileWords + size_t(f)] =
+          f == shared::kTileParent ? node(v) : v;
+    }
+  }
+  for (size_t t = 0; t < o.leafTileCount(); ++t) {
+    for (int f = 0; f < shared::kTileWords; ++f) {
+      const uint32_t v = o.leafTiles[t * shared::kTileWords + size_t(f)];
+      shuffled.leafTiles[size_t(leafTo[t]) * shared::kTileWords + size_t(f)] =
+          f == shared::kTileParent ? node(v) : v;
+    }
+    for (size_t w = 0; w < 8 * shared::kSumWords; ++w)
+      shuffled.sums[size_t(leafTo[t]) * 8 * shared::kSumWords + w] =
+          sums[t * 8 * shared::kSumWords + w];
+  }
+  ASSERT_NE(shuffled.nodes, o.nodes);
+  svo::canonicalize(shuffled, depth);
+  EXPECT_EQ(shuffled.nodes, o.nodes);
+  EXPECT_EQ(shuffled.tiles, o.tiles);
+  EXPECT_EQ(shuffled.leafTiles, o.leafTiles);
+  EXPECT_EQ(shuffled.sums, sums);
 }
 
 TEST(SvoBuild, NoSampleLeavesTheRootTileAlone) {

@@ -4,7 +4,7 @@
 // leaves around the surface do not darken it. Shared by both backends' shade_svo.
 #ifndef VOXGI_SVO_SHADE_KERNEL_H
 #define VOXGI_SVO_SHADE_KERNEL_H
-#include "svo_layout.h"
+#include "svo_sample.h"
 
 VOXGI_NAMESPACE_BEGIN
 
