@@ -14,6 +14,7 @@
 #include "shaders/shared/gbuffer_kernel.h"
 #include "shaders/shared/lighting.h"
 #include "shaders/shared/lpv/lpv_types.h"
+#include "shaders/shared/svo/splat_kernel.h"
 #include "shaders/shared/compose_kernel.h"
 #include "shaders/shared/vct/cone_types.h"
 #include "shaders/shared/vct/light_voxels_kernel.h"
@@ -25,7 +26,7 @@ namespace {
 
 using namespace shared;
 
-// Every program the GPU stages link (gpu/*.cpp, gpu/vct/*.cpp, gpu/lpv/*.cpp).
+// Every program the GPU stages link (gpu/*.cpp, gpu/vct/*.cpp, gpu/lpv/*.cpp, gpu/svo/*.cpp).
 std::vector<std::vector<const ShaderSource*>> stagePrograms() {
   using namespace shaders;
   return {{&voxelize_vert, &voxelize_geom, &voxelize_frag},
@@ -42,7 +43,8 @@ std::vector<std::vector<const ShaderSource*>> stagePrograms() {
           {&lpv_inject_geometry_comp},
           {&lpv_inject_geometry_rsm_comp},
           {&lpv_propagate_comp},
-          {&lpv_shade_lpv_comp}};
+          {&lpv_shade_lpv_comp},
+          {&svo_build_svo_comp}};
 }
 
 struct Field {
@@ -86,7 +88,8 @@ std::vector<Layout> layouts() {
     kInjectGeometry,
     kInjectGeometryRsm,
     kPropagate,
-    kShadeLpv
+    kShadeLpv,
+    kBuildSvo
   };
   return {
       {"VoxelTriangle",
@@ -181,6 +184,11 @@ std::vector<Layout> layouts() {
         {kInjectLpv, "views[0]", sizeof(RsmParams), true},
         {kShadeLpv, "views[0]", sizeof(RsmParams), true},
         {kInjectGeometryRsm, "views[0]", sizeof(RsmParams), true}}},
+      {"SvoSample",
+       sizeof(SvoSample),
+       {VOXGI_FIELD(SvoSample, position), VOXGI_FIELD(SvoSample, albedo),
+        VOXGI_FIELD(SvoSample, normal), VOXGI_FIELD(SvoSample, emission)},
+       {{kBuildSvo, "samples[0]", 0, true}}},
       {"RsmParams",
        sizeof(RsmParams),
        {VOXGI_FIELD(RsmParams, shape), VOXGI_FIELD(RsmParams, scale)},

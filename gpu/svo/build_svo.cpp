@@ -43,9 +43,11 @@ class Pool {
     const size_t capacity = std::max<size_t>({words, words_ + words_ / 2, 64});
     std::vector<uint32_t> init(capacity, 0u);
     if (nodes_)
-      for (size_t w = 0; w < capacity; ++w) init[w] = w % kNodeWords == shared::kNodeFlags ? 0u : kSvoNull;
+      for (size_t w = 0; w < capacity; ++w)
+        init[w] = w % kNodeWords == shared::kNodeFlags ? 0u : kSvoNull;
     GlBuffer next(gl_, createBuffer(gl_, capacity * 4, init.data()));
-    if (words_ > 0) gl_.CopyNamedBufferSubData(buffer_.get(), next.get(), 0, 0, GLsizeiptr(words_ * 4));
+    if (words_ > 0)
+      gl_.CopyNamedBufferSubData(buffer_.get(), next.get(), 0, 0, GLsizeiptr(words_ * 4));
     buffer_ = std::move(next);
     words_ = capacity;
   }
@@ -116,7 +118,8 @@ class Builder {
     allocateChildren(depth_ - 1, start[size_t(depth_) - 1], start[size_t(depth_)]);
     const uint32_t nodeTiles = counter(kNodeTiles), leafTiles = counter(kLeafTiles);
     dispatchNodes(kNeighbours, 0, 0, nodeTiles);
-    sums_ = std::make_unique<Pool>(gl_, false, std::max<size_t>(1, size_t(leafTiles) * 8 * shared::kSumWords));
+    sums_ = std::make_unique<Pool>(gl_, false,
+                                   std::max<size_t>(1, size_t(leafTiles) * 8 * shared::kSumWords));
     dispatch(kAccumulate, sampleCount_);
     if (counter(kOverflow) != 0)
       throw InputError(source, "svo.depth",
@@ -133,8 +136,13 @@ class Builder {
 
  private:
   void bind() {
-    const GLuint blocks[8] = {samples_.get(), marks_->get(), leafList_ ? leafList_->get() : marks_->get(),
-                              counters_.get(), nodes_.get(), tiles_.get(), leafTiles_.get(),
+    const GLuint blocks[8] = {samples_.get(),
+                              marks_->get(),
+                              leafList_ ? leafList_->get() : marks_->get(),
+                              counters_.get(),
+                              nodes_.get(),
+                              tiles_.get(),
+                              leafTiles_.get(),
                               sums_ ? sums_->get() : marks_->get()};
     for (GLuint b = 0; b < 8; ++b) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, blocks[b]);
   }
