@@ -44,7 +44,10 @@ std::vector<std::vector<const ShaderSource*>> stagePrograms() {
           {&lpv_inject_geometry_rsm_comp},
           {&lpv_propagate_comp},
           {&lpv_shade_lpv_comp},
-          {&svo_build_svo_comp}};
+          {&svo_build_svo_comp},
+          {&svo_inject_svo_comp},
+          {&svo_mip_svo_comp},
+          {&svo_gather_svo_comp}};
 }
 
 struct Field {
@@ -89,7 +92,10 @@ std::vector<Layout> layouts() {
     kInjectGeometryRsm,
     kPropagate,
     kShadeLpv,
-    kBuildSvo
+    kBuildSvo,
+    kInjectSvo,
+    kMipSvo,
+    kGatherSvo
   };
   return {
       {"VoxelTriangle",
@@ -118,22 +124,27 @@ std::vector<Layout> layouts() {
        {{kLight, "lights[0]", sizeof(LightVoxelsParams), true},
         {kTrace, "lights[0]", sizeof(ConeTraceParams), true},
         {kRsm, "lights[0]", 0, true},
-        {kShadeLpv, "lights[0]", 0, true}}},
+        {kShadeLpv, "lights[0]", 0, true},
+        {kInjectSvo, "lights[0]", sizeof(LightVoxelsParams), true}}},
       {"LightVoxelsParams",
        sizeof(LightVoxelsParams),
        {VOXGI_FIELD(LightVoxelsParams, config), VOXGI_FIELD(LightVoxelsParams, values)},
-       {{kLight, "params", 0, false}}},
+       {{kLight, "params", 0, false}, {kInjectSvo, "params", 0, false}}},
       {"ConeTraceParams",
        sizeof(ConeTraceParams),
        {VOXGI_FIELD(ConeTraceParams, grid), VOXGI_FIELD(ConeTraceParams, modes),
         VOXGI_FIELD(ConeTraceParams, limits), VOXGI_FIELD(ConeTraceParams, march),
         VOXGI_FIELD(ConeTraceParams, shadow), VOXGI_FIELD(ConeTraceParams, specular),
         VOXGI_FIELD(ConeTraceParams, background), VOXGI_FIELD(ConeTraceParams, camera)},
-       {{kTrace, "params", 0, false}, {kBounce, "params", 0, false}}},
+       {{kTrace, "params", 0, false},
+        {kBounce, "params", 0, false},
+        {kGatherSvo, "params", 0, false}}},
       {"ConeData",
        sizeof(ConeData),
        {VOXGI_FIELD(ConeData, direction), VOXGI_FIELD(ConeData, weight)},
-       {{kTrace, "cones[0]", 0, true}, {kBounce, "cones[0]", sizeof(ConeTraceParams), true}}},
+       {{kTrace, "cones[0]", 0, true},
+        {kBounce, "cones[0]", sizeof(ConeTraceParams), true},
+        {kGatherSvo, "cones[0]", sizeof(ConeTraceParams), true}}},
       {"ObjectData",
        sizeof(ObjectData),
        {VOXGI_FIELD(ObjectData, specular)},

@@ -3,6 +3,7 @@
 #include <bit>
 
 #include "shaders/shared/vct/bounce_kernel.h"
+#include "shaders/shared/svo/mip_weights.h"
 #include "shaders/shared/vct/mip_kernel.h"
 
 namespace voxgi::cpu::svo {
@@ -32,10 +33,7 @@ struct Children {
     const int local = c.x + 2 * c.y + 4 * c.z;
     if (!leaves) return values[local * shared::kFaces + face];
     const glm::vec4 v = values[local];
-    if (normals == nullptr || normals[local] == glm::vec3(0.0f)) return v;
-    const glm::vec3 n = glm::normalize(normals[local]);
-    const float along = face % 2 == 0 ? n[face / 2] : -n[face / 2];  // n . f
-    return v * ((1.0f - along) * 0.5f);
+    return normals == nullptr ? v : shared::ndfWeighted(v, normals[local], face);
   }
 };
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common/parallel.h"
+#include "common/svo/light_types.h"
 #include "cpu/svo/octree.h"
 #include "shaders/shared/svo/svo_sample.h"
 #include "shaders/shared/vct/cone_types.h"
@@ -16,31 +17,15 @@
 
 namespace voxgi::cpu::svo {
 
-// Values of the leaves, 8 a leaf tile in local-id order (0 for the empty leaves of a tile).
-struct Leaves {
-  std::vector<glm::vec4> albedo;    // rgb: sum of weight x albedo; a: opacity (may pass 1)
-  std::vector<glm::vec3> normal;    // sum of weight x normal (the NDF, premultiplied)
-  std::vector<glm::vec3> emission;  // sum of weight x emission, radiance units
-};
+using voxgi::svo::FirstStep;
+using voxgi::svo::FrameOutputs;
+using voxgi::svo::LeafRadiance;
+using voxgi::svo::Leaves;
+using voxgi::svo::NodeLevels;
 
 // The leaf sums in floats: sums / weightScale (times emissionScale for the emission).
 Leaves resolveLeaves(const Octree& octree, const Words& sums, float weightScale,
                      float emissionScale);
-
-// Outgoing radiance per leaf, premultiplied by the leaf's opacity clamped to 1 (a: that opacity),
-// 8 a leaf tile; what pyramid level 0 holds.
-using LeafRadiance = std::vector<glm::vec4>;
-
-// The node levels' six faces (+x -x +y -y +z -z as cone travel directions, mip_kernel.h): levels[l]
-// for l = 1 .. depth-1 holds 8 nodes x 6 faces per node tile of the level, in tile order.
-struct NodeLevels {
-  std::vector<std::vector<glm::vec4>> levels;
-};
-
-// How the first step from the isotropic leaves weights a leaf per face: not at all (the dense
-// mip's compositing), or by (1 - n.f)/2 of its mean normal n and the face's travel direction f
-// ([Salm 2015, §4.4.2]; radiance leaving along -f).
-enum class FirstStep { plain, ndf };
 
 // What the shared kernels read: the leaves (pyramid level 0) and node levels (pyramid level m is
 // tree level depth - m), found by walking the tree (svo_layout.h) with the last tile remembered.
@@ -103,13 +88,6 @@ LeafRadiance injectLeaves(const Octree& octree, const Leaves& leaves,
 // The six faces of every node, from the leaves' radiance up to the root tile.
 NodeLevels mipTree(const Octree& octree, const Leaves& leaves, const LeafRadiance& radiance,
                    FirstStep first);
-
-// What a frame leaves besides the radiance: the mipmap it gathered from, and per leaf the gathered
-// E / pi premultiplied by the clamped opacity (a: that opacity), which shading interpolates.
-struct FrameOutputs {
-  NodeLevels pyramid;
-  LeafRadiance gathered;
-};
 
 // One gather at every real leaf (bounce_kernel.h): direct + albedo x the diffuse cones over the
 // mipmap of `source`.

@@ -1,0 +1,163 @@
+#include "gpu/svo/light_svo.h"
+
+#include <algorithm>
+#include <initializer_list>
+
+#include "gpu/program.h"
+#include "shaders/shared/svo/svo_layout.h"
+
+namespace voxgi::gpu::svo {
+namespace {
+
+using voxgi::svo::LeafRadiance;
+using voxgi::svo::NodeLevels;
+
+// `count` invocations, 64 a group, two-dimensional past 65535 groups.
+void dispatch(const Gl& gl, size_t count) {
+  if (count == 0) return;
+  const auto groups = GLuint((count + 63) / 64);
+  const GLuint width = std::min<GLuint>(groups, 65535);
+  gl.DispatchCompute(width, (groups + width - 1) / width, 1);
+  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+template <class T>
+GLuint upload(const Gl& gl, const std::vector<T>& v) {
+  return createBuffer(gl, v.size() * sizeof(T), v.data());
+}
+
+std::vector<glm::vec4> download(const Gl& gl, GLuint buffer, size_t count, size_t offset = 0) {
+  std::vector<glm::vec4> out(count);
+  if (count > 0)
+    gl.GetNamedBufferSubData(buffer, GLintptr(offset * sizeof(glm::vec4)),
+                             GLsizeiptr(count * sizeof(glm::vec4)), out.data());
+  return out;
+}
+
+// The octree and the leaves as svo_volumes.glsl reads them: node words, leaf tiles, leaf values
+// (albedo, normal, emission: three vec4 a leaf slot), level 0's radiance and the node faces.
+struct Volumes {
+  GlBuffer nodes, leafTiles, leafValues, source, nodeFaces;
+  size_t slots, nodeCount;
+  Volumes(const Gl& gl, const Tree& t, const voxgi::svo::Leaves& leaves, const LeafRadiance* s)
+      : nodes(gl, createBuffer(gl, t.words.nodes.size() * 4, t.words.nodes.data())),
+        leafTiles(gl, createBuffer(gl, t.words.leafTiles.size() * 4, t.words.leafTiles.data())),
+        leafValues(gl, 0),
+        source(gl, 0),
+        nodeFaces(gl, 0),
+        slots(leaves.albedo.size()),
+        nodeCount(t.words.nodes.size() / shared::kNodeWords) {
+    std::vector<glm::vec4> values(3 * slots);
+    for (size_t i = 0; i < slots; ++i) {
+      values[3 * i] = leaves.albedo[i];
+      values[3 * i + 1] = glm::vec4(leaves.normal[i], 0.0f);
+      values[3 * i + 2] = glm::vec4(leaves.emission[i], 0.0f);
+    }
+    leafValues = GlBuffer(gl, upload(gl, values));
+    source = GlBuffer(gl, s != nullptr ? upload(gl, *s) : createBuffer(gl, 16, nullptr));
+    nodeFaces = GlBuffer(gl, createBuffer(gl, nodeCount * 6 * sizeof(glm::vec4), nullptr));
+  }
+  void bind(const Gl& gl) const {
+    const GLuint blocks[5] = {nodes.get(), leafTiles.get(), leafValues.get(), source.get(),
+                              nodeFaces.get()};
+    for (GLuint b = 0; b < 5; ++b) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, blocks[b]);
+  }
+};
+
+// Node tiles per level: tiles [start[l], start[l + 1]) are level l's (the canonical order).
+std::vector<uint32_t> levelStarts(const Tree& t) {
+  std::vector<uint32_t> start(size_t(t.depth) + 1, 0);
+  const size_t tiles = t.words.tiles.size() / shared::kTileWords;
+  for (int l = 1; l <= t.depth; ++l) {
+    uint32_t s = 0;
+    while (s < tiles && t.words.tiles[s * shared::kTileWords + shared::kTileLevel] < uint32_t(l))
+      ++s;
+    start[size_t(l)] = s;
+  }
+  return start;
+}
+
+// Fills v.nodeFaces from `first`'s leaves up to the root tile; returns them per level.
+NodeLevels mipInto(const Gl& gl, const Tree& t, const Volumes& v, voxgi::svo::FirstStep first) {
+  Program program(gl, {&shaders::svo_mip_svo_comp});
+  program.use();
+  program.set("uDepth", t.depth);
+  program.set("uNdfWeights", first == voxgi::svo::FirstStep::ndf ? 1 : 0);
+  v.bind(gl);
+  const std::vector<uint32_t> start = levelStarts(t);
+  NodeLevels out;
+  out.levels.resize(size_t(t.depth));
+  for (int level = t.depth - 1; level >= 1; --level) {
+    const uint32_t tiles = start[size_t(level) + 1] - start[size_t(level)];
+    program.set("uLevel", level);
+    program.set("uFirst", start[size_t(level)] * 8u);
+    program.set("uCount", tiles * 8u);
+    dispatch(gl, size_t(tiles) * 8);
+    out.levels[size_t(level)] = download(gl, v.nodeFaces.get(), size_t(tiles) * 8 * 6,
+                                         size_t(start[size_t(level)]) * 8 * 6);
+  }
+  gl.check("mip_svo");
+  return out;
+}
+
+// Runs `shader` once per leaf slot over the octree's volumes, `blocks` bound from binding 5 on.
+void leafPass(const Gl& gl, const Tree& t, const Volumes& v, const ShaderSource& shader,
+              std::initializer_list<GLuint> blocks, const char* what) {
+  Program program(gl, {&shader});
+  program.use();
+  program.set("uDepth", t.depth);
+  program.set("uCount", unsigned(v.slots));
+  v.bind(gl);
+  GLuint binding = 5;
+  for (const GLuint block : blocks) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, binding++, block);
+  dispatch(gl, v.slots);
+  gl.check(what);
+}
+
+}  // namespace
+
+LeafRadiance injectLeaves(GlContext& context, const Tree& tree, const voxgi::svo::Leaves& leaves,
+                          const std::vector<shared::LightData>& lights,
+                          const shared::LightVoxelsParams& params) {
+  context.makeCurrent();
+  const Gl& gl = context.gl();
+  const Volumes v(gl, tree, leaves, nullptr);
+  GlBuffer lightBlock(gl, createBlock(gl, params, lights));
+  GlBuffer direct(gl, createBuffer(gl, v.slots * sizeof(glm::vec4), nullptr));
+  leafPass(gl, tree, v, shaders::svo_inject_svo_comp, {lightBlock.get(), direct.get()},
+           "inject_svo");
+  return download(gl, direct.get(), v.slots);
+}
+
+NodeLevels mipTree(GlContext& context, const Tree& tree, const voxgi::svo::Leaves& leaves,
+                   const LeafRadiance& radiance, voxgi::svo::FirstStep first) {
+  context.makeCurrent();
+  const Volumes v(context.gl(), tree, leaves, &radiance);
+  return mipInto(context.gl(), tree, v, first);
+}
+
+LeafRadiance bounceOnce(GlContext& context, const Tree& tree, const voxgi::svo::Leaves& leaves,
+                        const LeafRadiance& direct, const LeafRadiance& source,
+                        const std::vector<shared::ConeData>& cones,
+                        const shared::ConeTraceParams& params, voxgi::svo::FirstStep first,
+                        voxgi::svo::FrameOutputs* outputs) {
+  context.makeCurrent();
+  const Gl& gl = context.gl();
+  const Volumes v(gl, tree, leaves, &source);
+  NodeLevels mips = mipInto(gl, tree, v, first);
+  GlBuffer coneBlock(gl, createBlock(gl, params, cones));
+  GlBuffer directBlock(gl, upload(gl, direct));
+  GlBuffer frame(gl, createBuffer(gl, 2 * v.slots * sizeof(glm::vec4), nullptr));
+  leafPass(gl, tree, v, shaders::svo_gather_svo_comp,
+           {coneBlock.get(), directBlock.get(), frame.get()}, "gather_svo");
+  const std::vector<glm::vec4> both = download(gl, frame.get(), 2 * v.slots);
+  LeafRadiance next(v.slots), gathered(v.slots);
+  for (size_t s = 0; s < v.slots; ++s) {
+    next[s] = both[2 * s];
+    gathered[s] = both[2 * s + 1];
+  }
+  if (outputs != nullptr) *outputs = {std::move(mips), std::move(gathered)};
+  return next;
+}
+
+}  // namespace voxgi::gpu::svo

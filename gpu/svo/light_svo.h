@@ -1,0 +1,38 @@
+// Light in the sparse voxel octree on the GPU (shaders/svo/inject_svo.comp, mip_svo.comp,
+// gather_svo.comp): the twins of cpu/svo/leaf_light.h, running the same shared kernels on an
+// octree in the canonical form, so their results equal the CPU's bit for bit on llvmpipe.
+#pragma once
+
+#include <vector>
+
+#include "common/svo/canonical.h"
+#include "common/svo/light_types.h"
+#include "gpu/context.h"
+#include "shaders/shared/vct/cone_types.h"
+#include "shaders/shared/vct/light_voxels_kernel.h"
+
+namespace voxgi::gpu::svo {
+
+// The octree's words the light passes read (nodes, tile records, leaf tiles) at tree `depth`.
+struct Tree {
+  const voxgi::svo::OctreeWords& words;
+  int depth;
+};
+
+voxgi::svo::LeafRadiance injectLeaves(GlContext& context, const Tree& tree,
+                                      const voxgi::svo::Leaves& leaves,
+                                      const std::vector<shared::LightData>& lights,
+                                      const shared::LightVoxelsParams& params);
+
+voxgi::svo::NodeLevels mipTree(GlContext& context, const Tree& tree,
+                               const voxgi::svo::Leaves& leaves,
+                               const voxgi::svo::LeafRadiance& radiance,
+                               voxgi::svo::FirstStep first);
+
+voxgi::svo::LeafRadiance bounceOnce(
+    GlContext& context, const Tree& tree, const voxgi::svo::Leaves& leaves,
+    const voxgi::svo::LeafRadiance& direct, const voxgi::svo::LeafRadiance& source,
+    const std::vector<shared::ConeData>& cones, const shared::ConeTraceParams& params,
+    voxgi::svo::FirstStep first, voxgi::svo::FrameOutputs* outputs = nullptr);
+
+}  // namespace voxgi::gpu::svo

@@ -1,0 +1,43 @@
+#version 450 core
+// One gather at every leaf that holds samples (shaders/shared/vct/bounce_kernel.h through the
+// octree): the diffuse cones over the mipmap of the previous frame's radiance, giving the next
+// frame's radiance and the gathered E / pi premultiplied by the opacity. One invocation per leaf
+// slot.
+layout(local_size_x = 64) in;
+#include "shared/vct/cone_types.h"
+#include "svo_volumes.glsl"
+
+layout(std430, binding = 6) readonly buffer Direct { vec4 direct[]; };
+// per leaf slot: the next radiance, then the gathered light
+layout(std430, binding = 7) writeonly buffer Frame { vec4 frame[]; };
+uniform uint uCount;
+
+vec4 directAt(ivec3 v) {
+  uint s = slotOf(uDepth, v);
+  return s == kSvoNull ? vec4(0.0f) : direct[s];
+}
+ConeData coneAt(int i);  // defined below, after the cone block
+
+#include "shared/vct/bounce_kernel.h"
+
+layout(std430, binding = 5) readonly buffer Cones {
+  ConeTraceParams params;
+  ConeData cones[];
+};
+
+ConeData coneAt(int i) { return cones[i]; }
+
+void main() {
+  uint s = gl_GlobalInvocationID.x + gl_NumWorkGroups.x * 64u * gl_GlobalInvocationID.y;
+  if (s >= uCount) return;
+  ivec3 v;
+  if (!realLeaf(s, v)) {
+    frame[2u * s] = vec4(0.0f);
+    frame[2u * s + 1u] = vec4(0.0f);
+    return;
+  }
+  vec3 g = gatherVoxel(v, params);
+  vec4 d = direct[s];
+  frame[2u * s] = addReflected(d, albedoAt(v), g);
+  frame[2u * s + 1u] = vec4(g * d.a, d.a);
+}
