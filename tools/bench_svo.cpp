@@ -73,10 +73,10 @@ int runBenchSvo(const BenchSvoOptions& o) {
   std::cout << "PLY load: " << scene.pointCount() << " points from " << cloudFile << " in "
             << std::fixed << std::setprecision(3) << loadSeconds << " s, " << loadSeconds / millions
             << " s per million points\n\n";
-  std::cout
-      << "| depth | threads | samples s | structure s | leaf sums s | build s | OpenVDB "
-         "points s | build / OpenVDB | node tiles | leaf tiles | octree MB | / Salm's 134 MB |\n"
-      << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  std::cout << "| depth | threads | samples s | structure s | leaf sums s | build s | OpenVDB "
+               "points s | build / OpenVDB | node tiles | leaf tiles | octree MB | / Salm's "
+               "Cornell box |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   nlohmann::json rows = nlohmann::json::array();
   for (const int depth : o.depths) {
     scene.grid = fitGrid(scene.bounds(), 1 << depth);
