@@ -3,7 +3,6 @@
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include <nlohmann/json.hpp>
 
@@ -70,9 +69,8 @@ size_t typeComponents(const std::string& type) {
 }  // namespace
 
 void checkGltf(const std::string& path) {
-  const uint64_t size = requireInputFile(path, "", "glTF file");
-  std::ifstream in(path, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string bytes = readInputFile(path, "", "glTF file");
+  const uint64_t size = bytes.size();
   std::string text;
   uint64_t binChunk = 0;  // bytes of the GLB's BIN chunk
   const bool glb = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;

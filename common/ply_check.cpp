@@ -21,6 +21,29 @@ constexpr size_t kMaxHeaderBytes = 64 * 1024;
 
 }  // namespace
 
+bool plyIntegral(Type t) {
+  return t != Type::float32 && t != Type::float64;
+}
+
+bool parsePlyAscii(std::string_view word, Type type, double& value) {
+  const char* end = word.data() + word.size();
+  if (plyIntegral(type)) {
+    int64_t v = 0;
+    const auto [ptr, ec] = std::from_chars(word.data(), end, v);
+    if (ec != std::errc() || ptr != end) return false;
+    value = double(v);
+    return true;
+  }
+  if (type == Type::float32) {  // out of float's range: from_chars reports it
+    float f = 0.0f;
+    const auto [ptr, ec] = std::from_chars(word.data(), end, f);
+    value = double(f);
+    return ec == std::errc() && ptr == end;
+  }
+  const auto [ptr, ec] = std::from_chars(word.data(), end, value);
+  return ec == std::errc() && ptr == end;
+}
+
 size_t plyTypeSize(Type t) {
   switch (t) {
     case Type::int8:
@@ -40,10 +63,6 @@ size_t plyTypeSize(Type t) {
 }
 
 namespace {
-
-bool integral(Type t) {
-  return t != Type::float32 && t != Type::float64;
-}
 
 bool parseType(const std::string& s, Type& t) {
   static const std::pair<const char*, Type> names[] = {
@@ -151,20 +170,6 @@ struct BinaryReader {
   }
 };
 
-// Parses an ASCII value of `type`: an integer for integer types, any number for floats.
-bool parseAscii(std::string_view word, Type type, double& value) {
-  const char* end = word.data() + word.size();
-  if (integral(type)) {
-    int64_t v = 0;
-    const auto [ptr, ec] = std::from_chars(word.data(), end, v);
-    if (ec != std::errc() || ptr != end) return false;
-    value = double(v);
-    return true;
-  }
-  const auto [ptr, ec] = std::from_chars(word.data(), end, value);
-  return ec == std::errc() && ptr == end;
-}
-
 }  // namespace
 
 PlyHeader readPlyHeader(const std::string& path, const std::string& bytes) {
@@ -249,7 +254,7 @@ PlyHeader readPlyHeader(const std::string& path, std::string_view bytes, uint64_
       PlyProperty p;
       const bool ok = w.size() == 5 && w[1] == "list"
                           ? parseType(std::string(w[2]), p.countType) &&
-                                parseType(std::string(w[3]), p.type) && integral(p.countType)
+                                parseType(std::string(w[3]), p.type) && plyIntegral(p.countType)
                           : w.size() == 3 && parseType(std::string(w[1]), p.type);
       if (!ok)
         throw InputError(path, where,
@@ -331,7 +336,7 @@ PlyHeader checkPly(const std::string& path) {
           return;
         }
         if (next >= w.size()) throw InputError(path, where, "the line has too few values");
-        if (!parseAscii(w[next], type, v))
+        if (!parsePlyAscii(w[next], type, v))
           throw InputError(
               path, where,
               "'" + std::string(w[next]).substr(0, 32) + "' is not a valid value of its type");

@@ -36,6 +36,11 @@ struct PlyHeader {
 
 // Bytes a value of `type` takes in a binary body.
 size_t plyTypeSize(PlyProperty::Type type);
+// Whether `type` is an integer type.
+bool plyIntegral(PlyProperty::Type type);
+// Parses the whole of `word` as an ASCII value of `type`: an integer for integer types, a number
+// within float's range for float (1e39 is no float), any number for double.
+bool parsePlyAscii(std::string_view word, PlyProperty::Type type, double& value);
 
 // Reads and checks the header of `bytes` (the file's content): the magic line, the format,
 // elements and properties, end_header within the first 64 KiB, and counts that fit in the rest.

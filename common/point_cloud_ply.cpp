@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <bit>
-#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -27,10 +26,6 @@ struct Layout {
   int color[3] = {-1, -1, -1};
   int radius = -1;
 };
-
-bool integral(Type t) {
-  return t != Type::float32 && t != Type::float64;
-}
 
 // The largest value of an unsigned integer colour type (0: not one).
 double colorMaximum(Type t) {
@@ -75,7 +70,7 @@ Layout layoutOf(const std::string& path, const PlyElement& vertex) {
   for (const int c : l.color)
     if (c >= 0) {
       const Type t = vertex.properties[size_t(c)].type;
-      if (integral(t) && colorMaximum(t) == 0.0)
+      if (plyIntegral(t) && colorMaximum(t) == 0.0)
         throw InputError(
             path, where,
             vertex.properties[size_t(c)].name + ": a colour is uchar, ushort, float or double");
@@ -249,22 +244,8 @@ PlyPoints readPlyPoints(const std::string& path) {
       if (c == end) fail(i, "the line has too few values");
       const char* word = c;
       while (c < end && *c != ' ' && *c != '\t' && *c != '\r') ++c;
-      const Type type = vertex.properties[p].type;
-      bool ok;
-      if (integral(type)) {
-        int64_t n = 0;
-        const auto r = std::from_chars(word, c, n);
-        ok = r.ec == std::errc() && r.ptr == c;
-        v[p] = double(n);
-      } else if (type == Type::float32) {  // a value beyond float's range is not a float
-        float f = 0.0f;
-        const auto r = std::from_chars(word, c, f);
-        ok = r.ec == std::errc() && r.ptr == c;
-        v[p] = double(f);
-      } else {
-        const auto r = std::from_chars(word, c, v[p]);
-        ok = r.ec == std::errc() && r.ptr == c;
-      }
+      const bool ok =
+          parsePlyAscii(std::string_view(word, size_t(c - word)), vertex.properties[p].type, v[p]);
       if (!ok)
         fail(i, vertex.properties[p].name + ": '" +
                     std::string(word, size_t(c - word)).substr(0, 32) +

@@ -240,6 +240,26 @@ bool isPointCloudFile(const std::string& path) {
   return plyIsPointCloud(readPlyHeaderOfFile(path));
 }
 
+// The JSON material a mesh or cloud entry names in "material", if it has that field: one of the
+// scene's first `named` materials (those of the file's "materials").
+std::optional<uint32_t> namedMaterial(const Field& f, const Scene& scene, size_t named) {
+  if (!f.has("material")) return std::nullopt;
+  const std::string name = f.at("material").string();
+  for (size_t k = 0; k < named; ++k)
+    if (scene.materials[k].name == name) return static_cast<uint32_t>(k);
+  f.at("material").fail("unknown material '" + name + "'");
+}
+
+// The material "default" (albedo 0.8), added on first use.
+uint32_t defaultMaterial(Scene& scene) {
+  for (size_t k = 0; k < scene.materials.size(); ++k)
+    if (scene.materials[k].name == "default") return static_cast<uint32_t>(k);
+  Material fallback;
+  fallback.name = "default";
+  scene.materials.push_back(fallback);
+  return static_cast<uint32_t>(scene.materials.size() - 1);
+}
+
 // "point_clouds": [{"file", "material", "transform", "normals", "viewpoint", "colors"}].
 PointCloudOptions readPointCloud(const Field& f, Scene& scene, size_t namedMaterials) {
   f.allowKeys({"file", "material", "transform", "normals", "viewpoint", "colors"});
@@ -270,19 +290,8 @@ PointCloudOptions readPointCloud(const Field& f, Scene& scene, size_t namedMater
     else
       f.at("colors").fail("must be \"srgb\", \"linear\" or \"ignore\"");
   }
-  uint32_t material = 0;
-  if (f.has("material")) {
-    const std::string name = f.at("material").string();
-    bool found = false;
-    for (size_t k = 0; k < namedMaterials; ++k)
-      if (scene.materials[k].name == name) material = uint32_t(k), found = true;
-    if (!found) f.at("material").fail("unknown material '" + name + "'");
-  } else {
-    Material fallback;
-    fallback.name = "default";
-    material = uint32_t(scene.materials.size());
-    scene.materials.push_back(fallback);
-  }
+  const std::optional<uint32_t> named = namedMaterial(f, scene, namedMaterials);
+  const uint32_t material = named ? *named : defaultMaterial(scene);
   const glm::dmat4 transform =
       f.has("transform") ? readTransform(f.at("transform")) : glm::dmat4(1.0);
   importPointCloud(scene, cloudPath.string(), transform, material, options);
@@ -357,10 +366,7 @@ Scene loadScene(const std::string& path) {
   if (ext != ".json") {
     requireInputFile(path, "", "mesh file");
     if (isPointCloudFile(path)) {
-      Material fallback;
-      fallback.name = "default";
-      scene.materials.push_back(fallback);
-      importPointCloud(scene, path, glm::dmat4(1.0), 0, {});
+      importPointCloud(scene, path, glm::dmat4(1.0), defaultMaterial(scene), {});
     } else {
       importMeshFile(scene, path, glm::dmat4(1.0), std::nullopt);
     }
@@ -412,13 +418,7 @@ Scene loadScene(const std::string& path) {
     } catch (const InputError& e) {
       file.fail(e.what());  // the scene file and field, then the mesh file and what is wrong
     }
-    std::optional<uint32_t> material;
-    if (m.has("material")) {
-      const std::string name = m.at("material").string();
-      for (size_t k = 0; k < namedMaterials; ++k)
-        if (scene.materials[k].name == name) material = static_cast<uint32_t>(k);
-      if (!material) m.at("material").fail("unknown material '" + name + "'");
-    }
+    const std::optional<uint32_t> material = namedMaterial(m, scene, namedMaterials);
     const glm::dmat4 transform =
         m.has("transform") ? readTransform(m.at("transform")) : glm::dmat4(1.0);
     const size_t before = scene.materials.size();

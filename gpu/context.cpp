@@ -10,6 +10,10 @@ GlPlatform parseGlPlatform(const std::string& text) {
   throw InputError("--gl", "", "must be osmesa or egl, got '" + text + "'");
 }
 
+const char* glPlatformName(GlPlatform platform) {
+  return platform == GlPlatform::egl ? "egl" : "osmesa";
+}
+
 std::unique_ptr<GlContext> GlContext::create(GlPlatform platform) {
   return platform == GlPlatform::egl ? createEglContext() : createOsmesaContext();
 }

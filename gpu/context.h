@@ -11,6 +11,7 @@ namespace voxgi::gpu {
 
 enum class GlPlatform { osmesa, egl };
 GlPlatform parseGlPlatform(const std::string& text);  // "osmesa" | "egl"; throws InputError
+const char* glPlatformName(GlPlatform platform);      // its --gl name
 
 class GlContext {
  public:

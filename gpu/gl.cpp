@@ -29,6 +29,14 @@ GLuint createBuffer(const Gl& gl, size_t bytes, const void* data) {
   return id;
 }
 
+void dispatchLinear(const Gl& gl, uint64_t count) {
+  if (count == 0) return;
+  const auto groups = static_cast<GLuint>((count + 63) / 64);
+  const GLuint width = std::min<GLuint>(groups, 65535);
+  gl.DispatchCompute(width, (groups + width - 1) / width, 1);
+  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
 void deleteBuffer(const Gl& gl, GLuint id) {
   gl.DeleteBuffers(1, &id);
 }

@@ -65,6 +65,11 @@ GLuint createBlock(const Gl& gl, const Header& header, const std::vector<Record>
   return createBuffer(gl, bytes.size(), bytes.data());
 }
 void deleteBuffer(const Gl& gl, GLuint id);
+// One dispatch of `count` invocations of the current compute program, 64 a group (its local size),
+// two-dimensional past GL's 65535 groups per dimension — a shader's invocation index is
+// gl_GlobalInvocationID.x + gl_NumWorkGroups.x * 64 * gl_GlobalInvocationID.y — then a barrier
+// before storage reads and buffer updates. Nothing for a count of 0.
+void dispatchLinear(const Gl& gl, uint64_t count);
 void deleteTexture(const Gl& gl, GLuint id);
 using GlBuffer = GlName<deleteBuffer>;
 using GlTexture = GlName<deleteTexture>;

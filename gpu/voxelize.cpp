@@ -68,9 +68,7 @@ void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& bu
       splat.set("uTriangleCount", static_cast<unsigned>(tris.size()));
       splat.set("uRowCount", firstRow.back());
       splat.use();
-      const uint32_t groups = (firstRow.back() + 63u) / 64u;
-      const uint32_t width = std::min<uint32_t>(groups, 65535u);
-      gl.DispatchCompute(width, (groups + width - 1) / width, 1);
+      dispatchLinear(gl, firstRow.back());
     } else {
       Program raster(gl,
                      {&shaders::voxelize_vert, &shaders::voxelize_geom, &shaders::voxelize_frag});

@@ -49,7 +49,7 @@ INSTANTIATE_TEST_SUITE_P(
     [](const testing::TestParamInfo<Case>& p) {
       std::string name = std::string(p.param.scene).substr(7);
       name = name.substr(0, name.find('.')) + "_" + p.param.preset + "_" +
-             (p.param.platform == gpu::GlPlatform::egl ? "egl" : "osmesa");
+             gpu::glPlatformName(p.param.platform);
       return name;
     });
 
@@ -109,7 +109,7 @@ INSTANTIATE_TEST_SUITE_P(
     [](const testing::TestParamInfo<LpvCase>& p) {
       std::string scene = std::string(p.param.scene).substr(7);
       return scene.substr(0, scene.find('.')) + "_" + p.param.technique + "_" +
-             (p.param.platform == gpu::GlPlatform::egl ? "egl" : "osmesa") +
+             gpu::glPlatformName(p.param.platform) +
              (p.param.sets.empty() ? "" : "_options" + std::to_string(p.param.sets.size())) +
              (p.param.spotAndSun ? "_spot_sun" : "");
     });

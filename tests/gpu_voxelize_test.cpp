@@ -17,10 +17,6 @@
 namespace voxgi::test {
 namespace {
 
-const char* name(gpu::GlPlatform p) {
-  return p == gpu::GlPlatform::egl ? "egl" : "osmesa";
-}
-
 void expectBackendsAgree(const Scene& scene, VoxelizeMode mode, gpu::GlPlatform platform) {
   Settings settings;
   settings.voxelizeMode = mode;
@@ -29,7 +25,7 @@ void expectBackendsAgree(const Scene& scene, VoxelizeMode mode, gpu::GlPlatform 
   std::ostringstream table;
   validation::printReport(table, reports);
   EXPECT_TRUE(reports[0].pass) << scene.file << " " << voxelizeModeName(mode) << " on "
-                               << name(platform) << "\n"
+                               << gpu::glPlatformName(platform) << "\n"
                                << table.str();
   // On llvmpipe the shared kernel makes the backends bit-identical: no ties are even needed.
   for (const auto& b : reports[0].buffers) EXPECT_EQ(b.differing, 0u) << b.buffer;
@@ -48,7 +44,7 @@ std::string testName(
   const SceneCase& sc = std::get<2>(param.param);
   std::string file = sc.file;
   file = file.substr(file.find('/') + 1, file.find('.') - file.find('/') - 1);
-  return std::string(name(std::get<0>(param.param))) + "_" +
+  return std::string(gpu::glPlatformName(std::get<0>(param.param))) + "_" +
          voxelizeModeName(std::get<1>(param.param)) + "_" + file + "_" +
          std::to_string(sc.resolution);
 }

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <bit>
-#include <optional>
 #include <vector>
 
 #include "common/parallel.h"

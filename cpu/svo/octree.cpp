@@ -26,10 +26,9 @@ struct LevelTiles {
   std::vector<uint8_t> border;
 };
 
-// f(leaf key, weight) for every leaf inside the domain whose cell the sample's RoI overlaps.
+// f(leaf, weight) for every leaf of a grid n leaves a side whose cell the sample's RoI overlaps.
 template <class F>
-void forEachLeaf(const shared::SvoSample& s, int depth, const F& f) {
-  const int n = 1 << depth;
+void forEachLeaf(const shared::SvoSample& s, int n, const F& f) {
   const glm::vec3 p(s.position);
   if (!shared::splatInDomain(p, float(n))) return;
   const float r = s.position.w;
@@ -44,8 +43,7 @@ void forEachLeaf(const shared::SvoSample& s, int depth, const F& f) {
       for (int cx = 0; cx < 2; ++cx) {
         const int i = ax.lo + cx;
         if ((cx == 0 ? ax.w0 : ax.w1) <= 0.0f || i < 0 || i >= n) continue;
-        f(shared::mortonEncode(glm::uvec3(glm::ivec3(i, j, k))),
-          shared::splatWeight(ax, ay, az, s.albedo.w, glm::ivec3(cx, cy, cz)));
+        f(glm::ivec3(i, j, k), shared::splatWeight(ax, ay, az, s.albedo.w, glm::ivec3(cx, cy, cz)));
       }
     }
   }
@@ -58,7 +56,8 @@ LevelTiles markLeafTiles(std::span<const shared::SvoSample> samples, int depth) 
   parallelFor(tbb::blocked_range<size_t>(0, samples.size(), 4096),
               [&](const tbb::blocked_range<size_t>& range) {
                 for (size_t i = range.begin(); i != range.end(); ++i)
-                  forEachLeaf(samples[i], depth, [&](uint32_t key, float) {
+                  forEachLeaf(samples[i], 1 << depth, [&](glm::ivec3 leaf, float) {
+                    const uint32_t key = shared::mortonEncode(glm::uvec3(leaf));
                     std::atomic_ref<uint8_t>(marks[key >> 3])
                         .fetch_or(uint8_t(1u << (key & 7u)), std::memory_order_relaxed);
                   });
@@ -306,20 +305,8 @@ Words accumulateLeaves(const Octree& octree, std::span<const shared::SvoSample> 
       for (uint32_t k = start[bucket]; k < start[bucket + 1]; ++k) {
         if ((sortedReach[k] & o) != o) continue;  // its leaves stop short of this tile
         const SvoSample& s = sorted[k];
-        const float r = s.position.w;
-        const SplatAxis a[3] = {splatAxis(s.position.x, r), splatAxis(s.position.y, r),
-                                splatAxis(s.position.z, r)};
-        for (int c = 0; c < 8; ++c) {
-          const glm::ivec3 corner(c & 1, (c >> 1) & 1, c >> 2);
-          bool inside = true;
-          glm::ivec3 leaf;
-          for (int axis = 0; axis < 3 && inside; ++axis) {
-            leaf[axis] = a[axis].lo + corner[axis];
-            inside = (corner[axis] == 0 ? a[axis].w0 : a[axis].w1) > 0.0f && leaf[axis] >= 0 &&
-                     leaf[axis] < n && (leaf[axis] >> 1) == tile[axis];
-          }
-          if (!inside) continue;
-          const float w = splatWeight(a[0], a[1], a[2], s.albedo.w, corner);
+        forEachLeaf(s, n, [&](glm::ivec3 leaf, float w) {
+          if ((leaf >> 1) != tile) return;  // another tile's: it sums it from this bucket
           int32_t* v = local[localId(glm::uvec3(leaf))];
           const int opacity = fixedRound(w, 1.0f, scale);
           if (v[kSumOpacity] > std::numeric_limits<int32_t>::max() - opacity) {
@@ -332,7 +319,7 @@ Words accumulateLeaves(const Octree& octree, std::span<const shared::SvoSample> 
             v[kSumNormal + ch] += fixedRound(w, s.normal[ch], scale);
             v[kSumEmission + ch] += fixedRound(w, s.emission[ch], scale);
           }
-        }
+        });
       }
     }
     for (int leaf = 0; leaf < 8; ++leaf)

@@ -28,9 +28,6 @@ class TileIndex {
     if ((word & bit) == 0) return 0xffffffffu;
     return before_[key >> 6] + uint32_t(std::popcount(word & (bit - 1)));
   }
-  bool contains(uint32_t key) const {
-    return key < bits_.size() * 64 && ((bits_[key >> 6] >> (key & 63u)) & 1u);
-  }
 
  private:
   std::vector<uint64_t> bits_;

@@ -66,11 +66,7 @@ void lpv::inject_geometry(GlContext& context, const StageContext& ctx, BufferSet
                                       scratchBlock.get()};
       for (GLuint b = 0; b < 4; ++b)
         gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, scatterBlocks[b]);
-      const auto groups =
-          static_cast<GLuint>((uint64_t(r) * uint64_t(r) * uint64_t(count) + 63) / 64);
-      const GLuint width = std::min<GLuint>(std::max<GLuint>(groups, 1), 65535);
-      gl.DispatchCompute(width, (groups + width - 1) / width, 1);
-      gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+      dispatchLinear(gl, uint64_t(r) * uint64_t(r) * uint64_t(count));
       bindCells();
       cellPass(gl, cells, n, 1);
     }

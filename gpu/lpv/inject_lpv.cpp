@@ -12,18 +12,6 @@
 #include "gpu/volumes.h"
 
 namespace voxgi::gpu {
-namespace {
-
-// One dispatch of `count` invocations, 64 per group, two-dimensional past 65535 groups.
-void dispatch(const Gl& gl, uint64_t count) {
-  const auto groups = static_cast<GLuint>((count + 63) / 64);
-  const GLuint width = std::min<GLuint>(std::max<GLuint>(groups, 1), 65535);
-  if (groups > 0) gl.DispatchCompute(width, (groups + width - 1) / width, 1);
-  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-}
-
-}  // namespace
-
 void lpv::inject_lpv(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   const Gl& gl = beginStage(context, ctx, StageId::lpv_inject_lpv);
   const voxgi::lpv::ShBuffers sh = voxgi::lpv::shBuffers(ctx.settings.lpv);
@@ -43,7 +31,7 @@ void lpv::inject_lpv(GlContext& context, const StageContext& ctx, BufferSet& buf
   // Without an RSM its blocks are bound to the VPLs, which the emitters' pass never reads as such.
   for (GLuint b = 2; b <= 5; ++b) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, vplBlock.get());
   program.set("uSource", 0);
-  dispatch(gl, injection.vpls.size());
+  dispatchLinear(gl, injection.vpls.size());
   gl.check("inject_lpv: emitters");
   if (ctx.plan.runs(StageId::lpv_rsm)) {
     const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings.lpv);
@@ -58,7 +46,7 @@ void lpv::inject_lpv(GlContext& context, const StageContext& ctx, BufferSet& buf
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, normalBlock.get());
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, depthBlock.get());
     program.set("uSource", 1);
-    dispatch(gl, flux.elementCount());
+    dispatchLinear(gl, flux.elementCount());
     gl.check("inject_lpv: RSM texels");
   }
   readWords(gl, sumBlock.get(), sums);

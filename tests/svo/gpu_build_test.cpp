@@ -1,4 +1,4 @@
-// The octree's GPU build (gpu/svo/build_svo.h) against the CPU's, on both GL platforms: the GPU
+// The octree's GPU build (gpu/svo/octree.h) against the CPU's, on both GL platforms: the GPU
 // allocates tiles with atomics in any order, and in the canonical form every word — nodes,
 // neighbours, tile records and leaf sums — equals the CPU build's (docs/svo.md).
 #include <random>
@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "cpu/svo/octree.h"
-#include "gpu/svo/build_svo.h"
+#include "gpu/svo/octree.h"
 #include "tests/gl_contexts.h"
 
 namespace voxgi::test {
@@ -54,9 +54,7 @@ TEST_P(GpuSvoBuild, CanonicalFormEqualsTheCpuBuildWordForWord) {
 
 INSTANTIATE_TEST_SUITE_P(Platforms, GpuSvoBuild,
                          testing::Values(gpu::GlPlatform::osmesa, gpu::GlPlatform::egl),
-                         [](const auto& p) {
-                           return std::string(p.param == gpu::GlPlatform::egl ? "egl" : "osmesa");
-                         });
+                         [](const auto& p) { return std::string(gpu::glPlatformName(p.param)); });
 
 }  // namespace
 }  // namespace voxgi::test

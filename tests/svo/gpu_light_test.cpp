@@ -1,4 +1,4 @@
-// Light in the octree on the GPU (gpu/svo/light_svo.h) against the CPU (cpu/svo/leaf_light.h) on
+// Light in the octree on the GPU (gpu/svo/leaf_light.h) against the CPU (cpu/svo/leaf_light.h) on
 // both GL platforms, with the dense technique's registered tolerances for the same kernels
 // (validation/vct/comparisons.inc): injection as light_voxels (bit for bit on llvmpipe), the
 // six-face mipmap (plain and NDF-weighted) bit for bit, and one gather as bounce: GLSL's division
@@ -16,7 +16,7 @@
 #include "common/svo/samples.h"
 #include "common/vct/kernel_params.h"
 #include "cpu/svo/leaf_light.h"
-#include "gpu/svo/light_svo.h"
+#include "gpu/svo/leaf_light.h"
 #include "tests/gl_contexts.h"
 #include "tests/test_scenes.h"
 
@@ -98,9 +98,7 @@ TEST_P(GpuSvoLight, InjectionMipAndGatherAgreeWithTheCpu) {
 
 INSTANTIATE_TEST_SUITE_P(Platforms, GpuSvoLight,
                          testing::Values(gpu::GlPlatform::osmesa, gpu::GlPlatform::egl),
-                         [](const auto& p) {
-                           return std::string(p.param == gpu::GlPlatform::egl ? "egl" : "osmesa");
-                         });
+                         [](const auto& p) { return std::string(gpu::glPlatformName(p.param)); });
 
 }  // namespace
 }  // namespace voxgi::test

@@ -20,8 +20,6 @@
 
 VOXGI_NAMESPACE_BEGIN
 
-const int kSvoMinDepth = 2;
-const int kSvoMaxDepth = 10;  // 3 bits a level in a uint key
 const uint kSvoNull = 0xffffffffu;
 
 // A node: its child tile (a node tile, or the leaf tile at level D-1), its six neighbours at the

@@ -1,4 +1,4 @@
-#include "gpu/svo/build_svo.h"
+#include "gpu/svo/octree.h"
 
 #include <algorithm>
 #include <vector>
@@ -146,17 +146,14 @@ class Builder {
                               sums_ ? sums_->get() : marks_->get()};
     for (GLuint b = 0; b < 8; ++b) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, blocks[b]);
   }
-  // `count` invocations of `pass`, 64 a group, two-dimensional past 65535 groups.
+  // `count` invocations of `pass`.
   void dispatch(Pass pass, size_t count, uint32_t first = 0) {
     if (count == 0) return;
     bind();
     program_.set("uPass", int(pass));
     program_.set("uFirst", first);
     program_.set("uCount", unsigned(count));
-    const auto groups = GLuint((count + 63) / 64);
-    const GLuint width = std::min<GLuint>(groups, 65535);
-    gl_.DispatchCompute(width, (groups + width - 1) / width, 1);
-    gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    dispatchLinear(gl_, count);
   }
   // A node pass over the nodes of tiles [firstTile, endTile) of `level`.
   void dispatchNodes(Pass pass, int level, uint32_t firstTile, uint32_t endTile) {

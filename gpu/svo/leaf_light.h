@@ -1,6 +1,8 @@
 // Light in the sparse voxel octree on the GPU (shaders/svo/inject_svo.comp, mip_svo.comp,
 // gather_svo.comp): the twins of cpu/svo/leaf_light.h, running the same shared kernels on an
-// octree in the canonical form, so their results equal the CPU's bit for bit on llvmpipe.
+// octree in the canonical form. On llvmpipe injection and the mipmap equal the CPU's bit for bit;
+// the gather differs by an ULP here and there (GLSL's division normalising the leaf normal), as
+// the dense bounce does.
 #pragma once
 
 #include <vector>

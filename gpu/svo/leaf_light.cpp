@@ -1,4 +1,4 @@
-#include "gpu/svo/light_svo.h"
+#include "gpu/svo/leaf_light.h"
 
 #include <algorithm>
 #include <initializer_list>
@@ -11,15 +11,6 @@ namespace {
 
 using voxgi::svo::LeafRadiance;
 using voxgi::svo::NodeLevels;
-
-// `count` invocations, 64 a group, two-dimensional past 65535 groups.
-void dispatch(const Gl& gl, size_t count) {
-  if (count == 0) return;
-  const auto groups = GLuint((count + 63) / 64);
-  const GLuint width = std::min<GLuint>(groups, 65535);
-  gl.DispatchCompute(width, (groups + width - 1) / width, 1);
-  gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-}
 
 template <class T>
 GLuint upload(const Gl& gl, const std::vector<T>& v) {
@@ -68,8 +59,8 @@ struct Volumes {
 std::vector<uint32_t> levelStarts(const Tree& t) {
   std::vector<uint32_t> start(size_t(t.depth) + 1, 0);
   const size_t tiles = t.words.tiles.size() / shared::kTileWords;
+  uint32_t s = 0;
   for (int l = 1; l <= t.depth; ++l) {
-    uint32_t s = 0;
     while (s < tiles && t.words.tiles[s * shared::kTileWords + shared::kTileLevel] < uint32_t(l))
       ++s;
     start[size_t(l)] = s;
@@ -92,7 +83,7 @@ NodeLevels mipInto(const Gl& gl, const Tree& t, const Volumes& v, voxgi::svo::Fi
     program.set("uLevel", level);
     program.set("uFirst", start[size_t(level)] * 8u);
     program.set("uCount", tiles * 8u);
-    dispatch(gl, size_t(tiles) * 8);
+    dispatchLinear(gl, size_t(tiles) * 8);
     out.levels[size_t(level)] = download(gl, v.nodeFaces.get(), size_t(tiles) * 8 * 6,
                                          size_t(start[size_t(level)]) * 8 * 6);
   }
@@ -110,7 +101,7 @@ void leafPass(const Gl& gl, const Tree& t, const Volumes& v, const ShaderSource&
   v.bind(gl);
   GLuint binding = 5;
   for (const GLuint block : blocks) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, binding++, block);
-  dispatch(gl, v.slots);
+  dispatchLinear(gl, v.slots);
   gl.check(what);
 }
 
