@@ -63,6 +63,8 @@ uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image, int 
       return n * n * n * static_cast<uint64_t>(series);
     case BufferShape::maps:
       return uint64_t(maps.x) * uint64_t(maps.x) * uint64_t(maps.y);
+    case BufferShape::sparse:
+      return 0;  // unknown before the stage counts it
   }
   return 0;
 }

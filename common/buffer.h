@@ -97,7 +97,8 @@ class BufferSet {
 };
 
 // Elements of a buffer of `shape` for an N^3 grid or a width x height image (`series` volumes for
-// the series shape, maps.y maps of maps.x^2 texels for the maps shape).
+// the series shape, maps.y maps of maps.x^2 texels for the maps shape; 0 for a sparse buffer,
+// whose stage checks its own memory).
 uint64_t shapeElements(BufferShape shape, int resolution, glm::ivec2 image, int series = 1,
                        glm::ivec2 maps = {});
 // Elements of a buffer in `shape` as a 3D extent (x-fastest); pyramids are one row.

@@ -75,6 +75,19 @@ CameraGeometry prepareCameraGeometry(const Scene& scene) {
       }
     }
   }
+  const double scale = 1.0 / grid.voxelSize();
+  for (size_t c = 0; c < scene.pointClouds.size(); ++c) {
+    const PointCloud& cloud = scene.pointClouds[c];
+    const glm::vec3 albedo = scene.materials.at(cloud.material).albedo;
+    const glm::uvec4 info(uint32_t(scene.meshes.size() + c) + 1u, cloud.material, 0u, 0u);
+    for (size_t i = 0; i < cloud.size(); ++i) {
+      const glm::dvec3 v = grid.toVoxel(cloud.positions[i]);
+      const double r = double(cloud.radii[i]) * scale;
+      g.discs.push_back({glm::vec4(glm::vec3(v), float(r)), glm::vec4(cloud.normals[i], 0.0f),
+                         glm::vec4(cloud.colors.empty() ? albedo : cloud.colors[i], 0.0f), info});
+      farthest = std::max(farthest, glm::length(v - glm::dvec3(g.camera.origin)) + r);
+    }
+  }
   g.farPlane = static_cast<float>(2.0 * farthest);
   return g;
 }

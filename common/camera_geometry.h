@@ -1,6 +1,6 @@
-// What the gbuffer stage needs on both backends, prepared once: the camera and the scene's
-// triangles in voxel-local coordinates (the space every later stage works in), with per-triangle
-// unit normals and material indices.
+// What the gbuffer stage needs on both backends, prepared once: the camera, the scene's triangles
+// in voxel-local coordinates (the space every later stage works in) with per-triangle unit normals
+// and material indices, and its point clouds' points as discs.
 #pragma once
 
 #include <vector>
@@ -11,6 +11,9 @@
 #include "shaders/shared/gbuffer_kernel.h"
 
 namespace voxgi {
+
+// The GPU gbuffer's near plane, in voxels (its depth buffer's resolution depends on it).
+constexpr float kGbufferNearPlane = 1e-2f;
 
 struct CameraRays {
   glm::vec3 origin, forward, right, up;  // voxel-local; right/up unit
@@ -23,12 +26,14 @@ struct CameraRays {
   glm::mat4 viewProjection(float nearPlane, float farPlane) const;
 };
 
+using shared::SurfaceDisc;
 using shared::SurfaceTriangle;
 
 struct CameraGeometry {
   CameraRays camera;
   std::vector<glm::vec3> vertices;         // 3 per triangle, voxel-local
   std::vector<SurfaceTriangle> triangles;  // one per triangle
+  std::vector<SurfaceDisc> discs;          // one per point of the point clouds, cloud by cloud
   float farPlane = 1.0f;                   // beyond every vertex, in voxels
 };
 

@@ -9,7 +9,7 @@ void refusePointClouds(const Scene& scene, std::string_view technique) {
   if (scene.pointClouds.empty()) return;
   throw InputError(scene.file, "point_clouds",
                    std::string(technique) + " renders triangle meshes; the point cloud " +
-                       scene.pointClouds.front().name + " renders with --technique path");
+                       scene.pointClouds.front().name + " renders with --technique svo or path");
 }
 
 void EffectPlan::stage(StageId id, bool runs, std::string why) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/lpv/settings.h"
+#include "common/svo/settings.h"
 #include "common/vct/settings.h"
 
 namespace voxgi {
@@ -26,6 +27,7 @@ struct Settings {
   bool inspect = false;
   VctSettings vct;
   LpvSettings lpv;
+  SvoSettings svo;
 };
 
 const char* voxelizeModeName(VoxelizeMode mode);

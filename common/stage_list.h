@@ -20,8 +20,9 @@ const char* scalarTypeName(ScalarType t);
 // +y, -y, +z, -z), so level l is (6(N>>l)) x (N>>l) x (N>>l); image: the camera's pixels, row 0 at
 // the top; series: EffectPlan::seriesLength N^3 volumes one after another (N x N x N*length);
 // maps: EffectPlan::maps square images (texels of a shadow map's views, row 0 at the top) one
-// below another (R x R*count).
-enum class BufferShape { volume, mips, mips6, image, series, maps };
+// below another (R x R*count); sparse: as many elements as the stage allocates (an octree's pools,
+// common/svo/stages.inc), one row, its memory checked by the stage from the counts it finds.
+enum class BufferShape { volume, mips, mips6, image, series, maps, sparse };
 
 // An effect of the plan (common/effect_plan.h) a buffer may depend on; `always` for none.
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)

@@ -1,5 +1,7 @@
 // CPU gbuffer stage: one Embree ray through every pixel centre; the nearest hit's position,
-// facing normal and material go to the pixel buffers. Rows are independent tasks.
+// facing normal and material go to the pixel buffers. Point clouds are Embree's oriented discs,
+// numbered after the triangles. Rows are independent tasks.
+#include <vector>
 
 #include "common/parallel.h"
 #include "common/camera_geometry.h"
@@ -13,10 +15,21 @@ void common::gbuffer(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, StageId::common_gbuffer);
   const CameraGeometry g = prepareCameraGeometry(ctx.scene);
   const CameraRays& cam = g.camera;
-  // One geometry of the camera geometry's triangles: primitive = triangle index.
+  // Geometry 0: the camera geometry's triangles (primitive = triangle index); 1: its discs.
   RayScene rays;
   rays.addTriangleSoup(0, g.vertices);
+  if (!g.discs.empty()) {
+    std::vector<glm::vec3> centres, normals;
+    std::vector<float> radii;
+    for (const SurfaceDisc& d : g.discs) {
+      centres.emplace_back(d.center);
+      normals.emplace_back(d.normal);
+      radii.push_back(d.center.w);
+    }
+    rays.addDiscs(1, centres, normals, radii);
+  }
   rays.commit();
+  const auto triangleCount = uint32_t(g.triangles.size());
   const glm::ivec3 extent(cam.width, cam.height, 1);
   const bool emissive = ctx.plan.on(Effect::emission);
   Buffer position(BufferId::common_gbuffer_pixel_position, extent);
@@ -31,21 +44,25 @@ void common::gbuffer(const StageContext& ctx, BufferSet& buffers) {
       const glm::vec3 d = cam.pixelDirection(x, y);
       const RayScene::Hit hit = rays.intersect(cam.origin, d);
       if (!hit.found) continue;
-      const SurfaceTriangle& s = g.triangles[hit.primitive];
-      const Material& m = ctx.scene.materials[s.info.y];
+      const bool disc = hit.geometry == 1;
+      const glm::uvec4 info = disc ? g.discs[hit.primitive].info : g.triangles[hit.primitive].info;
+      const glm::vec3 surfaceNormal(disc ? g.discs[hit.primitive].normal
+                                         : g.triangles[hit.primitive].normal);
+      const Material& m = ctx.scene.materials[info.y];
+      const glm::vec3 a = disc ? glm::vec3(g.discs[hit.primitive].albedo) : m.albedo;
       const size_t e = size_t(y) * size_t(cam.width) + size_t(x);
       const glm::vec3 p = cam.origin + d * hit.t;
-      const glm::vec3 n = shared::facingNormal(glm::vec3(s.normal), d);
+      const glm::vec3 n = shared::facingNormal(surfaceNormal, d);
       for (int c = 0; c < 3; ++c) {
         position.set(e, c, p[c]);
         normal.set(e, c, n[c]);
-        albedo.set(e, c, m.albedo[c]);
+        albedo.set(e, c, a[c]);
         specular.set(e, c, m.specular[c]);
         if (emissive) emission.set(e, c, m.emission[c]);
       }
       specular.set(e, 3, m.shininess);
-      objectId.set<uint32_t>(e, 0, s.info.x);
-      primitiveId.set<uint32_t>(e, 0, hit.primitive + 1u);
+      objectId.set<uint32_t>(e, 0, info.x);
+      primitiveId.set<uint32_t>(e, 0, (disc ? triangleCount : 0u) + hit.primitive + 1u);
     }
   });
   buffers.put(std::move(position));

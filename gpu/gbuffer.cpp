@@ -1,6 +1,7 @@
-// GPU gbuffer stage: rasterizes the voxel-local triangles into float and integer render targets
-// (one per buffer) with a depth test, then reads them back. The projection flips y so GL row 0 is
-// image row 0, and pixel centres are the CPU rays' (common/camera_geometry.h).
+// GPU gbuffer stage: rasterizes the voxel-local triangles, then the point clouds' discs
+// (shaders/gbuffer_disc.vert), into float and integer render targets (one per buffer) with a depth
+// test, then reads them back. The projection flips y so GL row 0 is image row 0, and pixel centres
+// are the CPU rays' (common/camera_geometry.h).
 #include <iterator>
 
 #include "common/camera_geometry.h"
@@ -29,17 +30,31 @@ void common::gbuffer(GlContext& context, const StageContext& ctx, BufferSet& buf
   const CameraRays& cam = g.camera;
   const int w = cam.width, h = cam.height;
   SurfaceRaster raster(gl, ctx.scene, g, kTargets, {w, h});
+  const glm::mat4 viewProjection = cam.viewProjection(kGbufferNearPlane, g.farPlane);
+  const auto setCamera = [&](Program& program) {
+    program.set("uViewProjection", viewProjection);
+    program.set("uForward", cam.forward);
+    program.set("uRight", cam.right);
+    program.set("uUp", cam.up);
+    program.set("uTanHalfFov", cam.tanHalfFov);
+    program.set("uAspect", cam.aspect);
+    program.set("uSize", glm::vec2(float(w), float(h)));
+  };
   Program program(gl, {&shaders::gbuffer_vert, &shaders::gbuffer_frag});
-  program.set("uViewProjection", cam.viewProjection(1e-2f, g.farPlane));
-  program.set("uForward", cam.forward);
-  program.set("uRight", cam.right);
-  program.set("uUp", cam.up);
-  program.set("uTanHalfFov", cam.tanHalfFov);
-  program.set("uAspect", cam.aspect);
-  program.set("uSize", glm::vec2(float(w), float(h)));
+  setCamera(program);
   program.use();
   raster.begin();
   raster.drawLayer(0);
+  if (!g.discs.empty()) {
+    GlBuffer discs(gl, createBuffer(gl, g.discs.size() * sizeof(SurfaceDisc), g.discs.data()));
+    Program discProgram(gl, {&shaders::gbuffer_disc_vert, &shaders::gbuffer_disc_frag});
+    setCamera(discProgram);
+    discProgram.set("uOrigin", cam.origin);
+    discProgram.set("uTriangleCount", unsigned(g.triangles.size()));
+    discProgram.use();
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, discs.get());
+    gl.DrawArrays(GL_TRIANGLES, 0, GLsizei(6 * g.discs.size()));
+  }
   raster.end();
   gl.check("gbuffer: rasterizing");
   for (size_t i = 0; i < std::size(kTargets); ++i)

@@ -47,7 +47,10 @@ std::vector<std::vector<const ShaderSource*>> stagePrograms() {
           {&svo_build_svo_comp},
           {&svo_inject_svo_comp},
           {&svo_mip_svo_comp},
-          {&svo_gather_svo_comp}};
+          {&svo_gather_svo_comp},
+          {&gbuffer_disc_vert, &gbuffer_disc_frag},
+          {&svo_brick_svo_comp},
+          {&svo_shade_svo_comp}};
 }
 
 struct Field {
@@ -95,7 +98,10 @@ std::vector<Layout> layouts() {
     kBuildSvo,
     kInjectSvo,
     kMipSvo,
-    kGatherSvo
+    kGatherSvo,
+    kGbufferDisc,
+    kBrickSvo,
+    kShadeSvo
   };
   return {
       {"VoxelTriangle",
@@ -111,11 +117,16 @@ std::vector<Layout> layouts() {
        sizeof(SurfaceTriangle),
        {VOXGI_FIELD(SurfaceTriangle, normal), VOXGI_FIELD(SurfaceTriangle, info)},
        {{kGbuffer, "triangles[0]", 0, true}, {kRsm, "triangles[0]", 0, true}}},
+      {"SurfaceDisc",
+       sizeof(SurfaceDisc),
+       {VOXGI_FIELD(SurfaceDisc, center), VOXGI_FIELD(SurfaceDisc, normal),
+        VOXGI_FIELD(SurfaceDisc, albedo), VOXGI_FIELD(SurfaceDisc, info)},
+       {{kGbufferDisc, "discs[0]", 0, true}}},
       {"MaterialData",
        sizeof(MaterialData),
        {VOXGI_FIELD(MaterialData, albedo), VOXGI_FIELD(MaterialData, specular),
         VOXGI_FIELD(MaterialData, emission)},
-       {{kGbuffer, "materials[0]", 0, true}}},
+       {{kGbuffer, "materials[0]", 0, true}, {kGbufferDisc, "materials[0]", 0, true}}},
       {"LightData",
        sizeof(LightData),
        {VOXGI_FIELD(LightData, position), VOXGI_FIELD(LightData, direction),
@@ -125,7 +136,8 @@ std::vector<Layout> layouts() {
         {kTrace, "lights[0]", sizeof(ConeTraceParams), true},
         {kRsm, "lights[0]", 0, true},
         {kShadeLpv, "lights[0]", 0, true},
-        {kInjectSvo, "lights[0]", sizeof(LightVoxelsParams), true}}},
+        {kInjectSvo, "lights[0]", sizeof(LightVoxelsParams), true},
+        {kShadeSvo, "lights[0]", sizeof(ConeTraceParams), true}}},
       {"LightVoxelsParams",
        sizeof(LightVoxelsParams),
        {VOXGI_FIELD(LightVoxelsParams, config), VOXGI_FIELD(LightVoxelsParams, values)},
@@ -138,7 +150,8 @@ std::vector<Layout> layouts() {
         VOXGI_FIELD(ConeTraceParams, background), VOXGI_FIELD(ConeTraceParams, camera)},
        {{kTrace, "params", 0, false},
         {kBounce, "params", 0, false},
-        {kGatherSvo, "params", 0, false}}},
+        {kGatherSvo, "params", 0, false},
+        {kShadeSvo, "params", 0, false}}},
       {"ConeData",
        sizeof(ConeData),
        {VOXGI_FIELD(ConeData, direction), VOXGI_FIELD(ConeData, weight)},
@@ -148,7 +161,7 @@ std::vector<Layout> layouts() {
       {"ObjectData",
        sizeof(ObjectData),
        {VOXGI_FIELD(ObjectData, specular)},
-       {{kTrace, "objects[0]", 0, true}}},
+       {{kTrace, "objects[0]", 0, true}, {kShadeSvo, "objects[0]", 0, true}}},
       {"PixelTerms",
        sizeof(PixelTerms),
        {VOXGI_FIELD(PixelTerms, directDiffuse), VOXGI_FIELD(PixelTerms, directSpecular),

@@ -29,7 +29,7 @@ double ulpDistance(float a, float b) {
 TieClassifier classifierFor(StageId stage, const StageContext& ctx, const BufferSet& cpu,
                             const BufferSet& gpu) {
   if (stage == StageId::common_voxelize) return voxelizeTies(ctx);
-  if (stage == StageId::common_gbuffer) return gbufferTies(cpu, gpu);
+  if (stage == StageId::common_gbuffer) return gbufferTies(ctx, cpu, gpu);
   if (stage == StageId::lpv_rsm) return rsmTies(cpu, gpu);
   return {};
 }

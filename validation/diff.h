@@ -65,9 +65,11 @@ std::vector<StageReport> diffStages(const StageContext& ctx, StageBackend& cpu, 
 // The voxelize stage's tie classifier (validation/voxelize_ties.cpp).
 TieClassifier voxelizeTies(const StageContext& ctx);
 // The gbuffer stage's: a pixel whose backends saw different triangles is a tie if, in the CPU
-// image, it lies on a triangle edge (a 4-neighbour sees another triangle or the background).
-// The buffers must outlive the classifier.
-TieClassifier gbufferTies(const BufferSet& cpu, const BufferSet& gpu);
+// image, it lies on a triangle edge (a 4-neighbour sees another triangle or the background); where
+// either saw a point cloud's disc, if the ray meets a disc at its rim or both surfaces at depths
+// the GPU's depth buffer cannot separate (validation/edge_ties.cpp). The buffers must outlive the
+// classifier.
+TieClassifier gbufferTies(const StageContext& ctx, const BufferSet& cpu, const BufferSet& gpu);
 // The rsm stage's: the same rule within each view's map (validation/edge_ties.cpp).
 TieClassifier rsmTies(const BufferSet& cpu, const BufferSet& gpu);
 

@@ -89,26 +89,6 @@ glm::vec4 SvoVolumes::pyramidAt(int level, int face, glm::ivec3 v) const {
   return nodes->levels[size_t(tree)][size_t(s) * shared::kFaces + size_t(face)];
 }
 
-Leaves resolveLeaves(const Octree& octree, const Words& sums, float weightScale,
-                     float emissionScale) {
-  using namespace shared;
-  const size_t n = octree.leafTileCount() * 8;
-  Leaves out;
-  out.albedo.resize(n);
-  out.normal.resize(n);
-  out.emission.resize(n);
-  const float unit = 1.0f / weightScale;  // a power of two: exact
-  parallelFor(size_t(0), n, [&](size_t i) {
-    const auto at = [&](int c) { return float(int32_t(sums[i * kSumWords + size_t(c)])) * unit; };
-    out.albedo[i] =
-        glm::vec4(at(kSumAlbedo), at(kSumAlbedo + 1), at(kSumAlbedo + 2), at(kSumOpacity));
-    out.normal[i] = glm::vec3(at(kSumNormal), at(kSumNormal + 1), at(kSumNormal + 2));
-    out.emission[i] =
-        glm::vec3(at(kSumEmission), at(kSumEmission + 1), at(kSumEmission + 2)) * emissionScale;
-  });
-  return out;
-}
-
 LeafRadiance injectLeaves(const Octree& octree, const Leaves& leaves,
                           const std::vector<shared::LightData>& lights,
                           const shared::LightVoxelsParams& params) {

@@ -22,10 +22,6 @@ using voxgi::svo::LeafRadiance;
 using voxgi::svo::Leaves;
 using voxgi::svo::NodeLevels;
 
-// The leaf sums in floats: sums / weightScale (times emissionScale for the emission).
-Leaves resolveLeaves(const Octree& octree, const Words& sums, float weightScale,
-                     float emissionScale);
-
 // What the shared kernels read: the leaves (pyramid level 0) and node levels (pyramid level m is
 // tree level depth - m), found by walking the tree (svo_layout.h) with the last tile remembered.
 // One per task: the memo is not shared.

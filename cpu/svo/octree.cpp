@@ -8,6 +8,7 @@
 #include <tbb/blocked_range.h>
 
 #include "common/error.h"
+#include "common/memory.h"
 #include "common/parallel.h"
 #include "shaders/shared/svo/svo_layout.h"
 
@@ -150,7 +151,8 @@ uint32_t Octree::findTile(int level, uint32_t key) const {
   return level == depth ? rank : levelStart[size_t(level)] + rank;
 }
 
-Octree buildOctree(std::span<const shared::SvoSample> samples, int depth) {
+Octree buildOctree(std::span<const shared::SvoSample> samples, int depth,
+                   const std::string& source) {
   std::vector<LevelTiles> levels(size_t(depth) + 1);
   levels[size_t(depth)] = markLeafTiles(samples, depth);
   for (int l = depth - 1; l >= 1; --l) levels[size_t(l)] = parentTiles(levels[size_t(l) + 1]);
@@ -160,6 +162,11 @@ Octree buildOctree(std::span<const shared::SvoSample> samples, int depth) {
     levels[1].border = {0};
   }
   for (int l = 2; l <= depth; ++l) addBorderTiles(levels[size_t(l)]);
+  size_t tiles = 0;
+  for (int l = 1; l <= depth; ++l) tiles += levels[size_t(l)].keys.size();
+  // Node words, tile records and leaf sums per tile, as counted.
+  requireMemory(tiles * 4 * (8 * kNodeWords + kTileWords + 8 * shared::kSumWords),
+                "the octree's " + std::to_string(tiles) + " tiles", source, "grid.resolution");
 
   Octree o;
   o.depth = depth;
@@ -228,6 +235,27 @@ Octree buildOctree(std::span<const shared::SvoSample> samples, int depth) {
       }
     }
   });
+  return o;
+}
+
+Octree octreeFromWords(voxgi::svo::OctreeWords words, int depth) {
+  Octree o;
+  o.depth = depth;
+  o.nodes = std::move(words.nodes);
+  o.tiles = std::move(words.tiles);
+  o.leafTiles = std::move(words.leafTiles);
+  std::vector<std::vector<uint32_t>> keys(size_t(depth) + 1);
+  for (size_t t = 0; t < o.tileCount(); ++t)
+    keys[o.tiles[t * kTileWords + shared::kTileLevel]].push_back(
+        o.tiles[t * kTileWords + shared::kTileKey]);
+  for (size_t t = 0; t < o.leafTileCount(); ++t)
+    keys[size_t(depth)].push_back(o.leafTiles[t * kTileWords + shared::kTileKey]);
+  o.levelStart.assign(size_t(depth) + 1, 0);
+  o.levelIndex.resize(size_t(depth) + 1);
+  for (int l = 1; l < depth; ++l)
+    o.levelStart[size_t(l) + 1] = o.levelStart[size_t(l)] + uint32_t(keys[size_t(l)].size());
+  for (int l = 1; l <= depth; ++l)
+    o.levelIndex[size_t(l)] = TileIndex(keys[size_t(l)], uint64_t(1) << (3 * (l - 1)));
   return o;
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/buffer.h"
+#include "common/svo/canonical.h"
 #include "shaders/shared/svo/splat_kernel.h"
 
 namespace voxgi::cpu::svo {
@@ -53,8 +54,14 @@ struct Octree {
 
 // The tree of depth `depth` over the leaves the samples' RoIs touch, with every ancestor, the
 // border tiles the brick boundaries need (docs/svo.md) and the neighbour pointers. Samples outside
-// the leaf domain [0, 2^depth)^3 add nothing.
-Octree buildOctree(std::span<const shared::SvoSample> samples, int depth);
+// the leaf domain [0, 2^depth)^3 add nothing. Throws InputError naming `source` and
+// grid.resolution when the counted tiles would not fit in memory.
+Octree buildOctree(std::span<const shared::SvoSample> samples, int depth,
+                   const std::string& source = "samples");
+
+// The tree of `depth` whose words (canonical order, common/svo/canonical.h) are `words` (its sums
+// are not used): build_svo's buffers as the later stages read them.
+Octree octreeFromWords(voxgi::svo::OctreeWords words, int depth);
 
 // The fixed-point sums the samples add to the leaves (kSumWords per leaf voxel, 8 per leaf tile
 // in local-id order), in units of 1/scale. Throws InputError naming `source` when a leaf's

@@ -18,8 +18,6 @@ PixelShading shadePixels(const BufferSet& gbuffer, const Octree& octree, const L
   const Buffer* emission = gbuffer.find(BufferId::common_gbuffer_pixel_emission);
   const Buffer& object = gbuffer.at(BufferId::common_gbuffer_object_id);
   const size_t pixels = position.elementCount();
-  shared::ConeTraceParams direct = params;
-  direct.grid.w = 0;  // no diffuse cones: the leaves hold the diffuse light
   PixelShading out;
   out.light.resize(pixels);
   out.color.resize(pixels);
@@ -33,7 +31,7 @@ PixelShading shadePixels(const BufferSet& gbuffer, const Octree& octree, const L
     SvoVolumes volumes{octree, leaves, &radiance, &mips, nullptr, &lights, nullptr};
     volumes.leafBricks = &gatheredBricks;
     const glm::vec3 p = position.vec3At(i);
-    shared::PixelLight l = shared::tracePixel(volumes, p, normal.vec3At(i), objects[id], direct);
+    shared::PixelLight l = shared::tracePixel(volumes, p, normal.vec3At(i), objects[id], params);
     l.indirectDiffuse = shared::svoIrradiance(volumes, p, octree.depth);
     out.light[i] = l;
     const glm::vec4 s(specular.vec3At(i), 0.0f);

@@ -19,7 +19,8 @@ struct PixelShading {
 };
 
 // Shades the gbuffer's pixels (common/shared_stages.inc's gbuffer buffers in `gbuffer`) from the
-// tree's last frame: its leaf radiance (pyramid level 0), mipmap and gathered-light bricks.
+// tree's last frame: its leaf radiance (pyramid level 0), mipmap and gathered-light bricks, with
+// `params` from treeConeTrace (common/svo/stage_inputs.h: no diffuse cones).
 PixelShading shadePixels(const BufferSet& gbuffer, const Octree& octree, const Leaves& leaves,
                          const LeafRadiance& radiance, const NodeLevels& mips,
                          const Words& gatheredBricks, const std::vector<shared::LightData>& lights,

@@ -1,6 +1,6 @@
 // What a pixel stores about the surface it sees, shared by cpu/gbuffer.cpp (Embree hit) and
-// shaders/gbuffer.frag (rasterized fragment): the normal turned toward the camera and the
-// material's attributes.
+// shaders/gbuffer.frag, gbuffer_disc.frag (rasterized fragment): the normal turned toward the
+// camera and the material's attributes.
 #ifndef VOXGI_GBUFFER_KERNEL_H
 #define VOXGI_GBUFFER_KERNEL_H
 #include "vector_math.h"
@@ -12,6 +12,16 @@ VOXGI_NAMESPACE_BEGIN
 struct SurfaceTriangle {
   vec4 normal;  // xyz: unit normal (right-handed winding), 0 if degenerate
   uvec4 info;   // x: object id (mesh index + 1), y: material index
+};
+
+// One point of a cloud as the disc the gbuffer sees (std430), after the scene's triangles in the
+// primitive numbering: Embree's oriented disc on the CPU, a quad in its plane cut to the circle on
+// the GPU (shaders/gbuffer_disc.vert).
+struct SurfaceDisc {
+  vec4 center;  // xyz: voxel-local centre; w: radius in voxels
+  vec4 normal;  // xyz: unit normal
+  vec4 albedo;  // rgb: the point's colour, or its material's albedo
+  uvec4 info;   // x: object id (mesh count + cloud index + 1), y: material index
 };
 
 // One material (std430).

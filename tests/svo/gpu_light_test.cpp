@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/svo/stage_inputs.h"
 #include "common/lights.h"
 #include "common/scene_load.h"
 #include "common/stage.h"
@@ -57,7 +58,7 @@ TEST_P(GpuSvoLight, InjectionMipAndGatherAgreeWithTheCpu) {
   const cpu::svo::Octree o = cpu::svo::buildOctree(set.samples, kDepth);
   const Words sums = cpu::svo::accumulateLeaves(o, set.samples, set.weightScale, scene.file);
   const cpu::svo::Leaves leaves =
-      cpu::svo::resolveLeaves(o, sums, set.weightScale, set.emissionScale);
+      voxgi::svo::resolveLeaves(sums, set.weightScale, set.emissionScale);
   const svo::OctreeWords words{o.nodes, o.tiles, o.leafTiles, {}};
   const gpu::svo::Tree tree{words, kDepth};
   gpu::GlContext& context = glContext(GetParam());

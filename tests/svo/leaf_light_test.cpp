@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 
+#include "common/svo/stage_inputs.h"
 #include "common/stage.h"
 #include "common/vct/cone_sets.h"
 #include "common/vct/kernel_params.h"
@@ -275,7 +276,7 @@ TEST(SvoLight, InjectionIsTheAnalyticDirectLightAndTheSplattedEmission) {
     }
   const Octree o = cpu::svo::buildOctree(samples, kDepth);
   const Words sums = cpu::svo::accumulateLeaves(o, samples, 65536.0f, "test");
-  const Leaves leaves = cpu::svo::resolveLeaves(o, sums, 65536.0f, 4.0f);
+  const Leaves leaves = voxgi::svo::resolveLeaves(sums, 65536.0f, 4.0f);
   glm::dvec3 emitted(0.0);
   for (const glm::vec3& e : leaves.emission) emitted += glm::dvec3(e);
   EXPECT_NEAR(emitted.x, 256 * 1.0, 1e-3);  // 256 samples, density 1, r^3 = 1, emission 1

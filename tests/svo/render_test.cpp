@@ -1,13 +1,10 @@
 // The octree end to end on the CPU (docs/svo.md): the Cornell box's meshes sampled into points,
-// built, lit, propagated and shaded, against the path tracer with the same transport.
+// built, lit, propagated and shaded through the stage runner, against the path tracer with the same
+// transport.
 #include <gtest/gtest.h>
 
-#include "common/lights.h"
 #include "common/scene_load.h"
 #include "common/stage.h"
-#include "common/svo/samples.h"
-#include "common/vct/kernel_params.h"
-#include "cpu/svo/shade.h"
 #include "tests/test_scenes.h"
 #include "validation/reference/image_metrics.h"
 #include "validation/reference/path_trace.h"
@@ -15,45 +12,20 @@
 namespace voxgi::test {
 namespace {
 
+// The technique's image through the stage runner at the scene's grid resolution (svo.frames=1),
+// with the leaf slot count of its tree.
 struct SvoImage {
   Image image;
   size_t leaves = 0;
 };
 
-// Every step of the technique at the scene's grid resolution, `frames` progressive bounces.
-SvoImage renderSvo(const Scene& scene, int frames) {
-  int depth = 0;
-  while ((1 << depth) < scene.grid.resolution) ++depth;
-  const svo::SampleSet set = svo::prepareSamples(scene, depth, 4.0, 1);
-  const cpu::svo::Octree o = cpu::svo::buildOctree(set.samples, depth);
-  const Words sums = cpu::svo::accumulateLeaves(o, set.samples, set.weightScale, scene.file);
-  const cpu::svo::Leaves leaves =
-      cpu::svo::resolveLeaves(o, sums, set.weightScale, set.emissionScale);
-  Settings settings;
-  const BufferSet g = runCpuUntil(scene, settings, "gbuffer");
-  const auto tris = prepareVoxelTriangles(scene, scene.grid);
-  const StageContext ctx(vct(), scene, settings, tris);
-  ConeTraceSetup trace = prepareConeTrace(ctx);
-  trace.params.grid.y = depth - 1;
-  const std::vector<shared::LightData> lights = voxelLights(scene);
-  const shared::LightVoxelsParams lv = lightVoxelsParams(ctx, int(lights.size()), true);
-  const cpu::svo::LeafRadiance direct = cpu::svo::injectLeaves(o, leaves, lights, lv);
-  ConeTraceSetup bounce = prepareBounce(ctx);
-  bounce.params.grid.y = depth - 1;
-  cpu::svo::FrameOutputs last;
-  const cpu::svo::LeafRadiance radiance =
-      cpu::svo::propagateFrames(o, leaves, direct, bounce.cones, bounce.params, frames, false,
-                                cpu::svo::FirstStep::plain, &last);
-  Words interior(last.gathered.size() * 4);
-  for (size_t i = 0; i < last.gathered.size(); ++i)
-    for (int c = 0; c < 4; ++c)
-      interior[i * 4 + size_t(c)] = std::bit_cast<uint32_t>(last.gathered[i][c]);
-  const Words bricks = cpu::svo::completeBricks(o, depth, interior, 4);
-  const cpu::svo::PixelShading shading =
-      cpu::svo::shadePixels(g, o, leaves, radiance, last.pyramid, bricks, trace.lights,
-                            trace.objects, trace.params, scene.background);
-  SvoImage out{Image(scene.camera.width, scene.camera.height), o.leafTileCount()};
-  out.image.pixels = shading.color;
+SvoImage renderSvo(const Scene& scene) {
+  const Technique& svo = findTechnique("svo");
+  const BufferSet b = runCpuUntil(svo, scene, techniqueDefaults(svo), "shade_svo");
+  SvoImage out{Image(scene.camera.width, scene.camera.height),
+               b.at(BufferId::svo_build_svo_leaf_sums).elementCount()};
+  for (size_t i = 0; i < out.image.pixels.size(); ++i)
+    out.image.pixels[i] = b.at(BufferId::svo_shade_svo_color).vec3At(i);
   return out;
 }
 
@@ -64,7 +36,7 @@ TEST(SvoRender, CornellBoxFromSampledMeshesIsCloseToThePathTracer) {
   Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
   scene.grid.resolution = 64;
   setImageWidth(scene, 64, "test");
-  const SvoImage svo = renderSvo(scene, 1);
+  const SvoImage svo = renderSvo(scene);
   reference::PathTraceOptions o;
   o.spp = 256;
   o.bounces = 1;

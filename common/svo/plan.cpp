@@ -1,0 +1,70 @@
+// The sparse voxel octree's effect planner (docs/effect-plan.md).
+#include <sstream>
+
+#include "common/error.h"
+#include "common/svo/tree_depth.h"
+#include "common/technique.h"
+
+namespace voxgi::svo {
+namespace {
+
+// Names of the materials of meshes and clouds that pass `test`.
+template <class Test>
+std::string materialsWith(const Scene& scene, Test test) {
+  std::string names;
+  auto add = [&](uint32_t material) {
+    const Material& m = scene.materials.at(material);
+    const std::string name = "'" + m.name + "'";
+    if (!test(m) || names.find(name) != std::string::npos) return;
+    names += (names.empty() ? "" : ", ") + name;
+  };
+  for (const Mesh& m : scene.meshes)
+    if (!m.triangles.empty()) add(m.material);
+  for (const PointCloud& c : scene.pointClouds)
+    if (c.size() > 0) add(c.material);
+  return names;
+}
+
+}  // namespace
+
+EffectPlan planEffects(const Scene& scene, const Settings& settings) {
+  const SvoSettings& s = settings.svo;
+  const int depth = treeDepth(scene);
+  EffectPlan p;
+  p.full = settings.planMode == PlanMode::full;
+  size_t points = 0, triangles = 0;
+  for (const PointCloud& c : scene.pointClouds) points += c.size();
+  for (const Mesh& m : scene.meshes) triangles += m.triangles.size();
+  std::ostringstream build;
+  build << "depth " << depth << " (2^" << depth << " leaves a side, grid.resolution): "
+        << scene.pointClouds.size() << " point cloud(s) of " << points << " point(s)";
+  if (triangles > 0)
+    build << ", " << triangles << " triangle(s) sampled at " << s.meshDensity
+          << " points per leaf face (svo.mesh_density)";
+  p.stage(StageId::svo_build_svo, true, build.str());
+  std::ostringstream frames;
+  frames << (scene.lights.empty() ? "no analytic lights"
+                                  : std::to_string(scene.lights.size()) + " analytic light(s)")
+         << " injected with " << settingValue(settings, "voxel_shadow.mode")
+         << " voxel shadows; " << s.frames << " frame(s) (svo.frames)"
+         << (s.clearEachFrame == SvoToggle::on ? " each gathering from the direct light alone"
+                                                : ", one more bounce each");
+  p.stage(StageId::svo_propagate_svo, true, frames.str());
+  p.stage(StageId::svo_mip_svo, true,
+          "the last frame's radiance up the tree (svo.first_step=" +
+              settingValue(settings, "svo.first_step") + "), the gathered light's leaf bricks");
+  p.stage(StageId::common_gbuffer, true, "the surface each pixel sees (point clouds as discs)");
+  const std::string emitters = materialsWith(scene, [](const Material& m) { return m.emissive(); });
+  p.effect("emission per pixel", Effect::emission, p.full || !emitters.empty(),
+           emitters.empty() ? "no emissive material" : "emissive material " + emitters);
+  p.stage(StageId::svo_shade_svo, true,
+          "shadow cones and the specular cone through the tree, diffuse light from the leaves");
+  const std::string glossy = materialsWith(scene, [](const Material& m) { return m.glossy(); });
+  p.effect("specular cone", Effect::specular, p.full || !glossy.empty(),
+           !glossy.empty() ? "glossy material " + glossy
+           : p.full        ? "no glossy material; plan.mode=full computes it anyway"
+                           : "no glossy material");
+  return p;
+}
+
+}  // namespace voxgi::svo

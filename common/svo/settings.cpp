@@ -1,0 +1,50 @@
+// The sparse voxel octree's --set keys and presets. The cone and light keys are voxel cone
+// tracing's own (the same fields, Settings::vct): the octree traces with the shared cone kernel,
+// so a cone set or shadow model means the same thing for both techniques.
+#include <algorithm>
+
+#include "common/technique.h"
+
+namespace voxgi::svo {
+
+const std::vector<Param>& params() {
+  constexpr auto svo = &Settings::svo;
+  static const std::vector<Param> table = [] {
+    std::vector<Param> out{
+        number<svo>("svo.mesh_density", &SvoSettings::meshDensity, 0.25f, 64.0f,
+                    "points sampled per leaf face of mesh area (meshes in an svo scene become "
+                    "points, area-uniform)"),
+        number<svo>("svo.frames", &SvoSettings::frames, 0, 256,
+                    "progressive frames: each gathers one more diffuse bounce at every leaf from "
+                    "the last (0: direct light only)"),
+        choice<svo>("svo.clear_each_frame", &SvoSettings::clearEachFrame, {"off", "on"},
+                    "every frame gathers from the direct light alone: exactly one bounce"),
+        choice<svo>("svo.first_step", &SvoSettings::firstStep, {"plain", "ndf"},
+                    "the first mip step composites the leaves as the dense mip does, or weights "
+                    "each by its normal distribution per face (Salm 2015, 4.4.2)"),
+        number<svo>("svo.seed", &SvoSettings::seed, 0, 1 << 30,
+                    "seed of the points sampled on meshes"),
+    };
+    // Voxel cone tracing's keys that the octree's stages read.
+    static const char* const kShared[] = {"cones.", "shadow.", "specular.", "light.",
+                                          "voxel_shadow."};
+    for (const Param& p : vct::params())
+      if (std::any_of(std::begin(kShared), std::end(kShared),
+                      [&](const char* prefix) { return p.key.rfind(prefix, 0) == 0; }))
+        out.push_back(p);
+    return out;
+  }();
+  return table;
+}
+
+const std::vector<Preset>& presets() {
+  static const std::vector<Preset> table{{"default", {}}};
+  return table;
+}
+
+const std::vector<Variant>& variants() {
+  static const std::vector<Variant> table;
+  return table;
+}
+
+}  // namespace voxgi::svo

@@ -1,0 +1,20 @@
+// The sparse voxel octree's parameters (Settings::svo), with their defaults. The keys, ranges and
+// meanings are in common/svo/settings.cpp; the tree's depth is log2 of grid.resolution.
+#pragma once
+
+namespace voxgi {
+
+enum class SvoToggle { off, on };
+// How the first mip step weights the isotropic leaves per face: the dense mip's compositing, or by
+// their normal distribution [Salm 2015, §4.4.2] (common/svo/light_types.h, FirstStep).
+enum class SvoFirstStep { plain, ndf };
+
+struct SvoSettings {
+  float meshDensity = 4.0f;  // points sampled per leaf face of mesh area
+  int frames = 1;            // progressive bounces [Salm 2015, §4.4.3]
+  SvoToggle clearEachFrame = SvoToggle::off;  // every frame gathers from the direct light alone
+  SvoFirstStep firstStep = SvoFirstStep::plain;
+  int seed = 1;  // of the points sampled on meshes
+};
+
+}  // namespace voxgi

@@ -1,0 +1,128 @@
+#include "common/svo/stage_inputs.h"
+
+#include <bit>
+
+#include "common/parallel.h"
+#include "shaders/shared/svo/svo_layout.h"
+#include "shaders/shared/svo/splat_kernel.h"
+
+namespace voxgi::svo {
+namespace {
+
+constexpr int kFaces = 6;
+
+// The pyramid of a tree: top level depth - 1, six faces.
+void treeParams(shared::ConeTraceParams& params, int depth) {
+  params.grid.y = depth - 1;
+  params.grid.z = 1;
+}
+
+}  // namespace
+
+void putTree(BufferSet& buffers, OctreeWords words, float weightScale, float emissionScale) {
+  const auto put = [&](BufferId id, Words& w) {
+    Buffer b(id, glm::ivec3(0, 1, 1));
+    b.extent.x = int(w.size() / size_t(b.components()));
+    b.words = std::move(w);
+    buffers.put(std::move(b));
+  };
+  put(BufferId::svo_build_svo_nodes, words.nodes);
+  put(BufferId::svo_build_svo_tiles, words.tiles);
+  put(BufferId::svo_build_svo_leaf_tiles, words.leafTiles);
+  put(BufferId::svo_build_svo_leaf_sums, words.sums);
+  Buffer scales(BufferId::svo_build_svo_scales, glm::ivec3(1));
+  scales.set(0, 0, weightScale);
+  scales.set(0, 1, emissionScale);
+  buffers.put(std::move(scales));
+}
+
+OctreeWords treeWords(const BufferSet& buffers, bool sums) {
+  OctreeWords w{buffers.at(BufferId::svo_build_svo_nodes).words,
+                buffers.at(BufferId::svo_build_svo_tiles).words,
+                buffers.at(BufferId::svo_build_svo_leaf_tiles).words,
+                {}};
+  if (sums) w.sums = buffers.at(BufferId::svo_build_svo_leaf_sums).words;
+  return w;
+}
+
+Leaves resolveLeaves(const Words& sums, float weightScale, float emissionScale) {
+  using namespace shared;
+  const size_t n = sums.size() / kSumWords;
+  Leaves out;
+  out.albedo.resize(n);
+  out.normal.resize(n);
+  out.emission.resize(n);
+  const float unit = 1.0f / weightScale;  // a power of two: exact
+  parallelFor(size_t(0), n, [&](size_t i) {
+    const auto at = [&](int c) { return float(int32_t(sums[i * kSumWords + size_t(c)])) * unit; };
+    out.albedo[i] =
+        glm::vec4(at(kSumAlbedo), at(kSumAlbedo + 1), at(kSumAlbedo + 2), at(kSumOpacity));
+    out.normal[i] = glm::vec3(at(kSumNormal), at(kSumNormal + 1), at(kSumNormal + 2));
+    out.emission[i] =
+        glm::vec3(at(kSumEmission), at(kSumEmission + 1), at(kSumEmission + 2)) * emissionScale;
+  });
+  return out;
+}
+
+Leaves treeLeaves(const BufferSet& buffers) {
+  const Buffer& scales = buffers.at(BufferId::svo_build_svo_scales);
+  return resolveLeaves(buffers.at(BufferId::svo_build_svo_leaf_sums).words,
+                       scales.get<float>(0, 0), scales.get<float>(0, 1));
+}
+
+Buffer vec4Buffer(BufferId id, const std::vector<glm::vec4>& values) {
+  Buffer b(id, glm::ivec3(int(values.size()), 1, 1));
+  for (size_t i = 0; i < values.size(); ++i)
+    for (int c = 0; c < 4; ++c) b.set(i, c, values[i][c]);
+  return b;
+}
+
+std::vector<glm::vec4> vec4Values(const Buffer& buffer) {
+  std::vector<glm::vec4> out(buffer.elementCount());
+  for (size_t i = 0; i < out.size(); ++i)
+    for (int c = 0; c < 4; ++c) out[i][c] = buffer.get<float>(i, c);
+  return out;
+}
+
+Buffer nodeFacesBuffer(const NodeLevels& levels) {
+  size_t nodes = 0;
+  for (const auto& level : levels.levels) nodes += level.size() / kFaces;
+  Buffer b(BufferId::svo_mip_svo_node_faces, glm::ivec3(int(nodes), 1, 1));
+  size_t at = 0;
+  for (const auto& level : levels.levels)
+    for (const glm::vec4& v : level)
+      for (int c = 0; c < 4; ++c) b.words[at++] = std::bit_cast<uint32_t>(v[c]);
+  return b;
+}
+
+NodeLevels nodeLevels(const Buffer& faces, const Words& tiles, int depth) {
+  NodeLevels out;
+  out.levels.resize(size_t(depth));
+  const size_t tileCount = tiles.size() / shared::kTileWords;
+  size_t value = 0;
+  for (size_t t = 0; t < tileCount; ++t) {
+    auto& level = out.levels[tiles[t * shared::kTileWords + shared::kTileLevel]];
+    for (int i = 0; i < 8 * kFaces; ++i, ++value)
+      level.push_back({faces.get<float>(value / kFaces, int(value % kFaces) * 4),
+                       faces.get<float>(value / kFaces, int(value % kFaces) * 4 + 1),
+                       faces.get<float>(value / kFaces, int(value % kFaces) * 4 + 2),
+                       faces.get<float>(value / kFaces, int(value % kFaces) * 4 + 3)});
+  }
+  return out;
+}
+
+ConeTraceSetup treeConeTrace(const StageContext& ctx, int depth) {
+  ConeTraceSetup s = prepareConeTrace(ctx);
+  treeParams(s.params, depth);
+  s.cones.clear();  // no diffuse cones: the leaves hold the diffuse light
+  s.params.grid.w = 0;
+  return s;
+}
+
+ConeTraceSetup treeBounce(const StageContext& ctx, int depth) {
+  ConeTraceSetup s = prepareBounce(ctx);
+  treeParams(s.params, depth);
+  return s;
+}
+
+}  // namespace voxgi::svo

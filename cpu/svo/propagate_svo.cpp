@@ -1,0 +1,32 @@
+// CPU propagate_svo stage: the leaves' injected light, then svo.frames progressive bounces
+// (cpu/svo/leaf_light.h).
+#include "common/lights.h"
+#include "common/svo/stage_inputs.h"
+#include "common/svo/tree_depth.h"
+#include "cpu/stages.h"
+#include "cpu/svo/leaf_light.h"
+
+namespace voxgi::cpu {
+
+void svo::propagate_svo(const StageContext& ctx, BufferSet& buffers) {
+  using namespace voxgi::svo;
+  const int depth = treeDepth(ctx.scene);
+  const SvoSettings& s = ctx.settings.svo;
+  const Octree o = octreeFromWords(treeWords(buffers, false), depth);
+  const Leaves leaves = treeLeaves(buffers);
+  const std::vector<shared::LightData> lights = voxelLights(ctx.scene);
+  const LeafRadiance direct =
+      injectLeaves(o, leaves, lights, lightVoxelsParams(ctx, int(lights.size()), true));
+  const ConeTraceSetup bounce = treeBounce(ctx, depth);
+  FrameOutputs last;
+  last.gathered.assign(direct.size(), glm::vec4(0.0f));  // stays so without a frame
+  const LeafRadiance radiance = propagateFrames(
+      o, leaves, direct, bounce.cones, bounce.params, s.frames,
+      s.clearEachFrame == SvoToggle::on,
+      s.firstStep == SvoFirstStep::ndf ? FirstStep::ndf : FirstStep::plain, &last);
+  buffers.put(vec4Buffer(BufferId::svo_propagate_svo_direct, direct));
+  buffers.put(vec4Buffer(BufferId::svo_propagate_svo_radiance, radiance));
+  buffers.put(vec4Buffer(BufferId::svo_propagate_svo_gathered, last.gathered));
+}
+
+}  // namespace voxgi::cpu

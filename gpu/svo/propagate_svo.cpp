@@ -1,0 +1,39 @@
+// GPU propagate_svo stage: injection and svo.frames progressive bounces on the GPU
+// (gpu/svo/leaf_light.h), frame by frame as cpu/svo/leaf_light.cpp's propagateFrames. The leaf
+// sums are decoded on the host (common/svo/stage_inputs.h: exact power-of-two scaling, the same
+// floats the CPU decodes).
+#include "common/lights.h"
+#include "common/svo/stage_inputs.h"
+#include "common/svo/tree_depth.h"
+#include "gpu/stages.h"
+#include "gpu/svo/leaf_light.h"
+#include "gpu/volumes.h"
+
+namespace voxgi::gpu {
+
+void svo::propagate_svo(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+  using namespace voxgi::svo;
+  beginStage(context, ctx, StageId::svo_propagate_svo);
+  const int depth = treeDepth(ctx.scene);
+  const SvoSettings& s = ctx.settings.svo;
+  const OctreeWords words = treeWords(buffers, false);
+  const Tree tree{words, depth};
+  const Leaves leaves = treeLeaves(buffers);
+  const std::vector<shared::LightData> lights = voxelLights(ctx.scene);
+  const LeafRadiance direct = injectLeaves(context, tree, leaves, lights,
+                                           lightVoxelsParams(ctx, int(lights.size()), true));
+  const ConeTraceSetup bounce = treeBounce(ctx, depth);
+  const FirstStep first = s.firstStep == SvoFirstStep::ndf ? FirstStep::ndf : FirstStep::plain;
+  FrameOutputs last;
+  last.gathered.assign(direct.size(), glm::vec4(0.0f));  // stays so without a frame
+  LeafRadiance radiance = direct;
+  for (int frame = 0; frame < s.frames; ++frame)
+    radiance = bounceOnce(context, tree, leaves, direct,
+                          s.clearEachFrame == SvoToggle::on ? direct : radiance, bounce.cones,
+                          bounce.params, first, frame + 1 == s.frames ? &last : nullptr);
+  buffers.put(vec4Buffer(BufferId::svo_propagate_svo_direct, direct));
+  buffers.put(vec4Buffer(BufferId::svo_propagate_svo_radiance, radiance));
+  buffers.put(vec4Buffer(BufferId::svo_propagate_svo_gathered, last.gathered));
+}
+
+}  // namespace voxgi::gpu
