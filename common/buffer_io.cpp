@@ -17,7 +17,8 @@ Image bufferImage(const Buffer& b) {
 std::vector<std::string> writeBuffers(const std::string& prefix,
                                       const std::vector<const Buffer*>& buffers,
                                       const GridSpec& grid,
-                                      const std::map<std::string, std::string>& metadata) {
+                                      const std::map<std::string, std::string>& metadata,
+                                      const SparseLayouts& sparse) {
   std::vector<std::string> written;
   std::vector<const Buffer*> voxels;
   for (const Buffer* b : buffers) {
@@ -30,7 +31,7 @@ std::vector<std::string> writeBuffers(const std::string& prefix,
     written.push_back(path);
   }
   if (!voxels.empty()) {
-    writeVdb(prefix + ".vdb", voxels, grid, metadata);
+    writeVdb(prefix + ".vdb", voxels, grid, metadata, sparse);
     written.push_back(prefix + ".vdb");
   }
   return written;

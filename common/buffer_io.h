@@ -9,6 +9,7 @@
 #include "common/buffer.h"
 #include "common/grid.h"
 #include "common/image_io.h"
+#include "common/vdb_io.h"
 
 namespace voxgi {
 
@@ -16,11 +17,12 @@ namespace voxgi {
 // integers (ids) become their float value.
 Image bufferImage(const Buffer& b);
 
-// Writes `<prefix>.vdb` (if there are voxel buffers) and `<prefix>.<buffer>.exr` per image
-// buffer; returns the paths written.
+// Writes `<prefix>.vdb` (if there are voxel or sparse buffers, the latter placed by `sparse`) and
+// `<prefix>.<buffer>.exr` per image buffer; returns the paths written.
 std::vector<std::string> writeBuffers(const std::string& prefix,
                                       const std::vector<const Buffer*>& buffers,
                                       const GridSpec& grid,
-                                      const std::map<std::string, std::string>& metadata = {});
+                                      const std::map<std::string, std::string>& metadata = {},
+                                      const SparseLayouts& sparse = {});
 
 }  // namespace voxgi

@@ -32,38 +32,50 @@ struct Block {
   }
 };
 
-template <class GridT, class Convert>
-openvdb::GridBase::Ptr makeGrid(const Buffer& b, const Block& block, Convert convert) {
+// Components [first, first + count) of a buffer's elements.
+struct View {
+  const Buffer& b;
+  int first, count;
+  template <class T>
+  T get(size_t e, int c) const {
+    return b.get<T>(e, first + c);
+  }
+  bool nonzero(size_t e) const {
+    for (int c = 0; c < count; ++c)
+      if (b.words[e * size_t(b.components()) + size_t(first + c)] != 0u) return true;
+    return false;
+  }
+};
+
+// A grid of the view's non-zero elements at the coordinates `places` gives: places(f) calls
+// f(coordinate, element) for each element the grid covers.
+template <class GridT, class Places, class Convert>
+openvdb::GridBase::Ptr makeGrid(const View& v, const Places& places, Convert convert) {
   auto g = GridT::create();
   auto acc = g->getAccessor();
-  for (int k = 0; k < block.size; ++k)
-    for (int j = 0; j < block.size; ++j)
-      for (int i = 0; i < block.size; ++i) {
-        const size_t e = block.element(i, j, k);
-        bool nonzero = false;
-        for (int c = 0; c < b.components(); ++c)
-          nonzero |= b.words[e * size_t(b.components()) + size_t(c)] != 0u;
-        if (nonzero) acc.setValue(openvdb::Coord(i, j, k), convert(b, e));
-      }
+  places([&](openvdb::Coord c, size_t e) {
+    if (v.nonzero(e)) acc.setValue(c, convert(v, e));
+  });
   return g;
 }
 
-// The grids of one block: a scalar or vector grid named `name`; 4-component buffers give the
+// The grids of one block: a scalar or vector grid named `name`; 4-component views give the
 // rgb vector grid and `name`_alpha.
-openvdb::GridPtrVec blockGrids(const Buffer& b, const Block& block, const std::string& name) {
+template <class Places>
+openvdb::GridPtrVec blockGrids(const View& v, const Places& places, const std::string& name) {
   openvdb::GridPtrVec out;
-  const int comps = b.components();
-  const bool f32 = b.spec->type == ScalarType::f32;
+  const int comps = v.count;
+  const bool f32 = v.b.spec->type == ScalarType::f32;
   if (comps > 4 && comps % 3 == 0) {  // SH volumes: rgb per coefficient, components r0.. g0.. b0..
     const int coefficients = comps / 3;
     for (int i = 0; i < coefficients; ++i) {
       const int r = i, g = coefficients + i, bl = 2 * coefficients + i;
       if (f32)
-        out.push_back(makeGrid<openvdb::Vec3SGrid>(b, block, [=](const Buffer& x, size_t e) {
+        out.push_back(makeGrid<openvdb::Vec3SGrid>(v, places, [=](const View& x, size_t e) {
           return openvdb::Vec3s(x.get<float>(e, r), x.get<float>(e, g), x.get<float>(e, bl));
         }));
       else
-        out.push_back(makeGrid<openvdb::Vec3IGrid>(b, block, [=](const Buffer& x, size_t e) {
+        out.push_back(makeGrid<openvdb::Vec3IGrid>(v, places, [=](const View& x, size_t e) {
           return openvdb::Vec3i(x.get<int32_t>(e, r), x.get<int32_t>(e, g), x.get<int32_t>(e, bl));
         }));
       out.back()->setName(name + "_c" + std::to_string(i));
@@ -71,24 +83,62 @@ openvdb::GridPtrVec blockGrids(const Buffer& b, const Block& block, const std::s
     return out;
   }
   if (comps >= 3 && f32)
-    out.push_back(makeGrid<openvdb::Vec3SGrid>(b, block, [](const Buffer& x, size_t e) {
+    out.push_back(makeGrid<openvdb::Vec3SGrid>(v, places, [](const View& x, size_t e) {
       return openvdb::Vec3s(x.get<float>(e, 0), x.get<float>(e, 1), x.get<float>(e, 2));
     }));
   else if (comps == 3)  // integers keep their bits: u32 is stored bit-cast as int32
-    out.push_back(makeGrid<openvdb::Vec3IGrid>(b, block, [](const Buffer& x, size_t e) {
+    out.push_back(makeGrid<openvdb::Vec3IGrid>(v, places, [](const View& x, size_t e) {
       return openvdb::Vec3i(x.get<int32_t>(e, 0), x.get<int32_t>(e, 1), x.get<int32_t>(e, 2));
     }));
   else if (f32)
     out.push_back(makeGrid<openvdb::FloatGrid>(
-        b, block, [](const Buffer& x, size_t e) { return x.get<float>(e, 0); }));
+        v, places, [](const View& x, size_t e) { return x.get<float>(e, 0); }));
   else
     out.push_back(makeGrid<openvdb::Int32Grid>(
-        b, block, [](const Buffer& x, size_t e) { return x.get<int32_t>(e, 0); }));
+        v, places, [](const View& x, size_t e) { return x.get<int32_t>(e, 0); }));
   out.back()->setName(name);
   if (comps == 4) {
     out.push_back(makeGrid<openvdb::FloatGrid>(
-        b, block, [](const Buffer& x, size_t e) { return x.get<float>(e, 3); }));
+        v, places, [](const View& x, size_t e) { return x.get<float>(e, 3); }));
     out.back()->setName(name + "_alpha");
+  }
+  return out;
+}
+
+// Every element of a dense block at its (i, j, k).
+auto blockPlaces(const Block& block) {
+  return [block](const auto& f) {
+    for (int k = 0; k < block.size; ++k)
+      for (int j = 0; j < block.size; ++j)
+        for (int i = 0; i < block.size; ++i) f(openvdb::Coord(i, j, k), block.element(i, j, k));
+  };
+}
+
+openvdb::GridPtrVec blockGrids(const Buffer& b, const Block& block, const std::string& name) {
+  return blockGrids(View{b, 0, b.components()}, blockPlaces(block), name);
+}
+
+// A sparse buffer's grids: per component group and pyramid level, the elements `layout` puts
+// there (docs/svo.md, "Dumps").
+std::vector<std::pair<openvdb::GridPtrVec, int>> sparseGrids(const Buffer& b,
+                                                             const SparseLayout& layout,
+                                                             const std::string& name) {
+  std::vector<std::pair<openvdb::GridPtrVec, int>> out;
+  int top = -1;
+  for (const int8_t l : layout.level) top = std::max(top, int(l));
+  for (int level = 0; level <= top; ++level) {
+    const auto places = [&layout, level](const auto& f) {
+      for (size_t e = 0; e < layout.level.size(); ++e)
+        if (layout.level[e] == level) {
+          const glm::ivec3 c = layout.coord[e];
+          f(openvdb::Coord(c.x, c.y, c.z), e);
+        }
+    };
+    for (const SparseLayout::Group& g : layout.groups)
+      out.emplace_back(
+          blockGrids(View{b, g.first, g.count}, places,
+                     name + g.suffix + (level > 0 ? "_L" + std::to_string(level) : "")),
+          level);
   }
   return out;
 }
@@ -108,7 +158,8 @@ void fillBuffer(const openvdb::GridBase::Ptr& base, Buffer& b, int n, Store stor
 }  // namespace
 
 void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers,
-              const GridSpec& grid, const std::map<std::string, std::string>& metadata) {
+              const GridSpec& grid, const std::map<std::string, std::string>& metadata,
+              const SparseLayouts& sparse) {
   openvdb::initialize();
   openvdb::GridPtrVec grids;
   const int n = grid.resolution;
@@ -117,7 +168,15 @@ void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers
     const std::string name(b->spec->name);
     // (grids, pyramid level) per block of the buffer
     std::vector<std::pair<openvdb::GridPtrVec, int>> blocks;
-    if (b->spec->shape == BufferShape::volume) {
+    std::map<std::string, std::string> own;  // the buffer's own metadata (a sparse layout's)
+    if (b->spec->shape == BufferShape::sparse) {
+      const auto layout = sparse.find(b->spec->id);
+      if (layout == sparse.end())
+        throw std::logic_error("no layout to write the sparse buffer " + b->spec->qualifiedName() +
+                               " as grids");
+      blocks = sparseGrids(*b, layout->second, name);
+      own = layout->second.metadata;
+    } else if (b->spec->shape == BufferShape::volume) {
       blocks.emplace_back(blockGrids(*b, {0, n, size_t(n)}, name), 0);
     } else if (b->spec->shape == BufferShape::series) {
       const size_t volume = size_t(n) * size_t(n) * size_t(n);
@@ -151,6 +210,7 @@ void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers
         g->insertMeta("voxgi_resolution", openvdb::Int32Metadata(grid.resolution));
         for (const auto& [key, value] : metadata)
           g->insertMeta(key, openvdb::StringMetadata(value));
+        for (const auto& [key, value] : own) g->insertMeta(key, openvdb::StringMetadata(value));
         grids.push_back(g);
       }
   }

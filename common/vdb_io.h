@@ -2,7 +2,8 @@
 // linear transform that puts voxel (i,j,k)'s centre at grid.min + (i+0.5)*h in world space, so the
 // grids line up with the scene in any VDB viewer. A pyramid gives one grid per level (and face):
 // NAME_L2, NAME_+x_L2, ... with voxel size h*2^level, so every level lines up too. Four components
-// give an rgb vector grid plus NAME_alpha. Image buffers are not written (they go to EXR). Only
+// give an rgb vector grid plus NAME_alpha. A sparse buffer gives the grids of its SparseLayout.
+// Image buffers are not written (they go to EXR). Only
 // non-zero voxels are active (background 0). Metadata: voxgi_stage, voxgi_type (u32/i32/f32),
 // voxgi_level, voxgi_grid_min, voxgi_grid_size, voxgi_resolution, plus any extra entries given.
 #pragma once
@@ -16,8 +17,26 @@
 
 namespace voxgi {
 
+// Where a sparse buffer's elements lie (BufferShape::sparse: an octree's pools, whose places only
+// the tree knows; common/svo/level_layout.h): per element its pyramid level (0 the finest, grid
+// voxel size h 2^level; -1 for an element that is not a voxel) and voxel coordinate there, and
+// which components make which grid (NAME + suffix, then _L<level> above level 0).
+struct SparseLayout {
+  struct Group {
+    int first, count;  // count 1, 3 or 4 (rgb + alpha)
+    std::string suffix;
+  };
+  std::vector<int8_t> level;
+  std::vector<glm::ivec3> coord;
+  std::vector<Group> groups;
+  std::map<std::string, std::string> metadata;  // added to each of the buffer's grids
+};
+using SparseLayouts = std::map<BufferId, SparseLayout>;
+
+// Throws std::logic_error for a sparse buffer without its layout in `sparse`.
 void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers,
-              const GridSpec& grid, const std::map<std::string, std::string>& metadata = {});
+              const GridSpec& grid, const std::map<std::string, std::string>& metadata = {},
+              const SparseLayouts& sparse = {});
 
 // Reads every volume grid of 1 or 3 components written by writeVdb back into dense buffers and
 // the grid. `specs` supplies the BufferSpec for each grid name (a grid with no spec is skipped).

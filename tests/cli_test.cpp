@@ -39,6 +39,35 @@ TEST(Cli, VoxelizeWritesAlignedGrids) {
   EXPECT_NEAR(c.x(), -2.0 + 0.5 * 562.0 / 32.0, 1e-9);
 }
 
+// voxgi dump --technique svo writes every octree level as grids that line up with the scene's
+// grid: leaves at the voxel size, node level depth - m at 2^m voxels.
+TEST(Cli, SvoLevelsDumpAsAlignedGrids) {
+  const std::string dir = testTempDir() + "svo";
+  const CommandResult r =
+      voxgi("dump " + sourcePath("scenes/cornell_box.json") +
+            " --technique svo --stage all --resolution 16 --image 16 --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  openvdb::initialize();
+  openvdb::io::File build(dir + "/build_svo.vdb");
+  build.open();
+  const auto opacity = build.readGrid("leaf_sums_opacity");
+  EXPECT_GT(opacity->activeVoxelCount(), 0u);
+  EXPECT_NE(opacity->metaValue<std::string>("voxgi_svo_weight_scale"), "");
+  const auto child = build.readGrid("nodes_child_L3");  // the root tile: tree level 1 of 4
+  EXPECT_EQ(child->activeVoxelCount(), 8u);
+  openvdb::io::File mip(dir + "/mip_svo.vdb");
+  mip.open();
+  const double h = 562.0 / 16.0;
+  for (const auto& [name, level] : {std::pair<std::string, int>{"node_faces_+x_L1", 1},
+                                    std::pair<std::string, int>{"node_faces_-z_L2", 2},
+                                    std::pair<std::string, int>{"gathered_bricks", 0}}) {
+    const auto g = mip.readGrid(name);
+    EXPECT_GT(g->activeVoxelCount(), 0u) << name;
+    const openvdb::Vec3d c = g->indexToWorld(openvdb::Coord(0, 0, 0));
+    EXPECT_NEAR(c.x(), -2.0 + 0.5 * h * double(1 << level), 1e-9) << name;
+  }
+}
+
 TEST(Cli, BareMeshAndAutoBackend) {
   const std::string out = testTempDir() + "bunny.vdb";
   const CommandResult r = voxgi("voxelize " + sourcePath("scenes/bunny.obj") +
@@ -46,8 +75,8 @@ TEST(Cli, BareMeshAndAutoBackend) {
   EXPECT_EQ(r.code, 0) << r.output;
 }
 
-// voxgi sample writes a point cloud the loader reads back, path traces it, and refuses a bad
-// gradient with one line.
+// voxgi sample writes a point cloud the loader reads back, path traces it and renders it with the
+// octree, and refuses a bad gradient with one line.
 TEST(Cli, SampleWritesAPointCloudThatRenders) {
   const std::string cloud = testTempDir() + "box.ply";
   CommandResult r = voxgi("sample " + sourcePath("scenes/cornell_box.json") +
@@ -56,6 +85,18 @@ TEST(Cli, SampleWritesAPointCloudThatRenders) {
   r = voxgi("render " + cloud + " --technique path --spp 1 --image 16 --out " + testTempDir() +
             "box.exr");
   EXPECT_EQ(r.code, 0) << r.output;
+  // The octree renders it on either backend; it needs at least 4 leaves a side.
+  for (const char* backend : {"cpu", "gpu"}) {
+    r = voxgi("render " + cloud + " --technique svo --backend " + backend +
+              " --resolution 16 --image 16 --set svo.frames=2 --out " + testTempDir() + "svo.exr");
+    EXPECT_EQ(r.code, 0) << r.output;
+  }
+  r = voxgi("render " + cloud + " --technique svo --resolution 2 --image 16 --out " +
+            testTempDir() + "svo.exr");
+  EXPECT_EQ(r.code, 2) << r.output;
+  EXPECT_NE(r.output.find("grid.resolution: the octree's leaves are the grid's voxels"),
+            std::string::npos)
+      << r.output;
   r = voxgi("sample " + sourcePath("scenes/cornell_box.json") +
             " --points 10 --density-gradient w:2 --out " + cloud);
   EXPECT_EQ(r.code, 2) << r.output;

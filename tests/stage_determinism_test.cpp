@@ -54,5 +54,28 @@ TEST(StageDeterminism, LpvBitIdenticalOn1_2_8Threads) {
   }
 }
 
+// The octree with two progressive frames and the normal-weighted first step, from the meshes of
+// the bunny (a point light) and a glossy point cloud with the Cornell box's area light.
+TEST(StageDeterminism, SvoBitIdenticalOn1_2_8Threads) {
+  Scene bunny = loadScene(sourcePath("scenes/bunny.json"));
+  for (Scene scene : {bunny, cornellBoxCloud(60000, true)}) {
+    scene.grid.resolution = 32;
+    scene.camera.width = scene.camera.height = 48;
+    const Technique& svo = findTechnique("svo");
+    const Settings settings = resolveSettings(svo, scene.settings, scene.file, "default",
+                                              {"svo.frames=2", "svo.first_step=ndf"});
+    const std::string last = svo.steps().back()->qualifiedName();
+    uint64_t reference = 0;
+    for (int threads : {1, 2, 8}) {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+      tbb::task_arena arena(threads);
+      const uint64_t h =
+          arena.execute([&] { return hashBuffers(runCpuUntil(svo, scene, settings, last)); });
+      if (threads == 1) reference = h;
+      EXPECT_EQ(h, reference) << scene.file << ", " << threads << " threads";
+    }
+  }
+}
+
 }  // namespace
 }  // namespace voxgi::test

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include "common/pipeline.h"
+#include "common/scene_load.h"
+#include "common/surface_sampling.h"
 #include "common/voxel_triangles.h"
 #include "cpu/backend.h"
 
@@ -74,6 +76,29 @@ BufferSet runCpuUntil(const Technique& technique, const Scene& scene, const Sett
 
 const Technique& vct() {
   return findTechnique("vct");
+}
+
+Scene cornellBoxCloud(size_t points, bool glossy) {
+  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
+  SurfaceSampling sampling;
+  sampling.points = points;
+  sampling.noise = 0.1;
+  sampling.gradientAxis = 1;
+  sampling.gradientRatio = 0.5;
+  PointCloud cloud = sampleSurfaces(scene, sampling);
+  cloud.name = "the sampled Cornell box";
+  Material m;
+  m.name = "cloud";
+  if (glossy) {
+    m.specular = glm::vec3(0.3f);
+    m.shininess = 40.0f;
+  }
+  cloud.material = uint32_t(scene.materials.size());
+  scene.materials.push_back(m);
+  std::erase_if(scene.meshes,
+                [&](const Mesh& mesh) { return !scene.materials[mesh.material].emissive(); });
+  scene.pointClouds.push_back(std::move(cloud));
+  return scene;
 }
 
 glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v) {

@@ -30,6 +30,10 @@ BufferSet runCpuUntil(const Technique& technique, const Scene& scene, const Sett
                       std::string_view last);
 // The voxel cone tracing technique.
 const Technique& vct();
+// The Cornell box with its walls and blocks as `points` sampled points (noise 0.1 along the normal,
+// half as dense at the top, as the shipped cornell_box_cloud.json's), its light a mesh; the cloud
+// carries the walls' colours and a glossy material of its own when `glossy`.
+Scene cornellBoxCloud(size_t points, bool glossy = false);
 // Voxel v's components of a volume buffer.
 glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v);
 // FNV-1a over every buffer's qualified name and words.

@@ -24,6 +24,7 @@
 #include "common/pipeline.h"
 #include "common/scene_load.h"
 #include "common/surface_sampling.h"
+#include "common/svo/level_layout.h"
 #include "common/memory.h"
 #include "common/vdb_io.h"
 #include "cpu/backend.h"
@@ -277,8 +278,9 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
   const StageRun run = runStages(c, stage == "all" ? nullptr : requested.front(), true);
   for (const StageSpec* s : run.stages) {
     if (stage != "all" && s != requested.front()) continue;
-    for (const std::string& path : writeBuffers(dir + "/" + std::string(s->name),
-                                                buffersOf(run.buffers, *s, true), run.scene.grid))
+    for (const std::string& path :
+         writeBuffers(dir + "/" + std::string(s->name), buffersOf(run.buffers, *s, true),
+                      run.scene.grid, {}, svo::levelLayouts(run.buffers, run.scene.grid)))
       std::cout << "wrote " << path << "\n";
   }
   return kExitOk;

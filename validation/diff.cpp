@@ -9,6 +9,7 @@
 
 #include "common/buffer_io.h"
 #include "common/output_file.h"
+#include "common/svo/level_layout.h"
 #include "validation/comparisons.h"
 
 namespace voxgi::validation {
@@ -93,9 +94,11 @@ void dump(const std::string& dir, const StageSpec& stage, const StageReport& rep
       if (element < classes.elementCount()) classes.set<int32_t>(element, 0, int32_t(kind));
     diffList.push_back(&classes);
   }
-  writeBuffers(prefix + "_cpu", cpuList, grid, {{"voxgi_backend", "cpu"}});
-  writeBuffers(prefix + "_gpu", gpuList, grid, {{"voxgi_backend", "gpu"}});
-  writeBuffers(prefix + "_diff", diffList, grid, {{"voxgi_backend", "gpu minus cpu"}});
+  // Sparse buffers are placed by the CPU's tree: the GPU's is in the same canonical order.
+  const SparseLayouts layouts = svo::levelLayouts(cpu, grid);
+  writeBuffers(prefix + "_cpu", cpuList, grid, {{"voxgi_backend", "cpu"}}, layouts);
+  writeBuffers(prefix + "_gpu", gpuList, grid, {{"voxgi_backend", "gpu"}}, layouts);
+  writeBuffers(prefix + "_diff", diffList, grid, {{"voxgi_backend", "gpu minus cpu"}}, layouts);
 }
 
 }  // namespace

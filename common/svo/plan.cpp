@@ -36,8 +36,9 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   for (const PointCloud& c : scene.pointClouds) points += c.size();
   for (const Mesh& m : scene.meshes) triangles += m.triangles.size();
   std::ostringstream build;
-  build << "depth " << depth << " (2^" << depth << " leaves a side, grid.resolution): "
-        << scene.pointClouds.size() << " point cloud(s) of " << points << " point(s)";
+  build << "depth " << depth << " (2^" << depth
+        << " leaves a side, grid.resolution): " << scene.pointClouds.size() << " point cloud(s) of "
+        << points << " point(s)";
   if (triangles > 0)
     build << ", " << triangles << " triangle(s) sampled at " << s.meshDensity
           << " points per leaf face (svo.mesh_density)";
@@ -45,10 +46,10 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   std::ostringstream frames;
   frames << (scene.lights.empty() ? "no analytic lights"
                                   : std::to_string(scene.lights.size()) + " analytic light(s)")
-         << " injected with " << settingValue(settings, "voxel_shadow.mode")
-         << " voxel shadows; " << s.frames << " frame(s) (svo.frames)"
+         << " injected with " << settingValue(settings, "voxel_shadow.mode") << " voxel shadows; "
+         << s.frames << " frame(s) (svo.frames)"
          << (s.clearEachFrame == SvoToggle::on ? " each gathering from the direct light alone"
-                                                : ", one more bounce each");
+                                               : ", one more bounce each");
   p.stage(StageId::svo_propagate_svo, true, frames.str());
   p.stage(StageId::svo_mip_svo, true,
           "the last frame's radiance up the tree (svo.first_step=" +

@@ -10,8 +10,8 @@ enum class SvoToggle { off, on };
 enum class SvoFirstStep { plain, ndf };
 
 struct SvoSettings {
-  float meshDensity = 4.0f;  // points sampled per leaf face of mesh area
-  int frames = 1;            // progressive bounces [Salm 2015, §4.4.3]
+  float meshDensity = 4.0f;                   // points sampled per leaf face of mesh area
+  int frames = 1;                             // progressive bounces [Salm 2015, §4.4.3]
   SvoToggle clearEachFrame = SvoToggle::off;  // every frame gathers from the direct light alone
   SvoFirstStep firstStep = SvoFirstStep::plain;
   int seed = 1;  // of the points sampled on meshes

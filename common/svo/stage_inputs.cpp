@@ -66,8 +66,8 @@ Leaves resolveLeaves(const Words& sums, float weightScale, float emissionScale) 
 
 Leaves treeLeaves(const BufferSet& buffers) {
   const Buffer& scales = buffers.at(BufferId::svo_build_svo_scales);
-  return resolveLeaves(buffers.at(BufferId::svo_build_svo_leaf_sums).words,
-                       scales.get<float>(0, 0), scales.get<float>(0, 1));
+  return resolveLeaves(buffers.at(BufferId::svo_build_svo_leaf_sums).words, scales.get<float>(0, 0),
+                       scales.get<float>(0, 1));
 }
 
 Buffer vec4Buffer(BufferId id, const std::vector<glm::vec4>& values) {

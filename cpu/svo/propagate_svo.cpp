@@ -21,8 +21,7 @@ void svo::propagate_svo(const StageContext& ctx, BufferSet& buffers) {
   FrameOutputs last;
   last.gathered.assign(direct.size(), glm::vec4(0.0f));  // stays so without a frame
   const LeafRadiance radiance = propagateFrames(
-      o, leaves, direct, bounce.cones, bounce.params, s.frames,
-      s.clearEachFrame == SvoToggle::on,
+      o, leaves, direct, bounce.cones, bounce.params, s.frames, s.clearEachFrame == SvoToggle::on,
       s.firstStep == SvoFirstStep::ndf ? FirstStep::ndf : FirstStep::plain, &last);
   buffers.put(vec4Buffer(BufferId::svo_propagate_svo_direct, direct));
   buffers.put(vec4Buffer(BufferId::svo_propagate_svo_radiance, radiance));

@@ -13,13 +13,11 @@ void svo::shade_svo(const StageContext& ctx, BufferSet& buffers) {
   const Octree o = octreeFromWords(treeWords(buffers, false), depth);
   const Leaves leaves = treeLeaves(buffers);
   const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_svo_radiance));
-  const NodeLevels mips =
-      nodeLevels(buffers.at(BufferId::svo_mip_svo_node_faces), o.tiles, depth);
+  const NodeLevels mips = nodeLevels(buffers.at(BufferId::svo_mip_svo_node_faces), o.tiles, depth);
   const ConeTraceSetup trace = treeConeTrace(ctx, depth);
-  const PixelShading shading =
-      shadePixels(buffers, o, leaves, radiance, mips,
-                  buffers.at(BufferId::svo_mip_svo_gathered_bricks).words, trace.lights,
-                  trace.objects, trace.params, ctx.scene.background);
+  const PixelShading shading = shadePixels(
+      buffers, o, leaves, radiance, mips, buffers.at(BufferId::svo_mip_svo_gathered_bricks).words,
+      trace.lights, trace.objects, trace.params, ctx.scene.background);
   const glm::ivec3 extent = buffers.at(BufferId::common_gbuffer_pixel_position).extent;
   using Field = glm::vec3 shared::PixelLight::*;
   const std::pair<BufferId, Field> terms[] = {

@@ -20,8 +20,8 @@ void svo::propagate_svo(GlContext& context, const StageContext& ctx, BufferSet& 
   const Tree tree{words, depth};
   const Leaves leaves = treeLeaves(buffers);
   const std::vector<shared::LightData> lights = voxelLights(ctx.scene);
-  const LeafRadiance direct = injectLeaves(context, tree, leaves, lights,
-                                           lightVoxelsParams(ctx, int(lights.size()), true));
+  const LeafRadiance direct =
+      injectLeaves(context, tree, leaves, lights, lightVoxelsParams(ctx, int(lights.size()), true));
   const ConeTraceSetup bounce = treeBounce(ctx, depth);
   const FirstStep first = s.firstStep == SvoFirstStep::ndf ? FirstStep::ndf : FirstStep::plain;
   FrameOutputs last;

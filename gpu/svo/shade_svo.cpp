@@ -26,8 +26,7 @@ void svo::shade_svo(GlContext& context, const StageContext& ctx, BufferSet& buff
   // shade_svo.comp's five vec4 a pixel.
   std::vector<glm::vec4> packed(5 * pixels);
   for (size_t e = 0; e < pixels; ++e) {
-    packed[5 * e] = glm::vec4(position.vec3At(e),
-                              std::bit_cast<float>(object.get<uint32_t>(e, 0)));
+    packed[5 * e] = glm::vec4(position.vec3At(e), std::bit_cast<float>(object.get<uint32_t>(e, 0)));
     packed[5 * e + 1] = glm::vec4(normal.vec3At(e), 0.0f);
     packed[5 * e + 2] = glm::vec4(albedo.vec3At(e), 0.0f);
     packed[5 * e + 3] = glm::vec4(specular.vec3At(e), 0.0f);
@@ -39,8 +38,8 @@ void svo::shade_svo(GlContext& context, const StageContext& ctx, BufferSet& buff
   GlBuffer faces(gl, uploadWords(gl, buffers.at(BufferId::svo_mip_svo_node_faces)));
   GlBuffer bricks(gl, uploadWords(gl, buffers.at(BufferId::svo_mip_svo_gathered_bricks)));
   GlBuffer lights(gl, createBlock(gl, trace.params, trace.lights));
-  GlBuffer objects(gl, createBuffer(gl, trace.objects.size() * sizeof(trace.objects[0]),
-                                    trace.objects.data()));
+  GlBuffer objects(
+      gl, createBuffer(gl, trace.objects.size() * sizeof(trace.objects[0]), trace.objects.data()));
   GlBuffer pixelBlock(gl, createBuffer(gl, packed.size() * sizeof(glm::vec4), packed.data()));
   GlBuffer terms(gl, createBuffer(gl, packed.size() * sizeof(glm::vec4), nullptr));
 
@@ -50,7 +49,7 @@ void svo::shade_svo(GlContext& context, const StageContext& ctx, BufferSet& buff
   program.set("uHeight", extent.y);
   program.set("uBackground", ctx.scene.background);
   program.use();
-  const GLuint blocks[] = {nodes.get(),   source.get(),     faces.get(), bricks.get(),
+  const GLuint blocks[] = {nodes.get(),  source.get(),  faces.get(),      bricks.get(),
                            lights.get(), objects.get(), pixelBlock.get(), terms.get()};
   for (GLuint i = 0; i < 8; ++i) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, blocks[i]);
   gl.DispatchCompute(GLuint((extent.x + 7) / 8), GLuint((extent.y + 7) / 8), 1);
