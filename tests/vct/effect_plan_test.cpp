@@ -102,5 +102,27 @@ TEST(EffectPlan, SkippedEffectsLeaveTheImageUnchanged) {
   }
 }
 
+// The octree's plan: emission and the specular cone from the materials of meshes and clouds, and
+// the full pipeline gives the same image with the extra buffers.
+TEST(EffectPlan, SvoFollowsTheSceneAndTheFullPlanChangesNothing) {
+  const Technique& svo = findTechnique("svo");
+  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
+  scene.grid.resolution = 16;
+  scene.camera.width = scene.camera.height = 32;
+  Settings settings = techniqueDefaults(svo);
+  const EffectPlan plan = svo.plan(scene, settings);
+  EXPECT_TRUE(planned(plan, "emission per pixel"));
+  EXPECT_FALSE(planned(plan, "specular cone"));
+  const BufferSet lean = runCpuUntil(svo, scene, settings, "shade_svo");
+  EXPECT_FALSE(lean.contains(BufferId::svo_shade_svo_indirect_specular));
+  settings.planMode = PlanMode::full;
+  const BufferSet full = runCpuUntil(svo, scene, settings, "shade_svo");
+  EXPECT_TRUE(full.contains(BufferId::svo_shade_svo_indirect_specular));
+  EXPECT_EQ(lean.at(BufferId::svo_shade_svo_color).words,
+            full.at(BufferId::svo_shade_svo_color).words);
+  Scene glossy = cornellBoxCloud(2000, true);
+  EXPECT_TRUE(planned(svo.plan(glossy, techniqueDefaults(svo)), "specular cone"));
+}
+
 }  // namespace
 }  // namespace voxgi::test
