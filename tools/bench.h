@@ -61,6 +61,8 @@ struct BenchSvoOptions {
   int64_t points = 1400000;  // [Salm 2015]'s CaveCloud
   std::vector<int> depths{7, 8};
   std::vector<int> threads{1, 2};
+  std::vector<int> stageDepths{6, 7};  // the technique's stages through the runner
+  bool gpu = true;
   int repeats = 3;
   std::string json;
 };

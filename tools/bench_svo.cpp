@@ -1,7 +1,9 @@
 // voxgi bench svo (docs/benchmarks.md): the point cloud's way into the octree on the CPU — PLY
 // load, samples, structure, leaf sums — at each depth and thread count, side by side with
 // OpenVDB's point rasterisation (createPointDataGrid, then rasterizeTrilinear of the colour) at
-// the same voxel size, and the octree's memory against [Salm 2015, Table 5.1]'s Cornell box.
+// the same voxel size, and the octree's memory against [Salm 2015, Table 5.1]'s Cornell box; then
+// every stage of the technique through the runner on the CPU and the GPU (OSMesa), the Cornell
+// box's walls being the cloud.
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -15,7 +17,10 @@
 #include "common/scene_load.h"
 #include "common/surface_sampling.h"
 #include "common/svo/samples.h"
+#include "common/voxel_triangles.h"
+#include "cpu/backend.h"
 #include "cpu/svo/octree.h"
+#include "gpu/backend.h"
 #include "tools/bench.h"
 #include "tools/openvdb_points.h"
 
@@ -50,10 +55,57 @@ void addBenchSvoOptions(CLI::App& cmd, BenchSvoOptions& o) {
       ->delimiter(',')
       ->check(CLI::Range(2, 10));
   cmd.add_option("--threads-list", o.threads, "CPU thread counts")->delimiter(',');
+  cmd.add_option("--stage-depths", o.stageDepths,
+                 "octree depths at which every stage of the technique is timed")
+      ->delimiter(',')
+      ->check(CLI::Range(2, 10));
+  cmd.add_flag("!--no-gpu", o.gpu, "skip the GPU (OSMesa) stage timings");
   cmd.add_option("--repeat", o.repeats, "runs per measurement (the median is reported)")
       ->check(CLI::Range(1, 100));
   cmd.add_option("--json", o.json, "also write the figures as JSON");
 }
+
+namespace {
+
+// Every stage of svo on the Cornell box whose walls and blocks are `cloud` (its light a mesh), at
+// 2^depth leaves and 256^2 pixels: stage -> seconds per backend.
+nlohmann::json timeTechnique(const PointCloud& cloud, const std::vector<int>& depths, bool gpu,
+                             int repeats) {
+  std::unique_ptr<gpu::GlContext> context;
+  if (gpu) context = gpu::GlContext::create(gpu::GlPlatform::osmesa);
+  std::cout << "\n| depth | backend | stage | seconds |\n|---|---|---|---|\n";
+  nlohmann::json rows = nlohmann::json::array();
+  const Technique& svo = findTechnique("svo");
+  for (const int depth : depths) {
+    Scene scene = loadScene("scenes/cornell_box.json");
+    std::erase_if(scene.meshes,
+                  [&](const Mesh& m) { return !scene.materials[m.material].emissive(); });
+    scene.pointClouds = {cloud};
+    scene.pointClouds.front().material = uint32_t(scene.materials.size());
+    scene.materials.push_back(Material{"cloud"});
+    scene.grid.resolution = 1 << depth;
+    const Settings settings = techniqueDefaults(svo);
+    const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
+    const StageContext ctx{svo, scene, settings, tris};
+    cpu::CpuBackend cpuBackend;
+    std::vector<std::pair<std::string, std::vector<std::pair<std::string, double>>>> runs;
+    runs.emplace_back("cpu", timeStages(ctx, repeats, cpuBackend));
+    if (context) {
+      gpu::GpuBackend gpuBackend(*context);
+      runs.emplace_back("gpu osmesa", timeStages(ctx, repeats, gpuBackend));
+    }
+    for (const auto& [backend, stages] : runs)
+      for (const auto& [stage, seconds] : stages) {
+        std::cout << "| " << depth << " | " << backend << " | " << stage << " | " << std::fixed
+                  << std::setprecision(3) << seconds << " |\n"
+                  << std::flush;
+        rows.push_back({{"depth", depth}, {"backend", backend}, {"stage", stage}, {"s", seconds}});
+      }
+  }
+  return rows;
+}
+
+}  // namespace
 
 int runBenchSvo(const BenchSvoOptions& o) {
   std::string cloudFile = o.cloud;
@@ -119,12 +171,15 @@ int runBenchSvo(const BenchSvoOptions& o) {
            {"octree_bytes", octreeBytes(octree)}});
     }
   }
+  const nlohmann::json stages =
+      timeTechnique(scene.pointClouds.front(), o.stageDepths, o.gpu, o.repeats);
   if (!o.json.empty())
-    writeFileAtomically(
-        o.json, nlohmann::json(
-                    {{"ply_load_s", loadSeconds}, {"points", scene.pointCount()}, {"rows", rows}})
-                        .dump(2) +
-                    "\n");
+    writeFileAtomically(o.json, nlohmann::json({{"ply_load_s", loadSeconds},
+                                                {"points", scene.pointCount()},
+                                                {"rows", rows},
+                                                {"stages", stages}})
+                                        .dump(2) +
+                                    "\n");
   return 0;
 }
 
