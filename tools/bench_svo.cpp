@@ -21,19 +21,20 @@
 #include "cpu/backend.h"
 #include "cpu/svo/octree.h"
 #include "gpu/backend.h"
+#include "gpu/svo/octree.h"
 #include "tools/bench.h"
 #include "tools/openvdb_points.h"
 
 namespace voxgi::tools {
 namespace {
 
-// Bytes of the octree as built now: the structure's words, the leaf sums and the f32 pools the
-// technique keeps per leaf tile (albedo and opacity, normal, emission, radiance and gathered
-// light as 3^3 bricks) and per node tile (six faces as 3^3 bricks).
+// Bytes of the technique's tree buffers (common/svo/stages.inc) at this tree: the structure's
+// words; per leaf the sums (10 words) and direct, radiance and gathered light (4 floats each);
+// per leaf tile the gathered light's 3^3 brick; per node six RGBA faces.
 uint64_t octreeBytes(const cpu::svo::Octree& o) {
   const uint64_t structure = (o.nodes.size() + o.tiles.size() + o.leafTiles.size()) * 4;
-  const uint64_t perLeafTile = 8 * 10 * 4 + 27 * (4 + 3 + 3 + 4 + 4) * 4;
-  const uint64_t perNodeTile = 27 * 6 * 4 * 4;
+  const uint64_t perLeafTile = 8 * (10 + 3 * 4) * 4 + 27 * 4 * 4;
+  const uint64_t perNodeTile = 8 * 6 * 4 * 4;
   return structure + o.leafTileCount() * perLeafTile + o.tileCount() * perNodeTile;
 }
 
@@ -59,7 +60,7 @@ void addBenchSvoOptions(CLI::App& cmd, BenchSvoOptions& o) {
                  "octree depths at which every stage of the technique is timed")
       ->delimiter(',')
       ->check(CLI::Range(2, 10));
-  cmd.add_flag("!--no-gpu", o.gpu, "skip the GPU (OSMesa) stage timings");
+  cmd.add_flag("!--no-gpu", o.gpu, "skip the GPU (OSMesa) build and stage timings");
   cmd.add_option("--repeat", o.repeats, "runs per measurement (the median is reported)")
       ->check(CLI::Range(1, 100));
   cmd.add_option("--json", o.json, "also write the figures as JSON");
@@ -68,11 +69,9 @@ void addBenchSvoOptions(CLI::App& cmd, BenchSvoOptions& o) {
 namespace {
 
 // Every stage of svo on the Cornell box whose walls and blocks are `cloud` (its light a mesh), at
-// 2^depth leaves and 256^2 pixels: stage -> seconds per backend.
-nlohmann::json timeTechnique(const PointCloud& cloud, const std::vector<int>& depths, bool gpu,
-                             int repeats) {
-  std::unique_ptr<gpu::GlContext> context;
-  if (gpu) context = gpu::GlContext::create(gpu::GlPlatform::osmesa);
+// 2^depth leaves and 256^2 pixels: stage -> seconds per backend (the GPU's with a context).
+nlohmann::json timeTechnique(const PointCloud& cloud, const std::vector<int>& depths,
+                             gpu::GlContext* context, int repeats) {
   std::cout << "\n| depth | backend | stage | seconds |\n|---|---|---|---|\n";
   nlohmann::json rows = nlohmann::json::array();
   const Technique& svo = findTechnique("svo");
@@ -130,6 +129,8 @@ int runBenchSvo(const BenchSvoOptions& o) {
                "Cornell box |\n"
             << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   nlohmann::json rows = nlohmann::json::array();
+  std::unique_ptr<gpu::GlContext> context;
+  if (o.gpu) context = gpu::GlContext::create(gpu::GlPlatform::osmesa);
   for (const int depth : o.depths) {
     scene.grid = fitGrid(scene.bounds(), 1 << depth);
     const double leaf = scene.grid.size / double(1 << depth);
@@ -170,9 +171,19 @@ int runBenchSvo(const BenchSvoOptions& o) {
            {"leaf_tiles", octree.leafTileCount()},
            {"octree_bytes", octreeBytes(octree)}});
     }
+    if (context) {  // the GPU's build: upload, atomics, read-back in the canonical form
+      const svo::SampleSet set = svo::prepareSamples(scene, depth, 4.0, 1);
+      const double gpuBuild = medianSeconds(o.repeats, [&] {
+        gpu::svo::buildOctree(*context, set.samples, depth, set.weightScale, cloudFile);
+      });
+      std::cout << std::setprecision(3) << "| " << depth << " | gpu osmesa |  |  |  | " << gpuBuild
+                << " |  |  |  |  |  |  |\n"
+                << std::flush;
+      rows.push_back({{"depth", depth}, {"threads", "gpu osmesa"}, {"build_s", gpuBuild}});
+    }
   }
   const nlohmann::json stages =
-      timeTechnique(scene.pointClouds.front(), o.stageDepths, o.gpu, o.repeats);
+      timeTechnique(scene.pointClouds.front(), o.stageDepths, context.get(), o.repeats);
   if (!o.json.empty())
     writeFileAtomically(o.json, nlohmann::json({{"ply_load_s", loadSeconds},
                                                 {"points", scene.pointCount()},

@@ -68,11 +68,14 @@ SparseLayouts levelLayouts(const BufferSet& run, const GridSpec& grid) {
   const int depth = std::countr_zero(unsigned(grid.resolution));
   const std::vector<Group> faces = {{0, 4, "_+x"},  {4, 4, "_-x"},  {8, 4, "_+y"},
                                     {12, 4, "_-y"}, {16, 4, "_+z"}, {20, 4, "_-z"}};
-  const std::vector<Group> node = {
-      {shared::kNodeChild, 1, "_child"},          {shared::kNodeNeighbour, 1, "_neighbour_+x"},
-      {shared::kNodeNeighbour + 1, 1, "_neighbour_-x"}, {shared::kNodeNeighbour + 2, 1, "_neighbour_+y"},
-      {shared::kNodeNeighbour + 3, 1, "_neighbour_-y"}, {shared::kNodeNeighbour + 4, 1, "_neighbour_+z"},
-      {shared::kNodeNeighbour + 5, 1, "_neighbour_-z"}, {shared::kNodeFlags, 1, "_flags"}};
+  const std::vector<Group> node = {{shared::kNodeChild, 1, "_child"},
+                                   {shared::kNodeNeighbour, 1, "_neighbour_+x"},
+                                   {shared::kNodeNeighbour + 1, 1, "_neighbour_-x"},
+                                   {shared::kNodeNeighbour + 2, 1, "_neighbour_+y"},
+                                   {shared::kNodeNeighbour + 3, 1, "_neighbour_-y"},
+                                   {shared::kNodeNeighbour + 4, 1, "_neighbour_+z"},
+                                   {shared::kNodeNeighbour + 5, 1, "_neighbour_-z"},
+                                   {shared::kNodeFlags, 1, "_flags"}};
   const std::vector<Group> sums = {{shared::kSumOpacity, 1, "_opacity"},
                                    {shared::kSumAlbedo, 3, "_albedo"},
                                    {shared::kSumNormal, 3, "_normal"},
@@ -88,8 +91,9 @@ SparseLayouts levelLayouts(const BufferSet& run, const GridSpec& grid) {
     leafSums.metadata = {{"voxgi_svo_weight_scale", std::to_string(s->get<float>(0, 0))},
                          {"voxgi_svo_emission_scale", std::to_string(s->get<float>(0, 1))}};
   out[BufferId::svo_build_svo_leaf_sums] = leafSums;
-  for (const BufferId id : {BufferId::svo_propagate_svo_direct, BufferId::svo_propagate_svo_radiance,
-                            BufferId::svo_propagate_svo_gathered})
+  for (const BufferId id :
+       {BufferId::svo_propagate_svo_direct, BufferId::svo_propagate_svo_radiance,
+        BufferId::svo_propagate_svo_gathered})
     out[id] = leaves;
   out[BufferId::svo_mip_svo_node_faces] = childLayout(tiles->words, depth, faces);
   out[BufferId::svo_mip_svo_gathered_bricks] = brickLayout(leafTiles->words);

@@ -300,26 +300,21 @@ Words accumulateLeaves(const Octree& octree, std::span<const shared::SvoSample> 
               });
   std::vector<uint32_t> start(tiles + 1, 0);
   for (size_t t = 0; t < tiles; ++t) start[t + 1] = start[t] + counts[t].load();
-  std::vector<uint32_t> order(start[tiles]);
+  // The samples in bucket order, scattered there from their input order (a tile then reads its
+  // buckets from consecutive memory; a cloud's points come in any order). The order within a
+  // bucket follows the threads, which the integer sums cannot see.
   for (size_t t = 0; t < tiles; ++t) counts[t].store(start[t]);
+  std::vector<SvoSample, ZeroedAllocator<SvoSample>> sorted(start[tiles]);
+  std::vector<uint8_t, ZeroedAllocator<uint8_t>> sortedReach(start[tiles]);
   parallelFor(tbb::blocked_range<size_t>(0, samples.size(), 16384),
               [&](const tbb::blocked_range<size_t>& range) {
-                for (size_t i = range.begin(); i != range.end(); ++i)
-                  if (home[i] != kSvoNull) order[counts[home[i]].fetch_add(1)] = uint32_t(i);
-              });
-
-  // The samples in bucket order: each tile then reads its buckets from consecutive memory (a
-  // cloud's points come in any order; read through `order`, every one was a cache miss per tile).
-  std::vector<SvoSample> sorted(order.size());
-  std::vector<uint8_t> sortedReach(order.size());
-  parallelFor(tbb::blocked_range<size_t>(0, order.size(), 16384),
-              [&](const tbb::blocked_range<size_t>& range) {
-                for (size_t k = range.begin(); k != range.end(); ++k) {
-                  sorted[k] = samples[order[k]];
-                  sortedReach[k] = reach[order[k]];
+                for (size_t i = range.begin(); i != range.end(); ++i) {
+                  if (home[i] == kSvoNull) continue;
+                  const uint32_t k = counts[home[i]].fetch_add(1, std::memory_order_relaxed);
+                  sorted[k] = samples[i];
+                  sortedReach[k] = reach[i];
                 }
               });
-
   Words sums(tiles * 8 * kSumWords);
   std::atomic<bool> overflow{false};
   parallelFor(size_t(0), tiles, [&](size_t t) {
@@ -355,9 +350,10 @@ Words accumulateLeaves(const Octree& octree, std::span<const shared::SvoSample> 
         sums[(t * 8 + size_t(leaf)) * kSumWords + size_t(c)] = uint32_t(local[leaf][c]);
   });
   if (overflow.load())
-    throw InputError(source, "svo.depth",
-                     "a leaf's opacity passes 2^31 fixed-point units; raise svo.depth or thin "
-                     "the point cloud");
+    throw InputError(
+        source, "grid.resolution",
+        "a leaf's opacity passes 2^31 fixed-point units; raise grid.resolution or thin "
+        "the point cloud");
   return sums;
 }
 

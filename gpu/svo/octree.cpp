@@ -122,9 +122,10 @@ class Builder {
                                    std::max<size_t>(1, size_t(leafTiles) * 8 * shared::kSumWords));
     dispatch(kAccumulate, sampleCount_);
     if (counter(kOverflow) != 0)
-      throw InputError(source, "svo.depth",
-                       "a leaf's opacity passes 2^31 fixed-point units; raise svo.depth or thin "
-                       "the point cloud");
+      throw InputError(
+          source, "grid.resolution",
+          "a leaf's opacity passes 2^31 fixed-point units; raise grid.resolution or thin "
+          "the point cloud");
     gl_.check("build_svo");
     voxgi::svo::OctreeWords out{nodes_.read(size_t(nodeTiles) * 8 * kNodeWords),
                                 tiles_.read(size_t(nodeTiles) * kTileWords),

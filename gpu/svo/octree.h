@@ -13,7 +13,8 @@
 
 namespace voxgi::gpu::svo {
 
-// Throws InputError naming `source` and svo.depth when a leaf's opacity passes 2^31 - 1 units.
+// Throws InputError naming `source` and grid.resolution when a leaf's opacity passes 2^31 - 1
+// units.
 voxgi::svo::OctreeWords buildOctree(GlContext& context, std::span<const shared::SvoSample> samples,
                                     int depth, float scale, const std::string& source);
 

@@ -59,23 +59,21 @@ TEST(SvoOpenVdb, LeafColoursEqualOpenVdbPointRasterisation) {
   }
   // Voxel (i, j, k) centred at grid.min + (i + 1/2) leaf, as the leaves and voxgi's dumps.
   auto transform = openvdb::math::Transform::createLinearTransform(leaf);
-  transform->postTranslate(openvdb::Vec3d(scene.grid.min.x + 0.5 * leaf,
-                                          scene.grid.min.y + 0.5 * leaf,
-                                          scene.grid.min.z + 0.5 * leaf));
+  transform->postTranslate(openvdb::Vec3d(
+      scene.grid.min.x + 0.5 * leaf, scene.grid.min.y + 0.5 * leaf, scene.grid.min.z + 0.5 * leaf));
   const openvdb::points::PointAttributeVector<openvdb::Vec3R> wrapper(positions);
   const auto index =
       openvdb::tools::createPointIndexGrid<openvdb::tools::PointIndexGrid>(wrapper, *transform);
-  auto grid =
-      openvdb::points::createPointDataGrid<openvdb::points::NullCodec,
-                                           openvdb::points::PointDataGrid>(*index, wrapper,
-                                                                           *transform);
+  auto grid = openvdb::points::createPointDataGrid<openvdb::points::NullCodec,
+                                                   openvdb::points::PointDataGrid>(*index, wrapper,
+                                                                                   *transform);
   openvdb::points::appendAttribute<openvdb::Vec3f>(grid->tree(), "Cd");
   const openvdb::points::PointAttributeVector<openvdb::Vec3f> cd(colors);
-  openvdb::points::populateAttribute<openvdb::points::PointDataTree,
-                                     openvdb::tools::PointIndexTree,
+  openvdb::points::populateAttribute<openvdb::points::PointDataTree, openvdb::tools::PointIndexTree,
                                      openvdb::points::PointAttributeVector<openvdb::Vec3f>>(
       grid->tree(), index->tree(), "Cd", cd);
-  const auto raster = openvdb::points::rasterizeTrilinear<false, openvdb::Vec3f>(grid->tree(), "Cd");
+  const auto raster =
+      openvdb::points::rasterizeTrilinear<false, openvdb::Vec3f>(grid->tree(), "Cd");
 
   // A leaf sum is off by at most half a unit (1 / weightScale) per sample that touches it (its
   // centre within a leaf of the leaf's centre on every axis); the colour divides such sums by the
@@ -85,7 +83,8 @@ TEST(SvoOpenVdb, LeafColoursEqualOpenVdbPointRasterisation) {
     const glm::ivec3 base(glm::floor(glm::vec3(s.position) - 0.5f));
     for (int k = 0; k < 8; ++k) {
       const glm::ivec3 c = base + glm::ivec3(k & 1, (k >> 1) & 1, k >> 2);
-      if (glm::all(glm::greaterThanEqual(c, glm::ivec3(0))) && glm::all(glm::lessThan(c, glm::ivec3(n))))
+      if (glm::all(glm::greaterThanEqual(c, glm::ivec3(0))) &&
+          glm::all(glm::lessThan(c, glm::ivec3(n))))
         ++touching[size_t(c.x) + size_t(n) * (size_t(c.y) + size_t(n) * size_t(c.z))];
     }
   }
@@ -97,8 +96,8 @@ TEST(SvoOpenVdb, LeafColoursEqualOpenVdbPointRasterisation) {
     const int t = touching[size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z))];
     const double rounding = 2.0 * t * 0.5 / double(set.weightScale) / double(a.a);
     for (int c = 0; c < 3; ++c)
-      EXPECT_NEAR(a[c] / a.a, expected[c], rounding + 1e-5) << "leaf " << v.x << " " << v.y << " "
-                                                           << v.z;
+      EXPECT_NEAR(a[c] / a.a, expected[c], rounding + 1e-5)
+          << "leaf " << v.x << " " << v.y << " " << v.z;
     ++compared;
   });
   EXPECT_GT(compared, size_t(n * n * n / 2));

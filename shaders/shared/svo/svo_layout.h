@@ -2,10 +2,10 @@
 // diff (docs/svo.md has the figure). Included by C++ and GLSL.
 //
 // Levels: the root is implicit and not stored; its eight children, the root tile, are level 1,
-// and the leaves are level D = svo.depth, 2^D per axis over the scene's grid cube. Nodes come in
-// tiles of eight, the children of one node; a node's local id in its tile is x | y<<1 | z<<2 of
-// its coordinates' lowest bits (svo/morton.h). A tile at level l is keyed by its coordinate at
-// level l - 1 (its parent node's), as a Morton key.
+// and the leaves are level D = log2 grid.resolution, 2^D per axis over the scene's grid cube. Nodes
+// come in tiles of eight, the children of one node; a node's local id in its tile is x | y<<1 |
+// z<<2 of its coordinates' lowest bits (svo/morton.h). A tile at level l is keyed by its coordinate
+// at level l - 1 (its parent node's), as a Morton key.
 //
 // Two address spaces, as in the thesis: node tiles (levels 1 .. D-1; the root tile is tile 0)
 // hold kNodeWords words per node in `nodes`, node n = 8 tile + local id; leaf tiles (level D) are
