@@ -123,7 +123,7 @@ namespace {
 // The sparse voxel octree at 32^3 leaves, every stage, on both platforms: the Cornell box's meshes
 // sampled into points (its area light), the bunny (a point light; normal-weighted first step,
 // one bounce per frame) and the box as a glossy point cloud (discs in the gbuffer, the specular
-// cone through the tree).
+// cone through the tree, tricubic shading).
 struct SvoCase {
   const char* name;
   gpu::GlPlatform platform;
@@ -157,7 +157,7 @@ INSTANTIATE_TEST_SUITE_P(
                     SvoCase{"bunny",
                             gpu::GlPlatform::osmesa,
                             {"svo.first_step=ndf", "svo.clear_each_frame=on", "svo.frames=2"}},
-                    SvoCase{"cloud", gpu::GlPlatform::egl, {}}),
+                    SvoCase{"cloud", gpu::GlPlatform::egl, {"svo.shade_filter=tricubic"}}),
     [](const testing::TestParamInfo<SvoCase>& p) {
       return std::string(p.param.name) + "_" + gpu::glPlatformName(p.param.platform);
     });

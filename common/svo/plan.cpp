@@ -59,7 +59,8 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   p.effect("emission per pixel", Effect::emission, p.full || !emitters.empty(),
            emitters.empty() ? "no emissive material" : "emissive material " + emitters);
   p.stage(StageId::svo_shade_svo, true,
-          "shadow cones and the specular cone through the tree, diffuse light from the leaves");
+          "shadow cones and the specular cone through the tree, diffuse light from the leaves (" +
+              settingValue(settings, "svo.shade_filter") + ")");
   const std::string glossy = materialsWith(scene, [](const Material& m) { return m.glossy(); });
   p.effect("specular cone", Effect::specular, p.full || !glossy.empty(),
            !glossy.empty() ? "glossy material " + glossy

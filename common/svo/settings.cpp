@@ -24,6 +24,9 @@ const std::vector<Param>& params() {
                     "each by its normal distribution per face (Salm 2015, 4.4.2)"),
         number<svo>("svo.seed", &SvoSettings::seed, 0, 1 << 30,
                     "seed of the points sampled on meshes"),
+        choice<svo>("svo.shade_filter", &SvoSettings::shadeFilter, {"trilinear", "tricubic"},
+                    "how shading samples the leaves' gathered light: trilinearly, or with a cubic "
+                    "B-spline over 4^3 leaves (smoother, 8 trilinear samples)"),
     };
     // Voxel cone tracing's keys that the octree's stages read.
     static const char* const kShared[] = {"cones.", "shadow.", "specular.", "light.",

@@ -10,7 +10,8 @@ PixelShading shadePixels(const BufferSet& gbuffer, const Octree& octree, const L
                          const LeafRadiance& radiance, const NodeLevels& mips,
                          const Words& gatheredBricks, const std::vector<shared::LightData>& lights,
                          const std::vector<shared::ObjectData>& objects,
-                         const shared::ConeTraceParams& params, glm::vec3 background) {
+                         const shared::ConeTraceParams& params, glm::vec3 background,
+                         bool tricubic) {
   const Buffer& position = gbuffer.at(BufferId::common_gbuffer_pixel_position);
   const Buffer& normal = gbuffer.at(BufferId::common_gbuffer_pixel_normal);
   const Buffer& albedo = gbuffer.at(BufferId::common_gbuffer_pixel_albedo);
@@ -32,7 +33,8 @@ PixelShading shadePixels(const BufferSet& gbuffer, const Octree& octree, const L
     volumes.leafBricks = &gatheredBricks;
     const glm::vec3 p = position.vec3At(i);
     shared::PixelLight l = shared::tracePixel(volumes, p, normal.vec3At(i), objects[id], params);
-    l.indirectDiffuse = shared::svoIrradiance(volumes, p, octree.depth);
+    l.indirectDiffuse = tricubic ? shared::svoIrradianceTricubic(volumes, p, octree.depth)
+                                 : shared::svoIrradiance(volumes, p, octree.depth);
     out.light[i] = l;
     const glm::vec4 s(specular.vec3At(i), 0.0f);
     out.color[i] = shared::composePixel(

@@ -20,11 +20,13 @@ struct PixelShading {
 
 // Shades the gbuffer's pixels (common/shared_stages.inc's gbuffer buffers in `gbuffer`) from the
 // tree's last frame: its leaf radiance (pyramid level 0), mipmap and gathered-light bricks, with
-// `params` from treeConeTrace (common/svo/stage_inputs.h: no diffuse cones).
+// `params` from treeConeTrace (common/svo/stage_inputs.h: no diffuse cones); the gathered light
+// sampled with a cubic B-spline when `tricubic` (shade_kernel.h).
 PixelShading shadePixels(const BufferSet& gbuffer, const Octree& octree, const Leaves& leaves,
                          const LeafRadiance& radiance, const NodeLevels& mips,
                          const Words& gatheredBricks, const std::vector<shared::LightData>& lights,
                          const std::vector<shared::ObjectData>& objects,
-                         const shared::ConeTraceParams& params, glm::vec3 background);
+                         const shared::ConeTraceParams& params, glm::vec3 background,
+                         bool tricubic);
 
 }  // namespace voxgi::cpu::svo

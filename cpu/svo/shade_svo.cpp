@@ -17,7 +17,8 @@ void svo::shade_svo(const StageContext& ctx, BufferSet& buffers) {
   const ConeTraceSetup trace = treeConeTrace(ctx, depth);
   const PixelShading shading = shadePixels(
       buffers, o, leaves, radiance, mips, buffers.at(BufferId::svo_mip_svo_gathered_bricks).words,
-      trace.lights, trace.objects, trace.params, ctx.scene.background);
+      trace.lights, trace.objects, trace.params, ctx.scene.background,
+      ctx.settings.svo.shadeFilter == SvoShadeFilter::tricubic);
   const glm::ivec3 extent = buffers.at(BufferId::common_gbuffer_pixel_position).extent;
   using Field = glm::vec3 shared::PixelLight::*;
   const std::pair<BufferId, Field> terms[] = {

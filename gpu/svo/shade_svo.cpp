@@ -48,6 +48,7 @@ void svo::shade_svo(GlContext& context, const StageContext& ctx, BufferSet& buff
   program.set("uWidth", extent.x);
   program.set("uHeight", extent.y);
   program.set("uBackground", ctx.scene.background);
+  program.set("uTricubic", ctx.settings.svo.shadeFilter == SvoShadeFilter::tricubic ? 1 : 0);
   program.use();
   const GLuint blocks[] = {nodes.get(),  source.get(),  faces.get(),      bricks.get(),
                            lights.get(), objects.get(), pixelBlock.get(), terms.get()};

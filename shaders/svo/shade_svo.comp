@@ -35,6 +35,7 @@ layout(std430, binding = 7) writeonly buffer Terms { vec4 terms[]; };
 layout(location = 1) uniform int uWidth;
 layout(location = 2) uniform int uHeight;
 uniform vec3 uBackground;
+uniform bool uTricubic;  // svo.shade_filter
 
 LightData lightAt(int i) { return lights[i]; }
 
@@ -48,7 +49,8 @@ void main() {
   vec3 color = uBackground;
   if (id != 0u) {
     l = tracePixel(position.xyz, pixels[5u * e + 1u].xyz, objects[id], params);
-    l.indirectDiffuse = svoIrradiance(position.xyz, uDepth);
+    l.indirectDiffuse = uTricubic ? svoIrradianceTricubic(position.xyz, uDepth)
+                                  : svoIrradiance(position.xyz, uDepth);
     color = composePixel(id, pixels[5u * e + 2u].xyz, pixels[5u * e + 3u].xyz,
                          pixels[5u * e + 4u].xyz, l.directDiffuse, l.directSpecular,
                          l.indirectDiffuse, l.indirectSpecular, 0.0f, uBackground);
