@@ -2,6 +2,7 @@
 // classifier calls it a tie, and the voxelize classifier recognises near-boundary voxels.
 #include <gtest/gtest.h>
 
+#include "common/camera_geometry.h"
 #include "common/voxel_triangles.h"
 #include "tests/test_scenes.h"
 #include "validation/diff.h"
@@ -87,6 +88,61 @@ TEST(Diff, VoxelizeTiesAreTheVoxelsOnADecisionBoundary) {
   EXPECT_TRUE(classify(scene.grid.index({8, 8, 8})));
   EXPECT_FALSE(classify(scene.grid.index({8, 8, 5})));    // far from the wall
   EXPECT_FALSE(classify(scene.grid.index({15, 15, 8})));  // beside it, clearly separated
+}
+
+// The gbuffer's disc rule (validation/edge_ties.cpp): a pixel whose backends saw different
+// surfaces, one a point cloud's disc, is a tie only at a disc's rim or where both surfaces lie
+// at depths the GPU's depth buffer cannot separate.
+TEST(Diff, DiscTiesAreRimsAndDepthsTooCloseToTell) {
+  Scene scene = makeScene(quad(2, 0.05, {0.0, 0.0}, {0.1, 0.1}), unitGrid(16));  // one far wall
+  scene.camera.position = {0.5, 0.5, 2.0};
+  scene.camera.lookAt = {0.5, 0.5, 0.5};
+  scene.camera.width = scene.camera.height = 32;
+  PointCloud cloud;
+  cloud.name = "two discs";
+  // Disc 0 facing the camera; disc 1 in its plane, overlapping it; disc 2 a voxel behind.
+  for (const glm::dvec3 c : {glm::dvec3(0.5, 0.5, 0.5), glm::dvec3(0.53, 0.5, 0.5),
+                             glm::dvec3(0.5, 0.47, 0.5 - 1.0 / 16.0)}) {
+    cloud.positions.push_back(c);
+    cloud.normals.emplace_back(0.0f, 0.0f, 1.0f);
+    cloud.radii.push_back(0.1f);
+  }
+  scene.pointClouds.push_back(cloud);
+  const Technique& svo = findTechnique("svo");
+  const Settings settings = techniqueDefaults(svo);
+  const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
+  const StageContext ctx{svo, scene, settings, tris};
+  BufferSet cpu = runCpuUntil(svo, scene, settings, "gbuffer");
+  BufferSet gpu = cpu;
+  const uint32_t discs = 2;  // the wall's two triangles come first
+  const Buffer& ids = cpu.at(BufferId::common_gbuffer_primitive_id);
+  const size_t centre = 16 * 32 + 16;  // the pixel ray through the middle meets disc 0 or 1
+  ASSERT_GT(ids.words[centre], discs);
+  Buffer& other = const_cast<Buffer&>(gpu.at(BufferId::common_gbuffer_primitive_id));
+  const validation::TieClassifier ties = validation::gbufferTies(ctx, cpu, gpu);
+  // The other coplanar disc: the same depth, a tie.
+  other.words[centre] = ids.words[centre] == discs + 1 ? discs + 2 : discs + 1;
+  EXPECT_TRUE(ties(centre));
+  // The disc a voxel behind: the depth buffer tells them apart, not a tie.
+  other.words[centre] = discs + 3;
+  EXPECT_FALSE(ties(centre));
+  // The background where the CPU met a disc's inside: not a tie.
+  other.words[centre] = 0;
+  EXPECT_FALSE(ties(centre));
+  // The background at a pixel whose ray meets disc 0 exactly at its rim: a tie.
+  CameraGeometry g = prepareCameraGeometry(scene);
+  const size_t rim = 16 * 32 + 27;
+  const glm::vec3 d = g.camera.pixelDirection(27, 16);
+  SurfaceDisc& disc = g.discs[0];
+  const float t = glm::dot(glm::vec3(disc.center) - g.camera.origin, glm::vec3(disc.normal)) /
+                  glm::dot(d, glm::vec3(disc.normal));
+  scene.pointClouds[0].radii[0] =
+      float(glm::length(g.camera.origin + d * t - glm::vec3(disc.center)) * scene.grid.voxelSize());
+  const StageContext rimCtx{svo, scene, settings, tris};
+  Buffer& cpuIds = const_cast<Buffer&>(cpu.at(BufferId::common_gbuffer_primitive_id));
+  cpuIds.words[rim] = discs + 1;
+  other.words[rim] = 0;
+  EXPECT_TRUE(validation::gbufferTies(rimCtx, cpu, gpu)(rim));
 }
 
 }  // namespace

@@ -59,7 +59,8 @@ TEST(SvoShade, ConstantGatheredLightShadesConstant) {
   const glm::vec3 c(0.3f, 0.5f, 0.7f);
   const FullTree t = fullTree([&](glm::vec3) { return c; }, 0.6f);
   const cpu::svo::SvoVolumes v = volumesOf(t);
-  for (const glm::vec3 p : {glm::vec3(3.2f, 7.9f, 5.5f), glm::vec3(8.0f), glm::vec3(2.1f, 12.7f, 9.3f)})
+  for (const glm::vec3 p :
+       {glm::vec3(3.2f, 7.9f, 5.5f), glm::vec3(8.0f), glm::vec3(2.1f, 12.7f, 9.3f)})
     for (const glm::vec3 e :
          {shared::svoIrradiance(v, p, kDepth), shared::svoIrradianceTricubic(v, p, kDepth)})
       for (int k = 0; k < 3; ++k) EXPECT_NEAR(e[k], c[k], 1e-6f) << p.x << " " << p.y << " " << p.z;
@@ -83,10 +84,11 @@ TEST(SvoShade, TricubicReproducesALinearField) {
   };
   const FullTree t = fullTree(f, 1.0f);
   const cpu::svo::SvoVolumes v = volumesOf(t);
-  for (const glm::vec3 p : {glm::vec3(4.3f, 7.7f, 9.1f), glm::vec3(8.0f, 8.5f, 6.25f),
-                            glm::vec3(12.9f, 3.1f, 11.4f)}) {
+  for (const glm::vec3 p :
+       {glm::vec3(4.3f, 7.7f, 9.1f), glm::vec3(8.0f, 8.5f, 6.25f), glm::vec3(12.9f, 3.1f, 11.4f)}) {
     const glm::vec3 e = shared::svoIrradianceTricubic(v, p, kDepth);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(e[k], f(p)[k], 1e-5f) << p.x << " " << p.y << " " << p.z;
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(e[k], f(p)[k], 1e-5f) << p.x << " " << p.y << " " << p.z;
   }
   // On a curved field the cubic sample smooths: it is not the trilinear one.
   const auto curved = [](glm::vec3 q) { return glm::vec3(0.002f * q.x * q.x); };
