@@ -111,6 +111,10 @@ NodeLevels nodeLevels(const Buffer& faces, const Words& tiles, int depth) {
   return out;
 }
 
+FirstStep firstStep(const Settings& settings) {
+  return settings.svo.firstStep == SvoFirstStep::ndf ? FirstStep::ndf : FirstStep::plain;
+}
+
 ConeTraceSetup treeConeTrace(const StageContext& ctx, int depth) {
   ConeTraceSetup s = prepareConeTrace(ctx);
   treeParams(s.params, depth);

@@ -34,6 +34,9 @@ std::vector<glm::vec4> vec4Values(const Buffer& buffer);
 Buffer nodeFacesBuffer(const NodeLevels& levels);
 NodeLevels nodeLevels(const Buffer& faces, const Words& tiles, int depth);
 
+// svo.first_step as the light functions take it.
+FirstStep firstStep(const Settings& settings);
+
 // The cone parameters of voxel cone tracing (common/vct/kernel_params.h) for a tree of `depth`:
 // the pyramid's top is the root tile's level (depth - 1), and it is six-faced. Shading traces no
 // diffuse cones: the leaves hold the diffuse light.

@@ -12,8 +12,7 @@ void svo::mip_svo(const StageContext& ctx, BufferSet& buffers) {
   const int depth = treeDepth(ctx.scene);
   const Octree o = octreeFromWords(treeWords(buffers, false), depth);
   const Leaves leaves = treeLeaves(buffers);
-  const FirstStep first =
-      ctx.settings.svo.firstStep == SvoFirstStep::ndf ? FirstStep::ndf : FirstStep::plain;
+  const FirstStep first = firstStep(ctx.settings);
   const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_svo_radiance));
   buffers.put(nodeFacesBuffer(mipTree(o, leaves, radiance, first)));
   const Buffer& gathered = buffers.at(BufferId::svo_propagate_svo_gathered);

@@ -20,9 +20,9 @@ void svo::propagate_svo(const StageContext& ctx, BufferSet& buffers) {
   const ConeTraceSetup bounce = treeBounce(ctx, depth);
   FrameOutputs last;
   last.gathered.assign(direct.size(), glm::vec4(0.0f));  // stays so without a frame
-  const LeafRadiance radiance = propagateFrames(
-      o, leaves, direct, bounce.cones, bounce.params, s.frames, s.clearEachFrame == SvoToggle::on,
-      s.firstStep == SvoFirstStep::ndf ? FirstStep::ndf : FirstStep::plain, &last);
+  const LeafRadiance radiance =
+      propagateFrames(o, leaves, direct, bounce.cones, bounce.params, s.frames,
+                      s.clearEachFrame == SvoToggle::on, firstStep(ctx.settings), &last);
   buffers.put(vec4Buffer(BufferId::svo_propagate_svo_direct, direct));
   buffers.put(vec4Buffer(BufferId::svo_propagate_svo_radiance, radiance));
   buffers.put(vec4Buffer(BufferId::svo_propagate_svo_gathered, last.gathered));

@@ -17,12 +17,10 @@ void svo::mip_svo(GlContext& context, const StageContext& ctx, BufferSet& buffer
   const OctreeWords words = treeWords(buffers, false);
   const Tree tree{words, depth};
   const Leaves leaves = treeLeaves(buffers);
-  const FirstStep first =
-      ctx.settings.svo.firstStep == SvoFirstStep::ndf ? FirstStep::ndf : FirstStep::plain;
+  const FirstStep first = firstStep(ctx.settings);
   const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_svo_radiance));
   buffers.put(nodeFacesBuffer(mipTree(context, tree, leaves, radiance, first)));
 
-  context.makeCurrent();
   const Buffer& gathered = buffers.at(BufferId::svo_propagate_svo_gathered);
   const size_t texels = words.leafTiles.size() / shared::kTileWords * shared::kBrickTexels;
   GlBuffer nodes(gl, createBuffer(gl, words.nodes.size() * 4, words.nodes.data()));

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/memory.h"
 #include "gpu/program.h"
 #include "shaders/shared/svo/svo_layout.h"
 
@@ -91,6 +92,7 @@ class Builder {
   }
 
   voxgi::svo::OctreeWords run(const std::string& source) {
+    source_ = &source;
     dispatch(kMark, sampleCount_);
     dispatch(kCountLeafTiles, markWords_);
     const uint32_t listed = counter(kListed);
@@ -170,6 +172,13 @@ class Builder {
     if (needed == 0) return;
     const bool leaves = level + 1 == depth_;
     const size_t after = size_t(counter(leaves ? kLeafTiles : kNodeTiles)) + needed;
+    // The tiles' words (and a leaf tile's sums) on the GPU, then twice on the host: read back
+    // and put in the canonical form.
+    const size_t words = leaves ? kTileWords + 8 * shared::kSumWords : kTileWords + 8 * kNodeWords;
+    requireMemory(
+        2 * 4 * after * words,
+        "the octree's " + std::to_string(after) + (leaves ? " leaf tiles" : " node tiles"),
+        *source_, "grid.resolution");
     if (leaves) {
       leafTiles_.grow(after * kTileWords);
     } else {
@@ -196,6 +205,7 @@ class Builder {
   std::unique_ptr<Pool> marks_, leafList_, sums_;
   size_t markWords_ = 0;
   size_t sampleCount_;
+  const std::string* source_ = nullptr;  // run's, for errors
 };
 
 }  // namespace

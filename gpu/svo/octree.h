@@ -14,7 +14,7 @@
 namespace voxgi::gpu::svo {
 
 // Throws InputError naming `source` and grid.resolution when a leaf's opacity passes 2^31 - 1
-// units.
+// units or the counted tiles would not fit in memory.
 voxgi::svo::OctreeWords buildOctree(GlContext& context, std::span<const shared::SvoSample> samples,
                                     int depth, float scale, const std::string& source);
 

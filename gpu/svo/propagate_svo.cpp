@@ -23,7 +23,7 @@ void svo::propagate_svo(GlContext& context, const StageContext& ctx, BufferSet& 
   const LeafRadiance direct =
       injectLeaves(context, tree, leaves, lights, lightVoxelsParams(ctx, int(lights.size()), true));
   const ConeTraceSetup bounce = treeBounce(ctx, depth);
-  const FirstStep first = s.firstStep == SvoFirstStep::ndf ? FirstStep::ndf : FirstStep::plain;
+  const FirstStep first = firstStep(ctx.settings);
   FrameOutputs last;
   last.gathered.assign(direct.size(), glm::vec4(0.0f));  // stays so without a frame
   LeafRadiance radiance = direct;
