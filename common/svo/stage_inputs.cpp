@@ -99,14 +99,12 @@ NodeLevels nodeLevels(const Buffer& faces, const Words& tiles, int depth) {
   NodeLevels out;
   out.levels.resize(size_t(depth));
   const size_t tileCount = tiles.size() / shared::kTileWords;
-  size_t value = 0;
+  const uint32_t* word = faces.words.data();  // 8 nodes x 6 faces x 4 floats a tile, in order
   for (size_t t = 0; t < tileCount; ++t) {
     auto& level = out.levels[tiles[t * shared::kTileWords + shared::kTileLevel]];
-    for (int i = 0; i < 8 * kFaces; ++i, ++value)
-      level.push_back({faces.get<float>(value / kFaces, int(value % kFaces) * 4),
-                       faces.get<float>(value / kFaces, int(value % kFaces) * 4 + 1),
-                       faces.get<float>(value / kFaces, int(value % kFaces) * 4 + 2),
-                       faces.get<float>(value / kFaces, int(value % kFaces) * 4 + 3)});
+    for (int face = 0; face < 8 * kFaces; ++face, word += 4)
+      level.emplace_back(std::bit_cast<float>(word[0]), std::bit_cast<float>(word[1]),
+                         std::bit_cast<float>(word[2]), std::bit_cast<float>(word[3]));
   }
   return out;
 }

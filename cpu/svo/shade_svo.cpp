@@ -1,8 +1,15 @@
-// CPU shade_svo stage: the gbuffer's pixels lit from the tree (cpu/svo/shade.h).
+// CPU shade_svo stage: per pixel, trace_cones' direct light with a shadow cone per light and the
+// specular cone, read through the tree (no diffuse cones: the leaves hold the diffuse light), plus
+// the leaves' gathered light through their bricks (shaders/shared/svo/shade_kernel.h), composed as
+// the dense technique composes (compose_kernel.h). The twin of shaders/svo/shade_svo.comp.
+#include "common/parallel.h"
 #include "common/svo/stage_inputs.h"
 #include "common/svo/tree_depth.h"
 #include "cpu/stages.h"
-#include "cpu/svo/shade.h"
+#include "cpu/svo/leaf_light.h"
+#include "shaders/shared/compose_kernel.h"
+#include "shaders/shared/svo/shade_kernel.h"
+#include "shaders/shared/vct/trace_cones_kernel.h"
 
 namespace voxgi::cpu {
 
@@ -14,26 +21,49 @@ void svo::shade_svo(const StageContext& ctx, BufferSet& buffers) {
   const Leaves leaves = treeLeaves(buffers);
   const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_svo_radiance));
   const NodeLevels mips = nodeLevels(buffers.at(BufferId::svo_mip_svo_node_faces), o.tiles, depth);
+  const Words& bricks = buffers.at(BufferId::svo_mip_svo_gathered_bricks).words;
   const ConeTraceSetup trace = treeConeTrace(ctx, depth);
-  const PixelShading shading = shadePixels(
-      buffers, o, leaves, radiance, mips, buffers.at(BufferId::svo_mip_svo_gathered_bricks).words,
-      trace.lights, trace.objects, trace.params, ctx.scene.background,
-      ctx.settings.svo.shadeFilter == SvoShadeFilter::tricubic);
-  const glm::ivec3 extent = buffers.at(BufferId::common_gbuffer_pixel_position).extent;
+  const bool tricubic = ctx.settings.svo.shadeFilter == SvoShadeFilter::tricubic;
+  const glm::vec3 background = ctx.scene.background;
+
+  const Buffer& position = buffers.at(BufferId::common_gbuffer_pixel_position);
+  const Buffer& normal = buffers.at(BufferId::common_gbuffer_pixel_normal);
+  const Buffer& albedo = buffers.at(BufferId::common_gbuffer_pixel_albedo);
+  const Buffer& specular = buffers.at(BufferId::common_gbuffer_pixel_specular);
+  const Buffer* emission = buffers.find(BufferId::common_gbuffer_pixel_emission);
+  const Buffer& object = buffers.at(BufferId::common_gbuffer_object_id);
+  const glm::ivec3 extent = position.extent;
   using Field = glm::vec3 shared::PixelLight::*;
   const std::pair<BufferId, Field> terms[] = {
       {BufferId::svo_shade_svo_direct_diffuse, &shared::PixelLight::directDiffuse},
       {BufferId::svo_shade_svo_direct_specular, &shared::PixelLight::directSpecular},
       {BufferId::svo_shade_svo_indirect_diffuse, &shared::PixelLight::indirectDiffuse},
       {BufferId::svo_shade_svo_indirect_specular, &shared::PixelLight::indirectSpecular}};
-  for (const auto& [id, field] : terms) {
-    if (!bufferNeeded(bufferSpec(id), ctx.plan)) continue;
-    Buffer out(id, extent);
-    for (size_t e = 0; e < shading.light.size(); ++e) out.setVec3(e, shading.light[e].*field);
-    buffers.put(std::move(out));
-  }
+  std::vector<std::pair<Buffer, Field>> out;  // the planned terms
+  for (const auto& [id, field] : terms)
+    if (bufferNeeded(bufferSpec(id), ctx.plan)) out.emplace_back(Buffer(id, extent), field);
   Buffer color(BufferId::svo_shade_svo_color, extent);
-  for (size_t e = 0; e < shading.color.size(); ++e) color.setVec3(e, shading.color[e]);
+
+  parallelFor(size_t(0), position.elementCount(), [&](size_t i) {
+    const uint32_t id = object.get<uint32_t>(i, 0);
+    if (id == 0u) {
+      color.setVec3(i, background);
+      return;
+    }
+    SvoVolumes volumes{o, leaves, &radiance, &mips, nullptr, &trace.lights, nullptr};
+    volumes.leafBricks = &bricks;
+    const glm::vec3 p = position.vec3At(i);
+    shared::PixelLight l =
+        shared::tracePixel(volumes, p, normal.vec3At(i), trace.objects[id], trace.params);
+    l.indirectDiffuse = tricubic ? shared::svoIrradianceTricubic(volumes, p, depth)
+                                 : shared::svoIrradiance(volumes, p, depth);
+    for (auto& [buffer, field] : out) buffer.setVec3(i, l.*field);
+    color.setVec3(i, shared::composePixel(id, albedo.vec3At(i), specular.vec3At(i),
+                                          emission ? emission->vec3At(i) : glm::vec3(0.0f),
+                                          l.directDiffuse, l.directSpecular, l.indirectDiffuse,
+                                          l.indirectSpecular, 0.0f, background));
+  });
+  for (auto& [buffer, field] : out) buffers.put(std::move(buffer));
   buffers.put(std::move(color));
 }
 

@@ -2,7 +2,7 @@
 // shade_svo: per pixel, the shared cone tracer's direct light (shadow cones) and specular cone
 // through the octree (shaders/shared/vct/trace_cones_kernel.h, no diffuse cones), the leaves'
 // gathered light through their bricks (shaders/shared/svo/shade_kernel.h), composed as the dense
-// technique composes (shaders/shared/compose_kernel.h). The twin of cpu/svo/shade.cpp.
+// technique composes (shaders/shared/compose_kernel.h). The twin of cpu/svo/shade_svo.cpp.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/lighting.h"
 #include "shared/vct/cone_types.h"
