@@ -142,9 +142,12 @@ int runBenchSvo(const BenchSvoOptions& o) {
       std::vector<double> structure, sums;
       cpu::svo::Octree octree;
       for (int r = 0; r < o.repeats; ++r) {
-        structure.push_back(seconds([&] { octree = cpu::svo::buildOctree(set.samples, depth); }));
-        sums.push_back(seconds(
-            [&] { cpu::svo::accumulateLeaves(octree, set.samples, set.weightScale, cloudFile); }));
+        cpu::svo::SampleHomes homes;
+        structure.push_back(seconds(
+            [&] { octree = cpu::svo::buildOctree(set.samples, depth, cloudFile, &homes); }));
+        sums.push_back(seconds([&] {
+          cpu::svo::accumulateLeaves(octree, set.samples, set.weightScale, cloudFile, &homes);
+        }));
       }
       const double build = median(structure) + median(sums);
       const double peer = openVdbPointsSeconds(scene.pointClouds.front(), leaf, o.repeats);

@@ -13,8 +13,9 @@ void svo::build_svo(const StageContext& ctx, BufferSet& buffers) {
   const SvoSettings& s = ctx.settings.svo;
   const voxgi::svo::SampleSet set =
       voxgi::svo::prepareSamples(ctx.scene, depth, s.meshDensity, uint64_t(s.seed));
-  Octree o = buildOctree(set.samples, depth, ctx.scene.file);
-  Words sums = accumulateLeaves(o, set.samples, set.weightScale, ctx.scene.file);
+  SampleHomes homes;
+  Octree o = buildOctree(set.samples, depth, ctx.scene.file, &homes);
+  Words sums = accumulateLeaves(o, set.samples, set.weightScale, ctx.scene.file, &homes);
   voxgi::svo::putTree(
       buffers, {std::move(o.nodes), std::move(o.tiles), std::move(o.leafTiles), std::move(sums)},
       set.weightScale, set.emissionScale);

@@ -52,12 +52,21 @@ struct Octree {
   uint32_t findTile(int level, uint32_t key) const;
 };
 
+// Where each sample lands, found in the structure's pass over the samples so that the leaf sums
+// need not look again: per sample, the key of its home leaf tile, the tile of its first touched
+// leaf on each axis (its other leaves lie in the next tile along an axis); kSvoNull when it
+// touches no leaf.
+struct SampleHomes {
+  std::vector<uint32_t> tileKey;
+};
+
 // The tree of depth `depth` over the leaves the samples' RoIs touch, with every ancestor, the
 // border tiles the brick boundaries need (docs/svo.md) and the neighbour pointers. Samples outside
 // the leaf domain [0, 2^depth)^3 add nothing. Throws InputError naming `source` and
-// grid.resolution when the counted tiles would not fit in memory.
+// grid.resolution when the counted tiles would not fit in memory. With `homes`, also where each
+// sample landed, for accumulateLeaves.
 Octree buildOctree(std::span<const shared::SvoSample> samples, int depth,
-                   const std::string& source = "samples");
+                   const std::string& source = "samples", SampleHomes* homes = nullptr);
 
 // The tree of `depth` whose words (canonical order, common/svo/canonical.h) are `words` (its sums
 // are not used): build_svo's buffers as the later stages read them.
@@ -65,9 +74,10 @@ Octree octreeFromWords(voxgi::svo::OctreeWords words, int depth);
 
 // The fixed-point sums the samples add to the leaves (kSumWords per leaf voxel, 8 per leaf tile
 // in local-id order), in units of 1/scale. Throws InputError naming `source` when a leaf's
-// opacity sum would pass 2^31 - 1 units.
+// opacity sum would pass 2^31 - 1 units. `homes`: buildOctree's for these samples, or null to
+// find them again.
 Words accumulateLeaves(const Octree& octree, std::span<const shared::SvoSample> samples,
-                       float scale, const std::string& source);
+                       float scale, const std::string& source, const SampleHomes* homes = nullptr);
 
 // Bricks of the tiles of `level` (leaf tiles for level == depth): from `interior`, `components`
 // words per voxel, 8 voxels a tile in local-id order, to 27 texels a tile with the positive
