@@ -10,8 +10,14 @@
 
 VOXGI_NAMESPACE_BEGIN
 
-// One scene sample prepared for the build (common/svo/samples.cpp), 64 bytes, std430.
+// One scene sample prepared for the build (common/svo/samples.cpp), 64 bytes, std430; in C++ on a
+// cache line of its own, as the CPU build reads samples in an order of their own (a sample across
+// two lines cost two misses).
+#ifdef __cplusplus
+struct alignas(64) SvoSample {
+#else
 struct SvoSample {
+#endif
   vec4 position;  // xyz: leaf voxel units (leaf (i,j,k) covers [i,i+1) x ...); w: RoI edge r in (0,
                   // 1]
   vec4 albedo;    // rgb: albedo in [0, 1]; w: opacity density (1 / r: a surface's samples sum to 1)
