@@ -34,7 +34,8 @@ shared::ConeTraceParams coneTraceParams(const StageContext& ctx, int lightCount,
                     float(ctx.scene.grid.voxelSize())),
           glm::vec4(s.specularFalloff, 0.008f * std::numbers::pi_v<float>, 0.0f, 0.0f),
           glm::vec4(ctx.scene.background, 0.0f),
-          glm::vec4(cameraPosition, 0.0f)};
+          glm::vec4(cameraPosition, 0.0f),
+          glm::vec4(s.coneClearance, 0.0f, 0.0f, 0.0f)};
 }
 
 // docs/stages/vct/trace_cones.md: the specular cone holds half the Phong lobe's energy.

@@ -24,6 +24,9 @@ const std::vector<Param>& params() {
                   "step along a cone as a fraction of its diameter (beta)"),
       number<vct>("cones.offset", &VctSettings::coneOffset, 0.0f, 8.0f,
                   "voxels along the normal before a cone starts (self-intersection)"),
+      number<vct>("cones.clearance", &VctSettings::coneClearance, 0.0f, 4.0f,
+                  "largest voxel a cone samples per voxel of its height above its own surface, "
+                  "so that its coarse samples leave that surface out (0: as wide as the cone)"),
       number<vct>("shadow.aperture", &VctSettings::shadowAperture, 0.1f, 120.0f,
                   "aperture of the shadow cone toward each light, degrees"),
       choice<vct>("shadow.falloff", &VctSettings::shadowFalloff, {"plain", "kahl2019"},

@@ -26,6 +26,7 @@ struct VctSettings {
   DiffuseCones diffuseCones = DiffuseCones::weighted;
   float coneStep = 0.5f;         // beta: step = beta * cone diameter
   float coneOffset = 1.0f;       // voxels along the normal before a cone starts
+  float coneClearance = 0.0f;    // sampled voxel size per voxel of height above the surface; 0: off
   float shadowAperture = 10.0f;  // degrees
   ShadowFalloff shadowFalloff = ShadowFalloff::plain;
   float shadowStrength = 1.0f;  // Kahl's shadow_str

@@ -82,13 +82,17 @@ VOXGI_FN float smoothstep01(float x) {
   return r;
 }
 
-// Marches one cone from `origin` along unit `dir`. Samples lie at t = 1/2, then t += max(beta d,
-// min step) with d = max(2 t tan(aperture/2), 1) voxels; each sample's opacity a is corrected to
-// the step, 1 - (1 - a)^beta. Stops when t passes `maxDistance`, the opacity reaches 0.999, or
+// Marches one cone from `origin`, params.march.y voxels above the surface it leaves, along unit
+// `dir`, which rises from that surface at `rise` (dir . n) voxels per voxel. Samples lie at
+// t = 1/2, then t += max(beta d, min step) with d = max(2 t tan(aperture/2), 1) voxels; with
+// cones.clearance c > 0 (params.surface.x), d is at most c times the height above the surface,
+// march.y + t rise, so that a wide cone's coarse samples do not hold the voxels of the surface it
+// leaves (docs/stages/vct/trace_cones.md, "Self-occlusion"). Each sample's opacity a is corrected
+// to the step, 1 - (1 - a)^beta. Stops when t passes `maxDistance`, the opacity reaches 0.999, or
 // after params.limits.y steps (enough to leave the grid); a cone that leaves the grid adds the
 // background times its remaining transparency.
-VOLUME_FN ConeHit marchCone(VOLUMES_IN vec3 origin, vec3 dir, float tanHalf, float maxDistance,
-                            int kind, ConeTraceParams params) {
+VOLUME_FN ConeHit marchCone(VOLUMES_IN vec3 origin, vec3 dir, float rise, float tanHalf,
+                            float maxDistance, int kind, ConeTraceParams params) {
   ConeHit hit;
   hit.radiance = vec3(0.0f);
   hit.occlusion = 0.0f;
@@ -105,7 +109,12 @@ VOLUME_FN ConeHit marchCone(VOLUMES_IN vec3 origin, vec3 dir, float tanHalf, flo
       exited = true;
       break;
     }
-    precise float diameter = max(2.0f * t * tanHalf, 1.0f);
+    precise float width = 2.0f * t * tanHalf;
+    if (params.surface.x > 0.0f) {
+      precise float height = params.march.y + t * rise;
+      width = min(width, height * params.surface.x);
+    }
+    precise float diameter = max(width, 1.0f);
     vec4 s = sampleCone(VOLUMES q, diameter, dir, params);
     float a = min(s.a, 1.0f);
     if (a > 0.0f) {
@@ -167,7 +176,9 @@ VOLUME_FN vec3 gatherDiffuse(VOLUMES_IN vec3 origin, vec3 n, int kind, ConeTrace
   for (int k = 0; k < params.grid.w; ++k) {
     ConeData c = FETCH(coneAt)(k);
     precise vec3 d = (t * c.direction.x + b * c.direction.y) + n * c.direction.z;
-    ConeHit h = marchCone(VOLUMES origin, d, c.direction.w, params.march.w, kind, params);
+    // The cone rises from the surface at its direction's component along n.
+    ConeHit h =
+        marchCone(VOLUMES origin, d, c.direction.z, c.direction.w, params.march.w, kind, params);
     sum = sum + h.radiance * c.weight.x;
     ambient = ambient + h.ambient * c.weight.x;
     weights = weights + c.weight.x;

@@ -20,6 +20,8 @@ struct ConeTraceParams {
   vec4 specular;  // x: Kahl falloff exponent q, y: Kahl angular grace per unit shininess
   vec4 background;  // rgb: radiance where a cone leaves the grid
   vec4 camera;      // xyz: camera position, voxel-local
+  vec4 surface;     // x: cones.clearance, the largest sampled voxel per voxel of height above
+                    // the cone's own surface (0: no bound)
 };
 
 // One diffuse cone (std430): direction in the tangent frame (z along the normal).

@@ -38,7 +38,7 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
     if (cosine <= 0.0f) continue;
     float visibility = 1.0f;
     if (l.info.y == 1u)
-      visibility = 1.0f - marchCone(VOLUMES origin, toLight, params.shadow.x,
+      visibility = 1.0f - marchCone(VOLUMES origin, toLight, cosine, params.shadow.x,
                                     min(distance, maxDistance), shadowKind, params)
                               .occlusion;
     minVisibility = min(minVisibility, visibility);
@@ -59,8 +59,8 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
   // [Kahl 2019, eq. 5.9] darkens first-hit diffuse light by the smallest shadow-cone visibility.
   if (params.modes.y == 1) r.indirectDiffuse = r.indirectDiffuse * minVisibility;
   if (specular) {
-    ConeHit h =
-        marchCone(VOLUMES origin, mirror, object.specular.x, maxDistance, kMarchRadiance, params);
+    ConeHit h = marchCone(VOLUMES origin, mirror, dot3(n, mirror), object.specular.x, maxDistance,
+                          kMarchRadiance, params);
     r.indirectSpecular = params.modes.w == 1 ? h.radiance * lightAngle : h.radiance;
   }
   return r;
