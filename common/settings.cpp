@@ -1,5 +1,6 @@
 #include "common/settings.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "common/error.h"
@@ -101,9 +102,13 @@ Settings resolveSettings(const Technique& technique, const std::vector<std::stri
   applyPreset(settings, technique, preset);
   for (const std::string& a : sets) {
     const auto [key, value] = split(a, "--set");
+    // A key is the technique's own when its table lists it (svo lists vct's cone keys, the
+    // same fields), else another technique's is refused by name.
+    const std::vector<Param>& own = technique.params();
+    const bool listed =
+        std::any_of(own.begin(), own.end(), [&](const Param& p) { return p.key == key; });
     const Found found = findParam(key);
-    if (found.param != nullptr && found.technique != nullptr &&
-        found.technique->params != technique.params)
+    if (!listed && found.param != nullptr && found.technique != nullptr)
       throw InputError("--set", key,
                        "is a parameter of " + std::string(found.technique->name) + ", not of " +
                            std::string(technique.name));

@@ -49,5 +49,22 @@ TEST(Settings, PresetsSetTheirKeysAndListEveryKey) {
     EXPECT_NE(help.find(kv.substr(0, kv.find('='))), std::string::npos) << kv;
 }
 
+// svo lists voxel cone tracing's cone keys as its own (the same fields): --set takes them with
+// --technique svo, and still refuses a key that only another technique has.
+TEST(Settings, ATechniqueTakesTheKeysItSharesAndRefusesOthers) {
+  const Technique& svo = findTechnique("svo");
+  const Settings s =
+      resolveSettings(svo, {}, "scene.json", "default", {"cones.offset=2", "cones.clearance=0.25"});
+  EXPECT_EQ(s.vct.coneOffset, 2.0f);
+  EXPECT_EQ(s.vct.coneClearance, 0.25f);
+  try {
+    resolveSettings(svo, {}, "scene.json", "default", {"mip.mode=isotropic"});
+    FAIL() << "svo took vct's mip.mode";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a parameter of vct, not of svo"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace voxgi
