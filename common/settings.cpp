@@ -51,6 +51,9 @@ const std::vector<Param>& sharedParams() {
   static const std::vector<Param> table{
       choice("voxelize.mode", &Settings::voxelizeMode, {"conservative", "antialiased"},
              "closed triangle/voxel overlap, or trilinear splats continuous under motion"),
+      choice("voxelize.emission", &Settings::voxelizeEmission, {"surfaces", "emitters"},
+             "a voxel's emission: the mean over all its surfaces (a coplanar wall dilutes a "
+             "light), or over its emitting surfaces alone"),
       choice("plan.mode", &Settings::planMode, {"planned", "full"},
              "skip effects the scene does not use, or compute all (docs/effect-plan.md)"),
   };

@@ -16,10 +16,14 @@ namespace voxgi {
 struct Technique;
 
 enum class VoxelizeMode { conservative, antialiased };
+// A voxel's emission: the mean over all its surfaces, or over its emitting surfaces alone
+// (docs/stages/voxelize.md).
+enum class VoxelizeEmission { surfaces, emitters };
 enum class PlanMode { planned, full };  // common/effect_plan.h
 
 struct Settings {
   VoxelizeMode voxelizeMode = VoxelizeMode::conservative;
+  VoxelizeEmission voxelizeEmission = VoxelizeEmission::surfaces;
   // full: every optional effect is computed even where the plan shows it contributes nothing
   PlanMode planMode = PlanMode::planned;
   // Not a key: voxgi diff and dump set it, and planners then keep intermediate volumes a render

@@ -1,5 +1,6 @@
 #include "common/vdb_io.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include <openvdb/io/Stream.h>
@@ -60,7 +61,7 @@ openvdb::GridBase::Ptr makeGrid(const View& v, const Places& places, Convert con
 }
 
 // The grids of one block: a scalar or vector grid named `name`; 4-component views give the
-// rgb vector grid and `name`_alpha.
+// rgb vector grid and the fourth component as `name`_alpha (floats) or `name`_w (integers).
 template <class Places>
 openvdb::GridPtrVec blockGrids(const View& v, const Places& places, const std::string& name) {
   openvdb::GridPtrVec out;
@@ -86,7 +87,7 @@ openvdb::GridPtrVec blockGrids(const View& v, const Places& places, const std::s
     out.push_back(makeGrid<openvdb::Vec3SGrid>(v, places, [](const View& x, size_t e) {
       return openvdb::Vec3s(x.get<float>(e, 0), x.get<float>(e, 1), x.get<float>(e, 2));
     }));
-  else if (comps == 3)  // integers keep their bits: u32 is stored bit-cast as int32
+  else if (comps >= 3)  // integers keep their bits: u32 is stored bit-cast as int32
     out.push_back(makeGrid<openvdb::Vec3IGrid>(v, places, [](const View& x, size_t e) {
       return openvdb::Vec3i(x.get<int32_t>(e, 0), x.get<int32_t>(e, 1), x.get<int32_t>(e, 2));
     }));
@@ -97,10 +98,14 @@ openvdb::GridPtrVec blockGrids(const View& v, const Places& places, const std::s
     out.push_back(makeGrid<openvdb::Int32Grid>(
         v, places, [](const View& x, size_t e) { return x.get<int32_t>(e, 0); }));
   out.back()->setName(name);
-  if (comps == 4) {
+  if (comps == 4 && f32) {
     out.push_back(makeGrid<openvdb::FloatGrid>(
         v, places, [](const View& x, size_t e) { return x.get<float>(e, 3); }));
     out.back()->setName(name + "_alpha");
+  } else if (comps == 4) {
+    out.push_back(makeGrid<openvdb::Int32Grid>(
+        v, places, [](const View& x, size_t e) { return x.get<int32_t>(e, 3); }));
+    out.back()->setName(name + "_w");
   }
   return out;
 }
@@ -237,11 +242,17 @@ BufferSet readVdb(const std::string& path, GridSpec& grid,
   } catch (const openvdb::Exception& e) {
     throw InputError(path, "", std::string("cannot read: ") + e.what());
   }
-  BufferSet out;
+  // A 4-component buffer comes back from its rgb grid and its `_alpha` or `_w` grid.
+  std::vector<std::pair<const BufferSpec*, Buffer>> found;
   for (const auto& g : *grids) {
     const BufferSpec* spec = nullptr;
-    for (const BufferSpec* s : specs)
-      if (s->name == g->getName()) spec = s;
+    int first = 0;  // the component the grid's first value goes to
+    for (const BufferSpec* s : specs) {
+      const std::string name(s->name);
+      if (name == g->getName()) spec = s;
+      if (s->components == 4 && (g->getName() == name + "_alpha" || g->getName() == name + "_w"))
+        spec = s, first = 3;
+    }
     if (spec == nullptr) continue;
     const auto res = g->getMetadata<openvdb::Int32Metadata>("voxgi_resolution");
     const auto min = g->getMetadata<openvdb::Vec3DMetadata>("voxgi_grid_min");
@@ -254,17 +265,23 @@ BufferSet readVdb(const std::string& path, GridSpec& grid,
     grid.min = {min->value().x(), min->value().y(), min->value().z()};
     grid.size = size->value();
     const int n = grid.resolution;
-    Buffer b(*spec, glm::ivec3(n));
-    fillBuffer<openvdb::FloatGrid>(g, b, n, [](Buffer& x, size_t e, float v) { x.set(e, 0, v); });
-    fillBuffer<openvdb::Int32Grid>(g, b, n, [](Buffer& x, size_t e, int32_t v) { x.set(e, 0, v); });
+    auto at =
+        std::find_if(found.begin(), found.end(), [&](const auto& f) { return f.first == spec; });
+    if (at == found.end()) at = found.insert(found.end(), {spec, Buffer(*spec, glm::ivec3(n))});
+    Buffer& b = at->second;
+    fillBuffer<openvdb::FloatGrid>(g, b, n,
+                                   [=](Buffer& x, size_t e, float v) { x.set(e, first, v); });
+    fillBuffer<openvdb::Int32Grid>(g, b, n,
+                                   [=](Buffer& x, size_t e, int32_t v) { x.set(e, first, v); });
     fillBuffer<openvdb::Vec3SGrid>(g, b, n, [](Buffer& x, size_t e, const openvdb::Vec3s& v) {
       for (int c = 0; c < 3; ++c) x.set(e, c, v[c]);
     });
     fillBuffer<openvdb::Vec3IGrid>(g, b, n, [](Buffer& x, size_t e, const openvdb::Vec3i& v) {
       for (int c = 0; c < 3; ++c) x.set(e, c, v[c]);
     });
-    out.put(std::move(b));
   }
+  BufferSet out;
+  for (auto& [spec, b] : found) out.put(std::move(b));
   return out;
 }
 

@@ -39,8 +39,9 @@ struct Accumulator {
     for (int i = 0; i < 3; ++i) {
       add(albedo.words[3 * e + size_t(i)], c.albedo[i]);
       add(normal.words[3 * e + size_t(i)], static_cast<uint32_t>(c.normal[i]));  // two's complement
-      if (emission != nullptr) add(emission->words[3 * e + size_t(i)], c.emission[i]);
+      if (emission != nullptr) add(emission->words[4 * e + size_t(i)], c.emission[i]);
     }
+    if (emission != nullptr) add(emission->words[4 * e + 3], c.emitterWeight);
   }
 };
 
@@ -55,6 +56,7 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
   const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
   const bool emissive =
       ctx.plan.on(Effect::emission);  // emissionScale may be 0 under plan.mode=full
+  const bool emitterMean = ctx.settings.voxelizeEmission == VoxelizeEmission::emitters;
   const glm::ivec3 extent(n);
   Buffer weight(BufferId::common_voxelize_weight_sum, extent);
   Buffer albedoSum(BufferId::common_voxelize_albedo_sum, extent);
@@ -97,8 +99,10 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
         normal.set(e, c, nm[c]);
       }
       if (emissive) {
-        const glm::vec3 em =
-            shared::resolveEmission(sum3(emissionSum), w, ctx.triangles.emissionScale);
+        const uint32_t* sum = &emissionSum.words[4 * e];
+        const uint32_t over = emitterMean ? sum[3] : w;
+        const glm::vec3 em = shared::resolveEmission(glm::uvec3(sum[0], sum[1], sum[2]), over,
+                                                     ctx.triangles.emissionScale);
         for (int c = 0; c < 3; ++c) emission.set(e, c, em[c]);
       }
     }

@@ -40,7 +40,7 @@ void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& bu
   GlTexture weight(gl, createTexture3d(gl, GL_R32UI, glm::ivec3(n)));
   GlTexture albedoSum(gl, createTexture3d(gl, GL_R32UI, {3 * n, n, n}));
   GlTexture normalSum(gl, createTexture3d(gl, GL_R32I, {3 * n, n, n}));
-  GlTexture emissionSum(gl, emissive ? createTexture3d(gl, GL_R32UI, {3 * n, n, n}) : 0);
+  GlTexture emissionSum(gl, emissive ? createTexture3d(gl, GL_R32UI, {4 * n, n, n}) : 0);
   for (GLuint t : {weight.get(), albedoSum.get(), emissionSum.get()})
     if (t != 0) gl.ClearTexImage(t, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   gl.ClearTexImage(normalSum.get(), 0, GL_RED_INTEGER, GL_INT, &zero);
@@ -107,6 +107,8 @@ void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& bu
     resolve.set("uHasEmission", emissive ? 1 : 0);
     resolve.set("uAntialiased", antialiased ? 1 : 0);
     resolve.set("uEmissionScale", ctx.triangles.emissionScale);
+    resolve.set("uEmitterMean",
+                ctx.settings.voxelizeEmission == VoxelizeEmission::emitters ? 1 : 0);
     gl.BindImageTexture(0, weight.get(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     gl.BindImageTexture(1, albedoSum.get(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
     gl.BindImageTexture(2, normalSum.get(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32I);

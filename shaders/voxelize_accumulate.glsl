@@ -1,6 +1,7 @@
-// Accumulation targets of the voxelize stage (fragment and compute variants). The 3-component sums
-// are stored x-interleaved in 3N x N x N images: texel (3i + c, j, k) holds component c of voxel
-// (i, j, k), which is exactly the CPU buffer layout, so readback needs no reshuffling.
+// Accumulation targets of the voxelize stage (fragment and compute variants). The multi-component
+// sums are stored x-interleaved in 3N x N x N images (4N for the emission and the emitters'
+// weight): texel (3i + c, j, k) holds component c of voxel (i, j, k), which is exactly the CPU
+// buffer layout, so readback needs no reshuffling.
 layout(std430, binding = 0) readonly buffer Triangles { VoxelTriangle triangles[]; };
 layout(std430, binding = 1) buffer Status { uint overflow; };
 layout(binding = 0, r32ui) uniform coherent uimage3D uWeightSum;
@@ -17,6 +18,9 @@ void accumulate(ivec3 voxel, VoxelContribution c) {
     ivec3 texel = ivec3(3 * voxel.x + i, voxel.y, voxel.z);
     imageAtomicAdd(uAlbedoSum, texel, c.albedo[i]);
     imageAtomicAdd(uNormalSum, texel, c.normal[i]);
-    if (uHasEmission) imageAtomicAdd(uEmissionSum, texel, c.emission[i]);
+    if (uHasEmission)
+      imageAtomicAdd(uEmissionSum, ivec3(4 * voxel.x + i, voxel.y, voxel.z), c.emission[i]);
   }
+  if (uHasEmission)
+    imageAtomicAdd(uEmissionSum, ivec3(4 * voxel.x + 3, voxel.y, voxel.z), c.emitterWeight);
 }

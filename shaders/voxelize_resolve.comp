@@ -17,6 +17,7 @@ uniform int uResolution;
 uniform bool uHasEmission;
 uniform bool uAntialiased;
 uniform float uEmissionScale;
+uniform bool uEmitterMean;  // voxelize.emission=emitters: the mean over the emitting surfaces
 
 uvec3 load3(ivec3 v) {
   return uvec3(imageLoad(uAlbedoSum, ivec3(3 * v.x, v.y, v.z)).x,
@@ -37,10 +38,11 @@ void main() {
   vec3 normal = resolveNormal(normalSum, w);
   vec3 emission = vec3(0.0f);
   if (uHasEmission) {
-    uvec3 e = uvec3(imageLoad(uEmissionSum, ivec3(3 * v.x, v.y, v.z)).x,
-                    imageLoad(uEmissionSum, ivec3(3 * v.x + 1, v.y, v.z)).x,
-                    imageLoad(uEmissionSum, ivec3(3 * v.x + 2, v.y, v.z)).x);
-    emission = resolveEmission(e, w, uEmissionScale);
+    uvec3 e = uvec3(imageLoad(uEmissionSum, ivec3(4 * v.x, v.y, v.z)).x,
+                    imageLoad(uEmissionSum, ivec3(4 * v.x + 1, v.y, v.z)).x,
+                    imageLoad(uEmissionSum, ivec3(4 * v.x + 2, v.y, v.z)).x);
+    uint emitters = imageLoad(uEmissionSum, ivec3(4 * v.x + 3, v.y, v.z)).x;
+    emission = resolveEmission(e, uEmitterMean ? emitters : w, uEmissionScale);
   }
   for (int c = 0; c < 3; ++c) {
     ivec3 texel = ivec3(3 * v.x + c, v.y, v.z);

@@ -48,7 +48,7 @@ INSTANTIATE_TEST_SUITE_P(
         Case{"scenes/cornell_box.json",
              "villegas2017",
              gpu::GlPlatform::osmesa,
-             {"cones.clearance=0.5", "cones.offset=1.5"}}),
+             {"cones.clearance=0.5", "cones.offset=1.5", "voxelize.emission=emitters"}}),
     [](const testing::TestParamInfo<Case>& p) {
       std::string name = std::string(p.param.scene).substr(7);
       name = name.substr(0, name.find('.')) + "_" + p.param.preset + "_" +

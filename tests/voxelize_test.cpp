@@ -86,6 +86,38 @@ TEST(Voxelize, AttributesAreTheMaterialsAndTheUnitNormal) {
   EXPECT_NEAR(b.at(BufferId::common_voxelize_normal).get<float>(e, 0), 0.0f, 1e-4);
 }
 
+// voxelize.emission (docs/stages/voxelize.md): a light on a wall in one voxel layer. By default
+// a voxel's emission is the mean over all its surfaces, so the wall halves the light where both
+// fill a voxel; with `emitters` it is the mean over the emitting surfaces, the light's own, also
+// in the voxels its edge only partly covers (60 % here).
+TEST(Voxelize, AnEmitterOnAWallKeepsItsEmissionWithEmittersMean) {
+  Material wall, light;
+  light.emission = {4.0f, 2.0f, 1.0f};
+  Scene scene = makeScene(quad(1, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16), wall);
+  Mesh lamp = makeScene(quad(1, 0.3, {0.4, 0.4}, {0.6, 0.6}), unitGrid(16), light).meshes[0];
+  lamp.material = 1;
+  scene.materials.push_back(light);
+  scene.meshes.push_back(lamp);
+  const glm::ivec3 inside(8, 4, 8), edge(6, 4, 8);  // voxel 6 spans x in [0.375, 0.4375)
+  for (const VoxelizeEmission mode : {VoxelizeEmission::surfaces, VoxelizeEmission::emitters}) {
+    Settings settings;
+    settings.voxelizeEmission = mode;
+    const BufferSet b = runCpuUntil(scene, settings, "voxelize");
+    const Buffer& emission = b.at(BufferId::common_voxelize_emission);
+    const bool emitters = mode == VoxelizeEmission::emitters;
+    for (int c = 0; c < 3; ++c) {
+      // Fixed-point weights: each triangle's area rounded to 2^-16 voxel faces.
+      EXPECT_NEAR(voxelValue(emission, inside)[c], light.emission[c] * (emitters ? 1.0f : 0.5f),
+                  1e-4f * light.emission[c]);
+      EXPECT_NEAR(voxelValue(emission, edge)[c],
+                  light.emission[c] * (emitters ? 1.0f : 0.6f / 1.6f), 1e-4f * light.emission[c]);
+    }
+    // The emitters' weight is the light's area in the voxel (0.6 voxel faces), whatever the mode.
+    const Buffer& sum = b.at(BufferId::common_voxelize_emission_sum);
+    EXPECT_NEAR(double(sum.words[4 * scene.grid.index(edge) + 3]) / 65536.0, 0.6, 1e-4);
+  }
+}
+
 TEST(Voxelize, NonEmissiveScenesGetNoEmissionBuffers) {
   const Scene scene = makeScene(quad(2, 0.5, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16));
   const BufferSet b = runCpu(scene, VoxelizeMode::conservative);

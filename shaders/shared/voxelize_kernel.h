@@ -154,6 +154,7 @@ VOXGI_FN VoxelContribution weightedContribution(VoxelTriangle t, uint weight) {
   precise float w = float(weight);
   VoxelContribution c;
   c.weight = weight;
+  c.emitterWeight = vec3(t.emission) == vec3(0.0f) ? 0u : weight;
   c.albedo = uvec3(quantize(w * t.albedo.x), quantize(w * t.albedo.y), quantize(w * t.albedo.z));
   c.normal = ivec3(quantizeSigned(w * t.normal.x), quantizeSigned(w * t.normal.y),
                    quantizeSigned(w * t.normal.z));

@@ -26,6 +26,7 @@ const uint kMaxWeightSum = 2147483647u;
 // Sums one triangle adds to one voxel. albedo/emission/normal sums are weight * value, rounded.
 struct VoxelContribution {
   uint weight;
+  uint emitterWeight;  // the weight again when the triangle emits, else 0
   uvec3 albedo;
   ivec3 normal;
   uvec3 emission;
