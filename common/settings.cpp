@@ -104,7 +104,7 @@ Settings resolveSettings(const Technique& technique, const std::vector<std::stri
   for (const std::string& a : fileSettings) applySetting(settings, a, file, "settings.");
   applyPreset(settings, technique, preset);
   for (const std::string& a : sets) {
-    const auto [key, value] = split(a, "--set");
+    const std::string key = split(a, "--set").first;
     // A key is the technique's own when its table lists it (svo lists vct's cone keys, the
     // same fields), else another technique's is refused by name.
     const std::vector<Param>& own = technique.params();
