@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/cli.h"
 #include "tests/test_scenes.h"
@@ -89,6 +90,57 @@ TEST(Cli, StudySweepsOnlyTheTechniquesAKeyBelongsTo) {
   EXPECT_EQ(rows["vct"], 1);
   EXPECT_EQ(rows["lpv"], 2);
   EXPECT_EQ(rows["holpv"], 2);
+}
+
+// The error budget end to end: render --terms writes each term beside the image, compare --terms
+// measures each against the reference's, and study --terms adds their columns.
+TEST(Cli, TermsAreWrittenComparedAndStudied) {
+  const std::string dir = testTempDir(), scene = sourcePath("scenes/cornell_box.json");
+  ASSERT_EQ(voxgi("render " + scene + " --technique path --spp 4 --bounces 1 --image 32 --terms" +
+                  " --out " + dir + "ref.exr")
+                .code,
+            0);
+  const CommandResult vct = voxgi("render " + scene + " --resolution 16 --image 32 --terms" +
+                                  " --out " + dir + "vct.exr");
+  ASSERT_EQ(vct.code, 0) << vct.output;
+  for (const char* term : {"emission", "direct", "indirect_diffuse", "indirect_specular"}) {
+    EXPECT_TRUE(std::filesystem::exists(dir + "ref." + term + ".exr")) << term;
+    EXPECT_TRUE(std::filesystem::exists(dir + "vct." + term + ".exr")) << term;
+  }
+  const CommandResult c =
+      voxgi("compare " + dir + "vct.exr " + dir + "ref.exr --terms --json " + dir + "c.json");
+  ASSERT_EQ(c.code, 0) << c.output;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir + "c.json"));
+  // The box is lit by its emitter alone: the cones' light is all indirect diffuse, and its share
+  // is most of the image's relMSE; nothing is direct.
+  const double whole = j["rel_mse"].get<double>();
+  EXPECT_GT(j["terms"]["indirect_diffuse"]["share"].get<double>(), 0.5 * whole);
+  EXPECT_EQ(j["terms"]["direct"]["rel_mse"].get<double>(), 0.0);
+  EXPECT_TRUE(j["terms"]["direct"]["brightness"].is_null());
+  EXPECT_TRUE(std::filesystem::exists(dir + "vct.indirect_diffuse.error.png"));
+  // Terms missing beside the image under test: one line naming the file.
+  std::filesystem::remove(dir + "vct.direct.exr");
+  const CommandResult missing = voxgi("compare " + dir + "vct.exr " + dir + "ref.exr --terms");
+  EXPECT_EQ(missing.code, 2) << missing.output;
+  EXPECT_NE(missing.output.find("vct.direct.exr: missing"), std::string::npos) << missing.output;
+
+  const CommandResult s = voxgi("study " + scene + " --technique vct,path --sweep resolution=16" +
+                                " --sweep spp=1 --image 32 --repeat 1 --terms --reference " + dir +
+                                "ref.exr --csv " + dir + "s.csv");
+  ASSERT_EQ(s.code, 0) << s.output;
+  std::ifstream csv(dir + "s.csv");
+  std::vector<std::string> header, vctRow;
+  std::string line;
+  std::getline(csv, line);
+  std::istringstream h(line);
+  for (std::string f; std::getline(h, f, ',');) header.push_back(f);
+  std::getline(csv, line);
+  std::istringstream v(line);
+  for (std::string f; std::getline(v, f, ',');) vctRow.push_back(f);
+  const size_t share =
+      size_t(std::find(header.begin(), header.end(), "share_indirect_diffuse") - header.begin());
+  ASSERT_LT(share, vctRow.size()) << line;
+  EXPECT_GT(std::stod(vctRow[share]), 0.0);
 }
 
 }  // namespace

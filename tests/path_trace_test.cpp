@@ -120,6 +120,11 @@ TEST(PathTrace, PointLightOverAPlaneFollowsTheCosineOverDistanceSquaredLaw) {
   const double d2 = glm::dot(toLight, toLight), cosTheta = toLight.y / std::sqrt(d2);
   const double expected = 0.6 / 3.14159265358979 * 10.0 * cosTheta / d2;
   EXPECT_NEAR(meanOf(r.image).x, expected, expected * 1e-3);
+  // All of it is the direct term (common/light_terms.h).
+  EXPECT_NEAR(meanOf(termImage(r.terms, LightTerm::direct)).x, expected, expected * 1e-3);
+  for (const LightTerm t :
+       {LightTerm::emission, LightTerm::indirect_diffuse, LightTerm::indirect_specular})
+    EXPECT_EQ(meanOf(termImage(r.terms, t)), glm::dvec3(0.0)) << termName(t);
 }
 
 TEST(PathTrace, FurnaceConvergesToEmissionOverOneMinusAlbedo) {

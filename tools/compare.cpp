@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
 #include "common/image_io.h"
+#include "common/light_terms.h"
 #include "common/output_file.h"
 #include "validation/reference/image_metrics.h"
 #include "validation/reference/path_trace.h"
@@ -33,6 +35,53 @@ void addCompareOptions(CLI::App& cmd, CompareOptions& o) {
                  "a row (0: the top) whose linear luminance of both images goes into the JSON, "
                  "for tools/plot_scanline.py")
       ->check(CLI::NonNegativeNumber);
+  cmd.add_flag("--terms", o.terms,
+               "also measure each light term (voxgi render --terms wrote TEST.<term>.exr and "
+               "REFERENCE.<term>.exr), with an error map per term");
+}
+
+// The error map of `image`: --error-png's name, else IMAGE's name + .error.png.
+std::string errorMapPath(const std::string& image, const std::string& given) {
+  if (!given.empty()) return given;
+  const std::filesystem::path t(image);
+  return (t.parent_path() / (t.stem().string() + ".error.png")).string();
+}
+
+// A term's error map: the term image's (TEST.<term>.error.png), or --error-png's name with the
+// term before its extension.
+std::string termErrorMapPath(const CompareOptions& o, LightTerm term) {
+  return o.errorPng.empty() ? errorMapPath(termPath(o.test, term), "") : termPath(o.errorPng, term);
+}
+
+nlohmann::json printTermBudget(const CompareOptions& o, const Image& reference,
+                               const std::vector<uint8_t>& mask) {
+  const std::string &testPath = o.test, &referencePath = o.reference;
+  const TermImages test = readTermImages(testPath), expected = readTermImages(referencePath);
+  for (const LightTerm term : kLightTerms)
+    checkSameSize(termImage(test, term).width, termImage(test, term).height,
+                  termPath(testPath, term), termImage(expected, term));
+  std::cout << "  per term: relMSE against the reference's term; share: what its error alone adds "
+               "to the image's relMSE; brightness against the reference's\n"
+            << "    term                relMSE      share       brightness\n";
+  nlohmann::json out;
+  for (const LightTerm term : kLightTerms) {
+    const reference::TermMetrics m =
+        reference::compareTerm(termImage(test, term), termImage(expected, term), reference, mask);
+    const std::string name(termName(term));
+    std::cout << "    " << std::left << std::setw(20) << name << std::setw(12) << m.own.relMse
+              << std::setw(12) << m.share << m.meanRatio << std::right << "\n";
+    const std::string png = termErrorMapPath(o, term);
+    writeRgb8Png(png, reference.width, reference.height,
+                 reference::errorColours(termImage(test, term), termImage(expected, term), mask));
+    // JSON has no NaN: a term black in the reference has no brightness ratio.
+    out[name] = {
+        {"rel_mse", m.own.relMse},
+        {"rmse", m.own.rmse},
+        {"share", m.share},
+        {"brightness", std::isnan(m.meanRatio) ? nlohmann::json() : nlohmann::json(m.meanRatio)},
+        {"error_png", png}};
+  }
+  return out;
 }
 
 void checkSameSize(int width, int height, const std::string& name, const Image& reference) {
@@ -75,11 +124,10 @@ Image readReference(const std::string& path) {
 }
 
 int runCompare(const CompareOptions& o) {
-  const std::filesystem::path t(o.test);
-  const std::string errorPng = o.errorPng.empty()
-                                   ? (t.parent_path() / (t.stem().string() + ".error.png")).string()
-                                   : o.errorPng;
+  const std::string errorPng = errorMapPath(o.test, o.errorPng);
   checkOutputPath(errorPng);
+  if (o.terms)
+    for (const LightTerm term : kLightTerms) checkOutputPath(termErrorMapPath(o, term));
   if (!o.json.empty()) checkOutputPath(o.json);
   const Image reference = readReference(o.reference);
   const Image test = readImage(o.test);
@@ -113,6 +161,7 @@ int runCompare(const CompareOptions& o) {
                reference::errorColours(test, reference, mask));
   std::cout << "  error map (|t - r| / (|r| + 0.01), log scale 1e-3 black .. 1 white) -> "
             << errorPng << "\n";
+  if (o.terms) out["terms"] = printTermBudget(o, reference, mask);
   if (o.scanline >= 0) {
     // Rec. 709 luminance of the linear images.
     const auto row = [&](const Image& image) {

@@ -15,7 +15,8 @@ namespace voxgi::tools {
 
 struct CompareOptions {
   std::string test, reference, mask, errorPng, json;
-  int scanline = -1;  // a row whose luminance both images give in the JSON (-1: none)
+  int scanline = -1;   // a row whose luminance both images give in the JSON (-1: none)
+  bool terms = false;  // also each light term, from the TEST.<term>.exr beside each image
 };
 
 void addCompareOptions(CLI::App& cmd, CompareOptions& options);

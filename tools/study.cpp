@@ -6,16 +6,19 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
 #include "common/buffer_io.h"
 #include "common/error.h"
+#include "common/light_terms.h"
 #include "common/output_file.h"
 #include "common/pipeline.h"
 #include "common/scene_load.h"
@@ -106,6 +109,7 @@ struct Result {
   double seconds = 0.0;
   std::map<std::string, double> stages;  // stage -> median seconds
   Image image;
+  std::optional<TermImages> terms;  // the image's light terms
 };
 
 // A technique of the registry through the stage runner, timing each stage.
@@ -128,7 +132,10 @@ Result runTechnique(const Job& job, int repeats, gpu::GlContext* context) {
       total += seconds;
     });
     totals.push_back(total);
-    if (k + 1 == repeats) r.image = bufferImage(buffers.at(technique.image));
+    if (k + 1 == repeats) {
+      r.image = bufferImage(buffers.at(technique.image));
+      r.terms = techniqueTerms(technique, buffers, job.settings, job.scene);
+    }
   }
   for (const auto& [stage, times] : stageTimes) r.stages[stage] = median(times);
   r.seconds = median(totals);
@@ -142,6 +149,7 @@ Result runPath(const Job& job, int repeats) {
     reference::PathTraceResult p = reference::pathTrace(job.scene, job.options);
     times.push_back(p.seconds);
     r.image = std::move(p.image);
+    r.terms = std::move(p.terms);
   }
   r.seconds = median(times);
   r.stages["path_trace"] = r.seconds;
@@ -268,6 +276,9 @@ void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
   cmd.add_option("--image", o.image, "image width in pixels (the height keeps the aspect)");
   cmd.add_option("--repeat", o.repeats, "runs per combination; times are medians")
       ->check(CLI::Range(1, 100));
+  cmd.add_flag("--terms", o.terms,
+               "also measure each light term against REFERENCE.<term>.exr (voxgi render --terms "
+               "writes them): relMSE, share of the image's relMSE and brightness per term");
   cmd.add_option("--gl", o.gl, "GL platform for backend=gpu")
       ->check(CLI::IsMember({"egl", "osmesa"}));
 }
@@ -280,17 +291,31 @@ int runStudy(const StudyOptions& o) {
   const Image reference = readReference(o.reference);
   const std::vector<uint8_t> mask = readMask(o.mask, reference);
   const std::vector<Job> jobs = makeJobs(o, sweeps);
+  std::optional<TermImages> referenceTerms;
+  if (o.terms) {
+    referenceTerms = readTermImages(o.reference);
+    for (const LightTerm term : kLightTerms)
+      checkSameSize(termImage(*referenceTerms, term).width, termImage(*referenceTerms, term).height,
+                    termPath(o.reference, term), reference);
+  }
   checkSameSize(jobs.front().scene.camera.width, jobs.front().scene.camera.height,
                 o.scene + " camera.resolution (or --image)", reference);
   std::unique_ptr<gpu::GlContext> context;
   std::vector<Result> results;
   std::vector<reference::ImageMetrics> metrics;
+  // Per job, per term (empty without --terms or for a technique without terms).
+  std::vector<std::vector<reference::TermMetrics>> termMetrics(jobs.size());
   for (size_t k = 0; k < jobs.size(); ++k) {
     const Job& job = jobs[k];
     if (job.gpu && context == nullptr) context = gpu::GlContext::create(gpu::parseGlPlatform(o.gl));
     results.push_back(job.technique == "path" ? runPath(job, o.repeats)
                                               : runTechnique(job, o.repeats, context.get()));
     metrics.push_back(reference::compareImages(results.back().image, reference, mask));
+    if (referenceTerms && results.back().terms)
+      for (const LightTerm term : kLightTerms)
+        termMetrics[k].push_back(reference::compareTerm(termImage(*results.back().terms, term),
+                                                        termImage(*referenceTerms, term), reference,
+                                                        mask));
     std::cout << "[" << k + 1 << "/" << jobs.size() << "] " << job.technique << " " << job.label()
               << ": " << results.back().seconds << " s, RMSE " << metrics.back().rmse << ", relMSE "
               << metrics.back().relMse << ", SSIM " << metrics.back().ssim << std::endl;
@@ -335,7 +360,12 @@ int runStudy(const StudyOptions& o) {
   for (const Sweep& s : sweeps) csv << "," << s.key;
   csv << ",label,seconds";
   for (const std::string& s : stages) csv << "," << s << "_seconds";
-  csv << ",rmse,rel_mse,mare,ssim,ssim_loss,pareto,pareto_technique\n";
+  csv << ",rmse,rel_mse,mare,ssim,ssim_loss,pareto,pareto_technique";
+  if (referenceTerms)
+    for (const LightTerm term : kLightTerms)
+      csv << ",rel_mse_" << termName(term) << ",share_" << termName(term) << ",brightness_"
+          << termName(term);
+  csv << "\n";
   csv.precision(6);
   for (size_t k = 0; k < jobs.size(); ++k) {
     csv << jobs[k].technique;
@@ -352,7 +382,20 @@ int runStudy(const StudyOptions& o) {
     }
     const reference::ImageMetrics& m = metrics[k];
     csv << "," << m.rmse << "," << m.relMse << "," << m.mare << "," << m.ssim << "," << 1.0 - m.ssim
-        << "," << (front[k] ? 1 : 0) << "," << (techniqueFront[k] ? 1 : 0) << "\n";
+        << "," << (front[k] ? 1 : 0) << "," << (techniqueFront[k] ? 1 : 0);
+    if (referenceTerms) {
+      // A technique without terms leaves its cells empty.
+      for (size_t t = 0; t < kLightTerms.size(); ++t) {
+        if (termMetrics[k].empty()) {
+          csv << ",,,";
+          continue;
+        }
+        const reference::TermMetrics& tm = termMetrics[k][t];
+        csv << "," << tm.own.relMse << "," << tm.share << ",";
+        if (!std::isnan(tm.meanRatio)) csv << tm.meanRatio;
+      }
+    }
+    csv << "\n";
   }
   writeFileAtomically(o.csv, csv.str());
   std::cout << "wrote " << o.csv << " (" << jobs.size() << " rows)\n";

@@ -21,6 +21,7 @@ struct StudyOptions {
   std::string gl = "egl";          // for backend=gpu
   int image = 0;                   // image width (height keeps the camera's aspect); 0: the scene's
   int repeats = 3;
+  bool terms = false;  // also each light term against REFERENCE.<term>.exr (common/light_terms.h)
 };
 
 void addStudyOptions(CLI::App& cmd, StudyOptions& options);

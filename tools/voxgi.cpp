@@ -6,6 +6,7 @@
 #include <cmath>
 #include <csignal>
 #include <mutex>
+#include <optional>
 #include <unistd.h>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +21,7 @@
 #include "common/buffer_io.h"
 #include "common/error.h"
 #include "common/image_io.h"
+#include "common/light_terms.h"
 #include "common/output_file.h"
 #include "common/pipeline.h"
 #include "common/scene_load.h"
@@ -298,17 +300,32 @@ void requireFinite(const Image& image, const std::string& what) {
     }
 }
 
+// Every term file can be written before anything runs.
+void checkTermOutputs(const std::string& out) {
+  for (const LightTerm term : kLightTerms) checkOutputPath(termPath(out, term));
+}
+
 std::atomic<bool> interrupted{false};
 
 // A technique of the registry: every stage it plans on the chosen backend, then its image.
-int cmdRenderTechnique(const Common& c, const std::string& out, const std::string& png) {
+int cmdRenderTechnique(const Common& c, const std::string& out, const std::string& png,
+                       bool terms) {
   checkOutputPath(out);
   if (!png.empty()) checkOutputPath(png);
+  if (terms) checkTermOutputs(out);
   const StageRun run = runStages(c, nullptr);
   const Technique& technique = findTechnique(c.technique);
   const Image image = bufferImage(run.buffers.at(technique.image));
   requireFinite(image, std::string(technique.name) + "'s image");
+  std::optional<TermImages> split;
+  if (terms) {
+    split = techniqueTerms(technique, run.buffers, run.settings, run.scene);
+    if (!split)
+      throw InputError("--terms", "",
+                       std::string(technique.name) + " has no per-term light buffers");
+  }
   writeExr(out, image);
+  if (split) writeTermImages(out, *split);
   if (!png.empty()) writePng(png, image);
   std::cout << technique.name << " rendered " << run.scene.camera.width << "x"
             << run.scene.camera.height << " at " << run.scene.grid.resolution << "^3 ("
@@ -318,9 +335,10 @@ int cmdRenderTechnique(const Common& c, const std::string& out, const std::strin
 
 // The reference path tracer (validation/reference/).
 int cmdRenderPath(const Common& c, const reference::PathTraceOptions& base, const std::string& out,
-                  const std::string& png) {
+                  const std::string& png, bool terms) {
   checkOutputPath(out);
   checkOutputPath(reference::variancePath(out));
+  if (terms) checkTermOutputs(out);
   if (!png.empty()) checkOutputPath(png);
   const Scene scene = loadWithOverrides(c);
   reference::PathTraceOptions options = base;
@@ -351,6 +369,7 @@ int cmdRenderPath(const Common& c, const reference::PathTraceOptions& base, cons
   requireFinite(result.image, "the path-traced image");
   writeExr(out, result.image);
   writeExr(reference::variancePath(out), result.variance);
+  if (terms) writeTermImages(out, result.terms);
   if (!png.empty()) writePng(png, result.image);
   std::cout << "path traced " << scene.camera.width << "x" << scene.camera.height << " at "
             << options.spp << " spp in " << result.seconds << " s ("
@@ -436,6 +455,10 @@ int main(int argc, char** argv) {
   render->add_option("--out", out, "output EXR (linear); path also writes OUT.variance.exr")
       ->required();
   render->add_option("--png", png, "also write a tone-mapped sRGB preview");
+  bool terms = false;
+  render->add_flag("--terms", terms,
+                   "also write the image's light terms as OUT.<term>.exr: emission, direct, "
+                   "indirect_diffuse, indirect_specular (docs/accuracy.md, \"Error budget\")");
   std::string settingsHelp;
   for (const Technique& t : techniques()) settingsHelp += describeSettings(t);
   render->footer(settingsHelp);
@@ -501,8 +524,8 @@ int main(int argc, char** argv) {
   try {
     if (*voxelize) return cmdVoxelize(c, out, sums);
     if (*render)
-      return c.technique == "path" ? cmdRenderPath(c, pathOptions, out, png)
-                                   : cmdRenderTechnique(c, out, png);
+      return c.technique == "path" ? cmdRenderPath(c, pathOptions, out, png, terms)
+                                   : cmdRenderTechnique(c, out, png, terms);
     if (*diff) return cmdDiff(c, stage, json, dumpDir);
     if (*dump) return cmdDump(c, stage, out);
     if (*plan) return cmdPlan(c);

@@ -92,6 +92,26 @@ ImageMetrics compareImages(const Image& test, const Image& reference,
   return m;
 }
 
+TermMetrics compareTerm(const Image& test, const Image& reference, const Image& whole,
+                        const std::vector<uint8_t>& mask) {
+  TermMetrics m;
+  m.own = compareImages(test, reference, mask);
+  double share = 0.0, sumTest = 0.0, sumReference = 0.0;
+  for (size_t e = 0; e < reference.pixels.size(); ++e) {
+    if (!kept(mask, e)) continue;
+    for (int c = 0; c < 3; ++c) {
+      const double t = test.pixels[e][c], r = reference.pixels[e][c], w = whole.pixels[e][c];
+      share += (t - r) * (t - r) / (w * w + kRelativeEpsilon);
+      sumTest += t;
+      sumReference += r;
+    }
+  }
+  if (m.own.pixels == 0) return m;
+  m.share = share / (3.0 * double(m.own.pixels));
+  m.meanRatio = sumReference != 0.0 ? sumTest / sumReference : std::nan("");
+  return m;
+}
+
 ImageMetrics noiseFloor(const Image& reference, const Image& variance,
                         const std::vector<uint8_t>& mask) {
   ImageMetrics m;

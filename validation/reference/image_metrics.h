@@ -25,6 +25,18 @@ constexpr double kRelativeEpsilon = 0.01;
 ImageMetrics compareImages(const Image& test, const Image& reference,
                            const std::vector<uint8_t>& mask = {});
 
+// The error budget of one light term (common/light_terms.h): `test` and `reference` are the term
+// of the image under test and of the reference, `whole` the whole reference image.
+struct TermMetrics {
+  ImageMetrics own;        // the term against the reference's term
+  double share = 0.0;      // mean (t - r)^2 / (R^2 + eps), R from `whole`: what this term's
+                           // error alone adds to the whole image's relMSE
+  double meanRatio = 0.0;  // sum of t over sum of r (1: as bright as the reference; NaN where
+                           // the reference's term is black)
+};
+TermMetrics compareTerm(const Image& test, const Image& reference, const Image& whole,
+                        const std::vector<uint8_t>& mask = {});
+
 // The error a perfect image would still measure against a Monte Carlo reference whose per-pixel
 // variance of the mean is `variance`: RMSE = sqrt(mean variance) and relative MSE = mean
 // variance / (r^2 + eps); the other fields stay 0.

@@ -1,6 +1,7 @@
 #include "validation/reference/path_trace.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -44,6 +45,28 @@ vec3 around(vec3 n, float cosTheta, float phi) {
   const float sinTheta = std::sqrt(std::max(0.0f, 1.0f - cosTheta * cosTheta));
   return sinTheta * std::cos(phi) * t + sinTheta * std::sin(phi) * b + cosTheta * n;
 }
+
+// A BSDF value split by lobe: the Lambertian and the Phong part.
+struct Lobes {
+  vec3 diffuse{0.0f}, specular{0.0f};
+  vec3 sum() const { return diffuse + specular; }
+};
+
+// What one camera path brings back: the radiance and its split into the light terms
+// (common/light_terms.h), indexed by LightTerm.
+struct PathSample {
+  vec3 radiance{0.0f};
+  std::array<vec3, kLightTerms.size()> terms{};
+  vec3& term(LightTerm t) { return terms[size_t(t)]; }
+};
+
+// Next-event estimation at one vertex: the emissive triangles' sample by lobe, and the point, spot
+// and directional lights; `sum` is what the radiance adds.
+struct DirectLight {
+  vec3 sum{0.0f};
+  Lobes emitters;
+  vec3 lights{0.0f};
+};
 
 struct Emitter {
   vec3 p0, e1, e2, normal, emission;
@@ -134,11 +157,28 @@ class Tracer {
     return !s_.rays.occluded(o, d, distance);
   }
 
-  // Radiance arriving at the camera along (o, d).
-  vec3 radiance(vec3 o, vec3 d, Sampler& rng) {
-    vec3 result(0.0f), throughput(1.0f);
+  // Radiance arriving at the camera along (o, d), and its terms. From the second vertex on, what
+  // the path brings back reaches the camera through the first vertex's lobes; `lobeThroughput`
+  // splits `throughput` by the lobe that the first vertex's BSDF value came from.
+  PathSample radiance(vec3 o, vec3 d, Sampler& rng) {
+    PathSample sample;
+    vec3& result = sample.radiance;
+    vec3 throughput(1.0f);
+    Lobes lobeThroughput;
+    // Adds `light` at a vertex after the first, times the path's throughput, to the radiance and
+    // to the indirect terms through the first vertex's lobes. `weight` scales it after the
+    // throughput, in the order that the radiance has always been computed in.
+    const auto addIndirect = [&](vec3 light, float weight = 1.0f) {
+      result += throughput * light * weight;
+      sample.term(LightTerm::indirect_diffuse) += lobeThroughput.diffuse * light * weight;
+      sample.term(LightTerm::indirect_specular) += lobeThroughput.specular * light * weight;
+    };
     RayScene::Hit hit = intersect(o, d);
-    if (!hit.found) return scene_.background;
+    if (!hit.found) {
+      result = scene_.background;
+      sample.term(LightTerm::emission) = scene_.background;
+      return sample;
+    }
     bool countEmission = true;  // the camera ray sees emitters directly
     float lastPdf = 0.0f;       // solid-angle pdf of the BSDF sample that found `hit`
     vec3 lastPoint = o;
@@ -149,6 +189,7 @@ class Tracer {
       if (m.emissive() && glm::dot(ng, -d) > 0.0f) {  // emitters are one-sided (front face)
         if (countEmission) {
           result += throughput * m.emission;
+          sample.term(LightTerm::emission) += m.emission;
         } else {  // found by BSDF sampling: weigh against light sampling (power heuristic)
           const float d2 = glm::dot(x - lastPoint, x - lastPoint);
           // Emissive points are not light-sampled: BSDF sampling alone finds them.
@@ -156,29 +197,48 @@ class Tracer {
               hit.geometry < scene_.meshes.size()
                   ? luminance(m.emission) / s_.emitterWeight * d2 / glm::dot(ng, -d)
                   : 0.0f;
-          result += throughput * m.emission * powerWeight(lastPdf, lightPdf);
+          addIndirect(m.emission, powerWeight(lastPdf, lightPdf));
         }
       }
       if (bounces_ >= 0 && depth > bounces_) break;  // only the emission of the last hit counted
       const vec3 n = glm::dot(ng, d) < 0.0f ? ng : -ng;  // two-sided reflection
       const vec3 wo = -d;
       const vec3 origin = x + epsilon(x) * n;
-      result += throughput * directLight(origin, n, wo, m, rng);
+      const DirectLight direct = directLight(origin, n, wo, m, rng);
+      if (depth == 0) {
+        result += throughput * direct.sum;
+        sample.term(LightTerm::direct) += direct.lights;
+        sample.term(LightTerm::indirect_diffuse) += direct.emitters.diffuse;
+        sample.term(LightTerm::indirect_specular) += direct.emitters.specular;
+      } else {
+        addIndirect(direct.sum);
+      }
 
       // Continue by sampling the BSDF.
       vec3 wi;
       float pdf;
-      const vec3 f = sampleBsdf(m, n, wo, rng, wi, pdf);
+      const Lobes lobes = sampleBsdf(m, n, wo, rng, wi, pdf);
+      const vec3 f = lobes.sum();
       if (pdf <= 0.0f || maxComponent(f) <= 0.0f) break;
-      throughput *= f * glm::dot(n, wi) / pdf;
+      const vec3 factor = f * glm::dot(n, wi) / pdf;
+      throughput *= factor;
+      if (depth == 0) {
+        lobeThroughput.diffuse = lobes.diffuse * glm::dot(n, wi) / pdf;
+        lobeThroughput.specular = lobes.specular * glm::dot(n, wi) / pdf;
+      } else {
+        lobeThroughput.diffuse *= factor;
+        lobeThroughput.specular *= factor;
+      }
       if (bounces_ < 0 && depth >= 3) {  // Russian roulette for unlimited bounces
         const float q = std::min(0.95f, maxComponent(throughput));
         if (rng.next() >= q) break;
         throughput /= q;
+        lobeThroughput.diffuse /= q;
+        lobeThroughput.specular /= q;
       }
       const RayScene::Hit next = intersect(origin, wi);
       if (!next.found) {
-        result += throughput * scene_.background;  // the background is not light-sampled
+        addIndirect(scene_.background);  // the background is not light-sampled
         break;
       }
       o = origin;
@@ -190,7 +250,7 @@ class Tracer {
       // With a bounce limit, the emission found by the last allowed BSDF ray is still direct
       // light of the vertex before it; the loop head counts it and stops.
     }
-    return result;
+    return sample;
   }
 
  private:
@@ -210,13 +270,14 @@ class Tracer {
     return s;
   }
 
-  vec3 evalBsdf(const Shading& m, vec3 n, vec3 wo, vec3 wi) const {
-    if (glm::dot(n, wi) <= 0.0f) return vec3(0.0f);
-    vec3 f = m.albedo / kPi;
+  Lobes evalBsdf(const Shading& m, vec3 n, vec3 wo, vec3 wi) const {
+    Lobes f;
+    if (glm::dot(n, wi) <= 0.0f) return f;
+    f.diffuse = m.albedo / kPi;
     if (m.shininess > 0.0f && maxComponent(m.specular) > 0.0f) {
       const vec3 r = 2.0f * glm::dot(n, wo) * n - wo;
       const float c = std::max(0.0f, glm::dot(r, wi));
-      f += m.specular * (m.shininess + 2.0f) / (2.0f * kPi) * std::pow(c, m.shininess);
+      f.specular = m.specular * (m.shininess + 2.0f) / (2.0f * kPi) * std::pow(c, m.shininess);
     }
     return f;
   }
@@ -240,7 +301,7 @@ class Tracer {
     return s + d > 0.0f ? s / (s + d) : 0.0f;
   }
 
-  vec3 sampleBsdf(const Shading& m, vec3 n, vec3 wo, Sampler& rng, vec3& wi, float& pdf) const {
+  Lobes sampleBsdf(const Shading& m, vec3 n, vec3 wo, Sampler& rng, vec3& wi, float& pdf) const {
     const float choice = rng.next(), u1 = rng.next(), u2 = rng.next();
     if (choice < specularProbability(m)) {  // Phong lobe around the mirror direction
       const vec3 r = 2.0f * glm::dot(n, wo) * n - wo;
@@ -260,8 +321,9 @@ class Tracer {
 
   // Next-event estimation: one sample of the emissive triangles (MIS-weighted) plus every
   // point, spot and directional light.
-  vec3 directLight(vec3 x, vec3 n, vec3 wo, const Shading& m, Sampler& rng) {
-    vec3 sum(0.0f);
+  DirectLight directLight(vec3 x, vec3 n, vec3 wo, const Shading& m, Sampler& rng) {
+    DirectLight out;
+    vec3& sum = out.sum;
     const float pick = rng.next(), u1 = rng.next(), u2 = rng.next();
     if (!s_.emitters.empty()) {
       const float target = pick * s_.emitterWeight;
@@ -277,11 +339,15 @@ class Tracer {
       const float dist = std::sqrt(d2);
       toLight /= dist;
       const float cosLight = glm::dot(e.normal, -toLight);
-      const vec3 f = evalBsdf(m, n, wo, toLight);
+      const Lobes lobes = evalBsdf(m, n, wo, toLight);
+      const vec3 f = lobes.sum();
       if (cosLight > 0.0f && maxComponent(f) > 0.0f && visible(x, toLight, dist * (1.0f - 1e-4f))) {
         const float lightPdf = luminance(e.emission) / s_.emitterWeight * d2 / cosLight;
         const float w = powerWeight(lightPdf, bsdfPdf(m, n, wo, toLight));
         sum += f * e.emission * glm::dot(n, toLight) * w / lightPdf;
+        const vec3 weight = e.emission * (glm::dot(n, toLight) * w / lightPdf);
+        out.emitters.diffuse = lobes.diffuse * weight;
+        out.emitters.specular = lobes.specular * weight;
       }
     }
     for (size_t li = 0; li < scene_.lights.size(); ++li) {
@@ -300,12 +366,14 @@ class Tracer {
             glm::dot(-wi, vec3(l.direction)) < std::cos(glm::radians(0.5f * l.spotAngleDeg)))
           continue;
       }
-      const vec3 f = evalBsdf(m, n, wo, wi);
+      const vec3 f = evalBsdf(m, n, wo, wi).sum();
       if (maxComponent(f) <= 0.0f) continue;
       if (l.castsShadows && !visible(x, wi, dist)) continue;
-      sum += f * irradiance * glm::dot(n, wi);
+      const vec3 light = f * irradiance * glm::dot(n, wi);
+      sum += light;
+      out.lights += light;
     }
-    return sum;
+    return out;
   }
 
   const Scene& scene_;
@@ -326,13 +394,14 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
   const Setup setup(scene);
   const Camera& cam = scene.camera;
   const int w = cam.width, h = cam.height;
-  // The image and its variance, and the encoded file a writer builds from the image.
-  requireMemory(3 * uint64_t(w) * uint64_t(h) * sizeof(vec3),
+  // The image, its variance and terms, and the encoded file a writer builds from the image.
+  requireMemory((3 + kLightTerms.size()) * uint64_t(w) * uint64_t(h) * sizeof(vec3),
                 "the path-traced image at " + std::to_string(w) + "x" + std::to_string(h),
                 scene.file, "camera.resolution");
   PathTraceResult result;
   result.image = Image(w, h);
   result.variance = Image(w, h);
+  for (Image& term : result.terms) term = Image(w, h);
   const vec3 forward = glm::normalize(vec3(cam.lookAt - cam.position));
   const vec3 right = glm::normalize(glm::cross(forward, vec3(cam.up)));
   const vec3 up = glm::cross(right, forward);
@@ -346,18 +415,22 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
     for (int x = 0; x < w; ++x) {
       const uint64_t pixel = uint64_t(y) * uint64_t(w) + uint64_t(x);
       glm::dvec3 sum(0.0), sum2(0.0);
+      std::array<glm::dvec3, kLightTerms.size()> terms{};
       for (int s = 0; s < options.spp; ++s) {
         Sampler rng{
             mix64(options.seed ^ mix64(pixel ^ mix64(uint64_t(s) + 0x632be59bd9b4e019ull)))};
         const float px = (2.0f * (float(x) + rng.next()) / float(w) - 1.0f) * tanHalf * aspect;
         const float py = (1.0f - 2.0f * (float(y) + rng.next()) / float(h)) * tanHalf;
         const vec3 dir = glm::normalize(forward + px * right + py * up);
-        const glm::dvec3 l(tracer.radiance(setup.local(cam.position), dir, rng));
+        const PathSample path = tracer.radiance(setup.local(cam.position), dir, rng);
+        const glm::dvec3 l(path.radiance);
         sum += l;
         sum2 += l * l;
+        for (size_t t = 0; t < terms.size(); ++t) terms[t] += glm::dvec3(path.terms[t]);
       }
       const double n = options.spp;
       result.image.at(x, y) = vec3(sum / n);
+      for (size_t t = 0; t < terms.size(); ++t) result.terms[t].at(x, y) = vec3(terms[t] / n);
       result.variance.at(x, y) =
           n > 1 ? vec3(glm::max(sum2 - sum * sum / n, 0.0) / (n - 1.0) / n) : vec3(0.0f);
     }

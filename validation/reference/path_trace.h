@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "common/image_io.h"
+#include "common/light_terms.h"
 #include "common/scene.h"
 
 namespace voxgi::reference {
@@ -23,6 +24,7 @@ struct PathTraceOptions {
 struct PathTraceResult {
   Image image;        // mean radiance per pixel
   Image variance;     // variance of that mean per pixel and channel (sample variance / spp)
+  TermImages terms;   // the mean split into the light terms (common/light_terms.h)
   uint64_t rays = 0;  // camera, bounce and shadow rays traced
   double seconds = 0.0;
 };

@@ -1,0 +1,118 @@
+#include "common/light_terms.h"
+
+#include <filesystem>
+
+#include "common/error.h"
+#include "common/technique.h"
+#include "shaders/shared/compose_kernel.h"
+
+namespace voxgi {
+namespace {
+
+// The buffer called `name` among the technique's stages' (its shading stage's light terms), or
+// nullptr where the plan did not produce it.
+const Buffer* lightBuffer(const Technique& technique, const BufferSet& buffers,
+                          std::string_view name) {
+  for (const StageSpec* stage : technique.steps())
+    for (const BufferSpec* spec : stageBuffers(*stage))
+      if (spec->name == name) return buffers.find(spec->id);
+  return nullptr;
+}
+
+glm::vec3 rgbOr0(const Buffer* b, size_t e) {
+  return b == nullptr ? glm::vec3(0.0f) : b->vec3At(e);
+}
+
+}  // namespace
+
+std::string_view termName(LightTerm term) {
+  switch (term) {
+    case LightTerm::emission:
+      return "emission";
+    case LightTerm::direct:
+      return "direct";
+    case LightTerm::indirect_diffuse:
+      return "indirect_diffuse";
+    case LightTerm::indirect_specular:
+      return "indirect_specular";
+  }
+  return "";
+}
+
+std::string_view termMeaning(LightTerm term) {
+  switch (term) {
+    case LightTerm::emission:
+      return "what the camera sees unreflected: emitters and background";
+    case LightTerm::direct:
+      return "light of the point, spot and directional lights, reflected once toward the camera";
+    case LightTerm::indirect_diffuse:
+      return "light from surfaces (emitters included), reflected by the first surface's diffuse "
+             "lobe";
+    case LightTerm::indirect_specular:
+      return "light from surfaces (emitters included), reflected by the first surface's Phong lobe";
+  }
+  return "";
+}
+
+std::string termPath(const std::string& image, LightTerm term) {
+  const std::filesystem::path p(image);
+  return (p.parent_path() /
+          (p.stem().string() + "." + std::string(termName(term)) + p.extension().string()))
+      .string();
+}
+
+void writeTermImages(const std::string& image, const TermImages& terms) {
+  for (const LightTerm term : kLightTerms) writeExr(termPath(image, term), termImage(terms, term));
+}
+
+TermImages readTermImages(const std::string& image) {
+  TermImages terms;
+  for (const LightTerm term : kLightTerms) {
+    const std::string path = termPath(image, term);
+    if (!std::filesystem::exists(path))
+      throw InputError(path, "",
+                       "missing: the terms of " + image +
+                           " are written by voxgi render --terms (docs/accuracy.md)");
+    termImage(terms, term) = readExr(path);
+  }
+  return terms;
+}
+
+std::optional<TermImages> techniqueTerms(const Technique& technique, const BufferSet& buffers,
+                                         const Settings& settings, const Scene& scene) {
+  const Buffer *directDiffuse = lightBuffer(technique, buffers, "direct_diffuse"),
+               *directSpecular = lightBuffer(technique, buffers, "direct_specular"),
+               *indirectDiffuse = lightBuffer(technique, buffers, "indirect_diffuse"),
+               *indirectSpecular = lightBuffer(technique, buffers, "indirect_specular"),
+               *ambient = lightBuffer(technique, buffers, "ambient_occlusion");
+  if (indirectDiffuse == nullptr) return std::nullopt;
+  // AO darkens the indirect diffuse term only when asked, as vct's compose does.
+  if (settings.vct.ambientOcclusion != AmbientOcclusion::on) ambient = nullptr;
+  using enum BufferId;
+  const Buffer& objectId = buffers.at(common_gbuffer_object_id);
+  const Buffer *albedo = buffers.find(common_gbuffer_pixel_albedo),
+               *specular = buffers.find(common_gbuffer_pixel_specular),
+               *emission = buffers.find(common_gbuffer_pixel_emission);
+  const int w = objectId.extent.x, h = objectId.extent.y;
+  TermImages terms;
+  for (Image& image : terms) image = Image(w, h);
+  const glm::vec3 zero(0.0f);
+  for (size_t e = 0; e < size_t(w) * size_t(h); ++e) {
+    const uint32_t id = objectId.get<uint32_t>(e, 0);
+    const glm::vec3 a = rgbOr0(albedo, e), s = rgbOr0(specular, e);
+    const float ao = ambient == nullptr ? 0.0f : ambient->get<float>(e, 0);
+    // Each term is the composition with the other terms' inputs at zero.
+    termImage(terms, LightTerm::emission).pixels[e] = shared::composePixel(
+        id, zero, zero, rgbOr0(emission, e), zero, zero, zero, zero, 0.0f, scene.background);
+    termImage(terms, LightTerm::direct).pixels[e] =
+        shared::composePixel(id, a, s, zero, rgbOr0(directDiffuse, e), rgbOr0(directSpecular, e),
+                             zero, zero, 0.0f, zero);
+    termImage(terms, LightTerm::indirect_diffuse).pixels[e] = shared::composePixel(
+        id, a, s, zero, zero, zero, rgbOr0(indirectDiffuse, e), zero, ao, zero);
+    termImage(terms, LightTerm::indirect_specular).pixels[e] = shared::composePixel(
+        id, a, s, zero, zero, zero, zero, rgbOr0(indirectSpecular, e), 0.0f, zero);
+  }
+  return terms;
+}
+
+}  // namespace voxgi

@@ -1,0 +1,57 @@
+// The terms a rendered image splits into, for the error budget (docs/accuracy.md, "Error
+// budget"): every renderer's image is their sum, and each term is measured against the same term
+// of the path-traced reference. The split follows what the cone tracers can separate: the lobe of
+// the first visible surface that carried the light, and whether it came straight from one of the
+// scene's lights (point, spot, directional). An emissive surface's light reaches another surface
+// through the indirect terms, because the cones gather it with everything else the voxels emit.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "common/buffer.h"
+#include "common/image_io.h"
+#include "common/scene.h"
+#include "common/settings.h"
+
+namespace voxgi {
+
+struct Technique;
+
+enum class LightTerm { emission, direct, indirect_diffuse, indirect_specular };
+constexpr std::array<LightTerm, 4> kLightTerms{LightTerm::emission, LightTerm::direct,
+                                               LightTerm::indirect_diffuse,
+                                               LightTerm::indirect_specular};
+
+std::string_view termName(LightTerm term);
+// One line for help texts and docs.
+std::string_view termMeaning(LightTerm term);
+
+// One image per term, indexed by LightTerm.
+using TermImages = std::array<Image, kLightTerms.size()>;
+inline Image& termImage(TermImages& images, LightTerm term) {
+  return images[size_t(term)];
+}
+inline const Image& termImage(const TermImages& images, LightTerm term) {
+  return images[size_t(term)];
+}
+
+// Where the image of `term` goes beside IMAGE.exr: IMAGE.<term>.exr.
+std::string termPath(const std::string& image, LightTerm term);
+
+// Writes each term beside `image` (termPath), each file complete or not at all.
+void writeTermImages(const std::string& image, const TermImages& terms);
+// Reads the terms beside `image`; throws InputError naming a missing or unreadable file.
+TermImages readTermImages(const std::string& image);
+
+// A staged technique's terms from the buffers its run left: the gbuffer's materials times the
+// light buffers of its shading stage (direct_diffuse, direct_specular, indirect_diffuse,
+// indirect_specular), put together by the kernel that composes its image
+// (shaders/shared/compose_kernel.h), so the terms add up to the image up to float rounding.
+// nullopt when the technique has no such buffers.
+std::optional<TermImages> techniqueTerms(const Technique& technique, const BufferSet& buffers,
+                                         const Settings& settings, const Scene& scene);
+
+}  // namespace voxgi
