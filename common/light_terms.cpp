@@ -44,12 +44,13 @@ std::string_view termMeaning(LightTerm term) {
     case LightTerm::emission:
       return "what the camera sees unreflected: emitters and background";
     case LightTerm::direct:
-      return "light of the point, spot and directional lights, reflected once toward the camera";
+      return "light straight from the lights and emissive surfaces, reflected once toward the "
+             "camera";
     case LightTerm::indirect_diffuse:
-      return "light from surfaces (emitters included), reflected by the first surface's diffuse "
-             "lobe";
+      return "light reflected more than once, or from the background, leaving the first surface "
+             "by its diffuse lobe";
     case LightTerm::indirect_specular:
-      return "light from surfaces (emitters included), reflected by the first surface's Phong lobe";
+      return "the same leaving the first surface by its Phong lobe";
   }
   return "";
 }

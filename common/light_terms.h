@@ -1,9 +1,11 @@
 // The terms a rendered image splits into, for the error budget (docs/accuracy.md, "Error
 // budget"): every renderer's image is their sum, and each term is measured against the same term
-// of the path-traced reference. The split follows what the cone tracers can separate: the lobe of
-// the first visible surface that carried the light, and whether it came straight from one of the
-// scene's lights (point, spot, directional). An emissive surface's light reaches another surface
-// through the indirect terms, because the cones gather it with everything else the voxels emit.
+// of the path-traced reference. Direct light comes straight from a light source (a point, spot or
+// directional light, or an emissive surface) to the first visible surface; indirect light was
+// reflected at least once more, or comes from the background, and is split by the first surface's
+// lobe that reflects it. A cone tracer with emitters.mode=voxels gathers the emissive surfaces'
+// direct light with its diffuse cones, so its indirect diffuse term holds it: the budget shows that
+// as light missing from the direct term and added to the indirect one.
 #pragma once
 
 #include <array>

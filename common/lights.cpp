@@ -1,6 +1,10 @@
 #include "common/lights.h"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+
+#include "common/error.h"
 
 namespace voxgi {
 
@@ -21,6 +25,36 @@ std::vector<shared::LightData> voxelLights(const Scene& scene) {
     d.info = glm::uvec4(type, l.castsShadows ? 1u : 0u, 0u, 0u);
     out.push_back(d);
   }
+  return out;
+}
+
+std::vector<shared::LightData> areaLights(const Scene& scene) {
+  std::vector<shared::LightData> out;
+  for (const Mesh& mesh : scene.meshes) {
+    const Material& m = scene.materials[mesh.material];
+    if (!m.emissive()) continue;
+    for (const glm::uvec3& t : mesh.triangles) {
+      const glm::dvec3 a = scene.grid.toVoxel(mesh.positions[t.x]),
+                       b = scene.grid.toVoxel(mesh.positions[t.y]),
+                       c = scene.grid.toVoxel(mesh.positions[t.z]);
+      if (glm::length(glm::cross(b - a, c - a)) == 0.0) continue;
+      const glm::dvec3 centroid = (a + b + c) / 3.0;
+      const double radius = std::max(
+          {glm::length(a - centroid), glm::length(b - centroid), glm::length(c - centroid)});
+      shared::LightData d{};
+      d.position = glm::vec4(glm::vec3(a), 1.0f);
+      d.direction = glm::vec4(glm::vec3(b), float(radius));
+      d.falloff = glm::vec4(glm::vec3(c), 0.0f);
+      d.intensity = glm::vec4(m.emission, 0.0f);
+      d.info = glm::uvec4(shared::kLightTriangle, 1u, 0u, 0u);
+      out.push_back(d);
+    }
+  }
+  if (out.size() > kMaxAreaLights)
+    throw InputError(scene.file, "emitters.mode",
+                     "area_lights takes at most " + std::to_string(kMaxAreaLights) +
+                         " emissive triangles, the scene has " + std::to_string(out.size()) +
+                         "; use emitters.mode=voxels");
   return out;
 }
 

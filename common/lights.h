@@ -11,4 +11,12 @@ namespace voxgi {
 
 std::vector<shared::LightData> voxelLights(const Scene& scene);
 
+// The most emissive triangles emitters.mode=area_lights takes: each costs a shadow cone per pixel.
+constexpr size_t kMaxAreaLights = 64;
+
+// Every emissive triangle of the scene's meshes as an area light (shared::kLightTriangle);
+// degenerate ones are left out. Throws InputError naming the scene and emitters.mode past
+// kMaxAreaLights.
+std::vector<shared::LightData> areaLights(const Scene& scene);
+
 }  // namespace voxgi

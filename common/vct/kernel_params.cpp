@@ -56,20 +56,38 @@ std::vector<shared::ObjectData> objectData(const Scene& scene, bool everyObject)
   return out;
 }
 
+// The analytic lights, then the emissive triangles as area lights.
+std::vector<shared::LightData> lightsFor(const Scene& scene, EmitterLighting emitters) {
+  std::vector<shared::LightData> lights = voxelLights(scene);
+  if (emitters == EmitterLighting::area_lights) {
+    const std::vector<shared::LightData> area = areaLights(scene);
+    lights.insert(lights.end(), area.begin(), area.end());
+  }
+  return lights;
+}
+
 }  // namespace
 
 shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount,
-                                            bool emissive) {
+                                            bool emission) {
   const VctSettings& s = ctx.settings.vct;
   return {glm::ivec4(ctx.scene.grid.resolution, lightCount,
                      s.attenuation == LightAttenuation::normal_weighted ? 1 : 0,
                      static_cast<int>(s.voxelShadow)),
           glm::vec4(static_cast<float>(ctx.scene.grid.voxelSize()), s.voxelShadowKappa,
-                    s.voxelShadowOffset, emissive ? 1.0f : 0.0f)};
+                    s.voxelShadowOffset, emission ? 1.0f : 0.0f)};
 }
 
-ConeTraceSetup prepareConeTrace(const StageContext& ctx) {
-  ConeTraceSetup s{voxelLights(ctx.scene),
+LightVoxelsSetup prepareLightVoxels(const StageContext& ctx, bool emissionVolume) {
+  const EmitterLighting emitters = ctx.settings.vct.emitters;
+  LightVoxelsSetup s{lightsFor(ctx.scene, emitters), {}};
+  s.params = lightVoxelsParams(ctx, int(s.lights.size()),
+                               emissionVolume && emitters == EmitterLighting::voxels);
+  return s;
+}
+
+ConeTraceSetup prepareConeTrace(const StageContext& ctx, EmitterLighting emitters) {
+  ConeTraceSetup s{lightsFor(ctx.scene, emitters),
                    coneData(diffuseCones(ctx.settings.vct.cones)),
                    objectData(ctx.scene, ctx.plan.full),
                    {}};

@@ -8,7 +8,17 @@
 
 namespace voxgi {
 
-shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount, bool emissive);
+// `emission`: the voxels' emission is added to their radiance.
+shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount, bool emission);
+
+// What vct's light_voxels reads besides the volumes: the scene's analytic lights, then under
+// emitters.mode=area_lights its emissive triangles, whose voxels then carry no emission.
+struct LightVoxelsSetup {
+  std::vector<shared::LightData> lights;
+  shared::LightVoxelsParams params;
+};
+// `emissionVolume`: voxelize produced the emission volume.
+LightVoxelsSetup prepareLightVoxels(const StageContext& ctx, bool emissionVolume);
 
 // What trace_cones reads besides the gbuffer and the volumes, prepared once for both backends.
 struct ConeTraceSetup {
@@ -20,7 +30,9 @@ struct ConeTraceSetup {
   std::vector<shared::ObjectData> objects;
   shared::ConeTraceParams params;
 };
-ConeTraceSetup prepareConeTrace(const StageContext& ctx);
+// `emitters`: vct's emitters.mode; the octree keeps its emitters in the leaves (voxels), because
+// its point clouds' emitters have no triangles.
+ConeTraceSetup prepareConeTrace(const StageContext& ctx, EmitterLighting emitters);
 // The same for the bounce stage: the diffuse cone set only (no lights, objects or ambient
 // occlusion).
 ConeTraceSetup prepareBounce(const StageContext& ctx);

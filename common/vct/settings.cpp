@@ -6,6 +6,10 @@ namespace voxgi::vct {
 const std::vector<Param>& params() {
   constexpr auto vct = &Settings::vct;
   static const std::vector<Param> table{
+      choice<vct>("emitters.mode", &VctSettings::emitters, {"voxels", "area_lights"},
+                  "emissive surfaces: emission in the voxels, gathered by the cones; or each "
+                  "emissive triangle an area light, exact unoccluded with a shadow cone, its "
+                  "voxels dark (at most 64 triangles)"),
       choice<vct>("light.attenuation", &VctSettings::attenuation, {"cosine", "normal_weighted"},
                   "per-voxel direct light: max(n.l, 0), or Villegas' per-face weighting"),
       choice<vct>("voxel_shadow.mode", &VctSettings::voxelShadow, {"none", "hard", "soft"},
@@ -58,11 +62,11 @@ const std::vector<Preset>& presets() {
        {"mip.mode=isotropic", "voxel_shadow.mode=none", "cones.set=kahl5",
         "cones.diffuse=first_hit", "shadow.falloff=kahl2019", "shadow.aperture=30",
         "specular.brdf=light_angle"}},
-      // [Villegas 2017]: normal-weighted attenuation, soft voxel shadows, directional volumes,
-      // 6 cones, AO.
+      // [Villegas 2017]: emission in the voxels (§2.3), normal-weighted attenuation, soft voxel
+      // shadows, directional volumes, 6 cones, AO.
       {"villegas2017",
-       {"light.attenuation=normal_weighted", "voxel_shadow.mode=soft", "mip.mode=anisotropic",
-        "cones.set=villegas6", "ao.mode=on"}},
+       {"emitters.mode=voxels", "light.attenuation=normal_weighted", "voxel_shadow.mode=soft",
+        "mip.mode=anisotropic", "cones.set=villegas6", "ao.mode=on"}},
   };
   return table;
 }

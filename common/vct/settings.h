@@ -12,9 +12,13 @@ enum class DiffuseCones { weighted, first_hit };          // first_hit: [Kahl 20
 enum class ShadowFalloff { plain, kahl2019 };    // kahl2019: [Kahl 2019, §5.4.4] smoothstep/sqrt
 enum class SpecularBrdf { phong, light_angle };  // light_angle: [Kahl 2019, eq. 5.6]
 enum class AmbientOcclusion { off, on };         // [Villegas 2017, §4.2]
+// voxels: emission in the voxels, gathered by the cones ([Villegas 2017, §2.3]); area_lights: each
+// emissive triangle an area light (shaders/shared/area_light.h)
+enum class EmitterLighting { voxels, area_lights };
 
 struct VctSettings {
   // light_voxels
+  EmitterLighting emitters = EmitterLighting::area_lights;
   LightAttenuation attenuation = LightAttenuation::cosine;
   VoxelShadow voxelShadow = VoxelShadow::hard;
   float voxelShadowKappa = 1.0f;   // soft shadows: occlusion per colliding voxel, times 1/t

@@ -4,7 +4,6 @@
 
 #include "common/parallel.h"
 #include "common/vct/kernel_params.h"
-#include "common/lights.h"
 #include "cpu/stages.h"
 
 namespace voxgi::cpu {
@@ -32,23 +31,20 @@ struct LightVoxelsVolumes {
 void vct::light_voxels(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, StageId::vct_light_voxels);
   const int n = ctx.scene.grid.resolution;
-  const auto lights = voxelLights(ctx.scene);
   const Buffer* emission = buffers.find(BufferId::common_voxelize_emission);
-  const bool emissive = emission != nullptr;
+  const LightVoxelsSetup setup = prepareLightVoxels(ctx, emission != nullptr);
   const LightVoxelsVolumes volumes{buffers.at(BufferId::common_voxelize_opacity),
                                    buffers.at(BufferId::common_voxelize_albedo),
                                    buffers.at(BufferId::common_voxelize_normal),
                                    emission,
-                                   lights,
+                                   setup.lights,
                                    ctx.scene.grid};
-  const shared::LightVoxelsParams params =
-      lightVoxelsParams(ctx, static_cast<int>(lights.size()), emissive);
   Buffer radiance(BufferId::vct_light_voxels_radiance, glm::ivec3(n));
   parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
     for (int row = rows.begin(); row != rows.end(); ++row)
       for (int x = 0; x < n; ++x) {
         const glm::ivec3 v(x, row % n, row / n);
-        const glm::vec4 r = shared::lightVoxel(volumes, v, params);
+        const glm::vec4 r = shared::lightVoxel(volumes, v, setup.params);
         const size_t e = volumes.index(v);
         for (int c = 0; c < 4; ++c) radiance.set(e, c, r[c]);
       }

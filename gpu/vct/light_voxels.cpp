@@ -1,7 +1,6 @@
 // GPU light_voxels stage: shaders/vct/light_voxels.comp runs the shared kernel per voxel on the
 // voxelize buffers uploaded as textures; the radiance volume is read back.
 #include "common/vct/kernel_params.h"
-#include "common/lights.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
 #include "gpu/volumes.h"
@@ -11,13 +10,12 @@ namespace voxgi::gpu {
 void vct::light_voxels(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   const Gl& gl = beginStage(context, ctx, StageId::vct_light_voxels);
   const int n = ctx.scene.grid.resolution;
-  const auto lights = voxelLights(ctx.scene);
   const Buffer* emission = buffers.find(BufferId::common_voxelize_emission);
-  const bool emissive = emission != nullptr;
-  const shared::LightVoxelsParams params =
-      lightVoxelsParams(ctx, static_cast<int>(lights.size()), emissive);
+  // Under emitters.mode=area_lights the emission volume is not read, so not uploaded.
+  const LightVoxelsSetup setup = prepareLightVoxels(ctx, emission != nullptr);
+  const bool emissive = setup.params.values.w != 0.0f;
 
-  GlBuffer lightBlock(gl, createBlock(gl, params, lights));
+  GlBuffer lightBlock(gl, createBlock(gl, setup.params, setup.lights));
   GlTexture opacity(gl, uploadVolume(gl, buffers.at(BufferId::common_voxelize_opacity)));
   GlTexture albedo(gl, uploadVolume(gl, buffers.at(BufferId::common_voxelize_albedo)));
   GlTexture normal(gl, uploadVolume(gl, buffers.at(BufferId::common_voxelize_normal)));

@@ -12,8 +12,13 @@ VOXGI_NAMESPACE_BEGIN
 const uint kLightPoint = 0u;
 const uint kLightSpot = 1u;
 const uint kLightDirectional = 2u;
+const uint kLightTriangle =
+    3u;  // an emissive triangle as an area light (emitters.mode=area_lights)
 
-// One light in voxel-local coordinates (common/lights.cpp builds them). 64 bytes, std430.
+// One light in voxel-local coordinates (common/lights.cpp builds them). 80 bytes, std430. A
+// triangle (kLightTriangle) keeps its three corners in position, direction and falloff (xyz,
+// counter-clockwise seen from the side it emits to), its radiance in intensity and its bounding
+// radius about the centroid in direction.w (shaders/shared/area_light.h).
 struct LightData {
   vec4 position;   // xyz: voxel-local position (point, spot)
   vec4 direction;  // xyz: unit direction the light travels (spot axis, directional); w: cos(half

@@ -5,6 +5,7 @@
 
 VOXGI_NAMESPACE_BEGIN
 
+const float kPi = 3.14159265358979f;
 const float kInvPi = 0.318309886183791f;
 
 VOXGI_FN float dot3(vec3 a, vec3 b) {

@@ -45,8 +45,11 @@ TEST(SvoRender, CornellBoxFromSampledMeshesIsCloseToThePathTracer) {
   o.bounces = 1;
   const reference::PathTraceResult ref = reference::pathTrace(scene, o);
   const reference::ImageMetrics m = reference::compareImages(svo.image, ref.image);
-  // Dense voxel cone tracing on the same grid and transport, side by side.
-  const BufferSet dense = runCpuUntil(scene, Settings{}, "compose");
+  // Dense voxel cone tracing on the same grid and transport, side by side, with its emitters in
+  // the voxels as the octree has them (the octree has no area lights).
+  Settings denseSettings;
+  denseSettings.vct.emitters = EmitterLighting::voxels;
+  const BufferSet dense = runCpuUntil(scene, denseSettings, "compose");
   Image vctImage(scene.camera.width, scene.camera.height);
   for (size_t i = 0; i < vctImage.pixels.size(); ++i)
     vctImage.pixels[i] = dense.at(BufferId::vct_compose_color).vec3At(i);
@@ -101,6 +104,7 @@ Gathered receiverGather(int wallLeaves) {
   const Buffer& g = b.at(BufferId::svo_propagate_svo_gathered);
   const size_t slot = size_t(tile) * 8 + shared::localId(leaf);
   Settings settings;
+  settings.vct.emitters = EmitterLighting::voxels;  // the octree's emitters, in the voxels
   settings.vct.bounceCount = 1;
   const BufferSet dense = runCpuUntil(vct(), scene, settings, "bounce");
   const glm::vec4 direct =

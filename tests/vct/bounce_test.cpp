@@ -35,6 +35,7 @@ Scene closedBox(float albedo) {
 // Outgoing radiance (opacity 1, so the premultiplied value) at the middle of the floor.
 float floorRadiance(const Scene& scene, MipMode mip, int bounces) {
   Settings settings;
+  settings.vct.emitters = EmitterLighting::voxels;  // the walls' emission is the radiosity's source
   settings.vct.mip = mip;
   settings.vct.bounceCount = bounces;
   const BufferSet b = runCpuUntil(scene, settings, "bounce");

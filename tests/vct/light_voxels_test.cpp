@@ -1,9 +1,11 @@
 // light_voxels against closed forms: a point light over a floor (irradiance I cos / r^2), hard and
-// soft voxel shadows behind a blocker, the spot cut-off, emission, and Villegas' attenuation.
+// soft voxel shadows behind a blocker, the spot cut-off, emission, an emissive square as an area
+// light, and Villegas' attenuation.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
+#include "common/error.h"
 #include "shaders/shared/lighting.h"
 #include "tests/test_scenes.h"
 
@@ -124,13 +126,77 @@ TEST(LightVoxels, EmissionIsAddedWithoutLights) {
   Material m;
   m.emission = glm::vec3(3.0f, 2.0f, 1.0f);
   const Scene scene = makeScene(quad(2, 0.51, {0.1, 0.1}, {0.9, 0.9}), unitGrid(kN), m);
-  const BufferSet b = runCpuUntil(scene, Settings{}, "light_voxels");
+  Settings settings;
+  settings.vct.emitters = EmitterLighting::voxels;
+  const BufferSet b = runCpuUntil(scene, settings, "light_voxels");
   const glm::vec4 r = voxelValue(b.at(BufferId::vct_light_voxels_radiance), {8, 8, 8});
   // Emission goes through voxelize's fixed-point sums: 2^-16 of the scene's largest emission.
   EXPECT_NEAR(r.r, 3.0f, 3.0f / 65536.0f);
   EXPECT_NEAR(r.g, 2.0f, 3.0f / 65536.0f);
   EXPECT_NEAR(r.b, 1.0f, 3.0f / 65536.0f);
   EXPECT_EQ(r.a, 1.0f);
+}
+
+// Point-to-square form factor, the receiver at distance h below the centre of a parallel square of
+// half-size s (Howell's B-3).
+double squareFormFactor(double s, double h) {
+  const double a = s / h, ra = std::sqrt(1.0 + a * a);
+  return 4.0 * (2.0 * a / ra * std::atan(a / ra)) / (2.0 * kPi);
+}
+
+// emitters.mode=area_lights: a floor voxel under an emitting square facing down takes albedo x L x
+// F (Lambert's formula, exact), and the square's own voxels carry no emission: a voxel coplanar
+// with the emitter gets no light from it.
+TEST(LightVoxels, AreaLightLightsTheFloorByItsFormFactorAndItsVoxelsAreDark) {
+  Material emitter;
+  emitter.albedo = glm::vec3(0.5f);
+  emitter.emission = glm::vec3(3.0f, 2.0f, 1.0f);
+  // Centred over the middle of floor voxel (8, 4, 8).
+  const double c = 8.5 * kH;
+  std::vector<Triangle> square = quad(1, 0.78, {c - 0.25, c - 0.25}, {c + 0.25, c + 0.25});
+  for (Triangle& t : square) std::swap(t[1], t[2]);  // facing down
+  Scene scene = makeScene(square, unitGrid(kN), emitter);
+  Scene floor = floorScene(false);
+  floor.lights.clear();
+  scene.materials.push_back(floor.materials[0]);
+  floor.meshes[0].material = 1;
+  scene.meshes.push_back(floor.meshes[0]);
+  Settings settings;
+  settings.vct.emitters = EmitterLighting::area_lights;
+  const BufferSet b = runCpuUntil(scene, settings, "light_voxels");
+  const Buffer& radiance = b.at(BufferId::vct_light_voxels_radiance);
+  // The floor voxel's centre lies 0.78 - 4.5/16 below the square's centre.
+  const double f = squareFormFactor(0.25, 0.78 - 4.5 * kH);
+  const glm::vec4 r = voxelValue(radiance, {8, 4, 8});
+  ASSERT_GT(r.a, 0.0f);
+  const glm::vec3 albedo = floor.materials[0].albedo;
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(r[c] / r.a, albedo[c] * emitter.emission[c] * f, 1e-5) << c;
+  // The emitter's voxel (layer 12): opaque, and dark.
+  const glm::vec4 e = voxelValue(radiance, {8, 12, 8});
+  EXPECT_GT(e.a, 0.0f);
+  EXPECT_EQ(glm::vec3(e), glm::vec3(0.0f));
+}
+
+// More emissive triangles than area lights take: one line naming the scene and the setting.
+TEST(LightVoxels, AreaLightsRefuseMoreTrianglesThanTheyTake) {
+  Material emitter;
+  emitter.emission = glm::vec3(1.0f);
+  std::vector<Triangle> strips;
+  for (int k = 0; k < 33; ++k)
+    for (const Triangle& t : quad(1, 0.5, {k / 40.0, 0.0}, {(k + 0.5) / 40.0, 1.0}))
+      strips.push_back(t);
+  const Scene scene = makeScene(strips, unitGrid(kN), emitter);
+  Settings settings;
+  settings.vct.emitters = EmitterLighting::area_lights;
+  try {
+    runCpuUntil(scene, settings, "light_voxels");
+    FAIL() << "66 emissive triangles were taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("emitters.mode: area_lights takes at most 64"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(LightVoxels, NormalWeightedAttenuation) {

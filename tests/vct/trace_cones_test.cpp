@@ -30,7 +30,8 @@ struct Volumes {
   Volumes(Scene s, Settings st) : scene(std::move(s)), settings(st) {
     buffers = runCpuUntil(scene, settings, "mip");
     triangles = prepareVoxelTriangles(scene, scene.grid);
-    setup = prepareConeTrace(StageContext{vct(), scene, settings, triangles});
+    setup =
+        prepareConeTrace(StageContext{vct(), scene, settings, triangles}, settings.vct.emitters);
   }
   // trace_cones' terms at voxel-local p with normal n, for a non-glossy object.
   shared::PixelLight trace(glm::vec3 p, glm::vec3 n) const {
@@ -135,6 +136,7 @@ TEST(TraceCones, EmittingSquareMatchesTheFormFactor) {
   for (const auto& [set, bound] : bounds) {
     Settings settings;
     settings.vct.cones = set;
+    settings.vct.emitters = EmitterLighting::voxels;  // the square's light gathered by the cones
     const int n = 64;
     const Volumes v(
         makeScene(quad(1, top, {0.5 - s, 0.5 - s}, {0.5 + s, 0.5 + s}), unitGrid(n), emitter()),
@@ -144,12 +146,50 @@ TEST(TraceCones, EmittingSquareMatchesTheFormFactor) {
   }
 }
 
+// The same square as two triangle area lights (emitters.mode=area_lights): the direct term is
+// Lambert's formula, exact to float rounding, the shadow cone sees nothing, and the cones gather
+// nothing from the emitter's dark voxels. Tilting the receiver by 60 degrees clips the square at
+// its horizon: against a midpoint-rule integral over the square of cos(receiver) cos(emitter) /
+// (pi r^2).
+TEST(TraceCones, AreaLightIsLambertsFormulaAndItsVoxelsAreDark) {
+  const double s = 0.25, top = 0.75, bottom = 0.25;
+  Settings settings;
+  settings.vct.emitters = EmitterLighting::area_lights;
+  const int n = 64;
+  // Emitters are one-sided, like the path tracer's: the square's right-hand normal faces down.
+  std::vector<Triangle> square = quad(1, top, {0.5 - s, 0.5 - s}, {0.5 + s, 0.5 + s});
+  for (Triangle& t : square) std::swap(t[1], t[2]);
+  const Volumes v(makeScene(square, unitGrid(n), emitter()), settings);
+  ASSERT_EQ(v.setup.lights.size(), 2u);
+  const glm::vec3 p = glm::vec3(0.5f, float(bottom), 0.5f) * float(n);
+  const auto up = v.trace(p, glm::vec3(0, 1, 0));
+  EXPECT_NEAR(up.directDiffuse.x, squareFormFactor(s, top - bottom), 1e-6);
+  EXPECT_EQ(up.indirectDiffuse.x, 0.0f);
+  const double angle = 60.0 * kPi / 180.0;
+  const glm::dvec3 tilted(std::sin(angle), std::cos(angle), 0.0);
+  double numeric = 0.0;
+  const int k = 400;
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j) {
+      const glm::dvec3 q(0.5 - s + 2 * s * (i + 0.5) / k, top, 0.5 - s + 2 * s * (j + 0.5) / k);
+      const glm::dvec3 d = q - glm::dvec3(0.5, bottom, 0.5);
+      const double r2 = glm::dot(d, d), r = std::sqrt(r2);
+      const double cosReceiver = glm::dot(tilted, d) / r, cosEmitter = d.y / r;
+      if (cosReceiver > 0.0)
+        numeric += cosReceiver * cosEmitter / (kPi * r2) * (2 * s / k) * (2 * s / k);
+    }
+  const auto side = v.trace(p, glm::vec3(tilted));
+  EXPECT_NEAR(side.directDiffuse.x, numeric, 1e-4);
+  EXPECT_LT(side.directDiffuse.x, 0.6 * up.directDiffuse.x);  // the clip removed a part
+}
+
 // The receiver's light through a black wall spanning the grid at mid-height, `thickness` voxels
 // thick (parallel quads one voxel apart), as a fraction of what it gets without the wall. The
 // emitter is as in the form-factor test.
 double leakedFraction(int n, int thickness, MipMode mip) {
   Settings settings;
   settings.vct.mip = mip;
+  settings.vct.emitters = EmitterLighting::voxels;  // the light the cones gather leaks
   const double h = 1.0 / n;
   const Scene open = makeScene(quad(1, 0.75, {0.25, 0.25}, {0.75, 0.75}), unitGrid(n), emitter());
   Scene closed = open;

@@ -60,14 +60,6 @@ struct PathSample {
   vec3& term(LightTerm t) { return terms[size_t(t)]; }
 };
 
-// Next-event estimation at one vertex: the emissive triangles' sample by lobe, and the point, spot
-// and directional lights; `sum` is what the radiance adds.
-struct DirectLight {
-  vec3 sum{0.0f};
-  Lobes emitters;
-  vec3 lights{0.0f};
-};
-
 struct Emitter {
   vec3 p0, e1, e2, normal, emission;
   float area;
@@ -197,21 +189,25 @@ class Tracer {
               hit.geometry < scene_.meshes.size()
                   ? luminance(m.emission) / s_.emitterWeight * d2 / glm::dot(ng, -d)
                   : 0.0f;
-          addIndirect(m.emission, powerWeight(lastPdf, lightPdf));
+          const float weight = powerWeight(lastPdf, lightPdf);
+          if (depth == 1) {  // found from the first vertex: direct light
+            result += throughput * m.emission * weight;
+            sample.term(LightTerm::direct) += throughput * m.emission * weight;
+          } else {
+            addIndirect(m.emission, weight);
+          }
         }
       }
       if (bounces_ >= 0 && depth > bounces_) break;  // only the emission of the last hit counted
       const vec3 n = glm::dot(ng, d) < 0.0f ? ng : -ng;  // two-sided reflection
       const vec3 wo = -d;
       const vec3 origin = x + epsilon(x) * n;
-      const DirectLight direct = directLight(origin, n, wo, m, rng);
+      const vec3 direct = directLight(origin, n, wo, m, rng);
       if (depth == 0) {
-        result += throughput * direct.sum;
-        sample.term(LightTerm::direct) += direct.lights;
-        sample.term(LightTerm::indirect_diffuse) += direct.emitters.diffuse;
-        sample.term(LightTerm::indirect_specular) += direct.emitters.specular;
+        result += throughput * direct;
+        sample.term(LightTerm::direct) += direct;
       } else {
-        addIndirect(direct.sum);
+        addIndirect(direct);
       }
 
       // Continue by sampling the BSDF.
@@ -321,9 +317,8 @@ class Tracer {
 
   // Next-event estimation: one sample of the emissive triangles (MIS-weighted) plus every
   // point, spot and directional light.
-  DirectLight directLight(vec3 x, vec3 n, vec3 wo, const Shading& m, Sampler& rng) {
-    DirectLight out;
-    vec3& sum = out.sum;
+  vec3 directLight(vec3 x, vec3 n, vec3 wo, const Shading& m, Sampler& rng) {
+    vec3 sum(0.0f);
     const float pick = rng.next(), u1 = rng.next(), u2 = rng.next();
     if (!s_.emitters.empty()) {
       const float target = pick * s_.emitterWeight;
@@ -339,15 +334,11 @@ class Tracer {
       const float dist = std::sqrt(d2);
       toLight /= dist;
       const float cosLight = glm::dot(e.normal, -toLight);
-      const Lobes lobes = evalBsdf(m, n, wo, toLight);
-      const vec3 f = lobes.sum();
+      const vec3 f = evalBsdf(m, n, wo, toLight).sum();
       if (cosLight > 0.0f && maxComponent(f) > 0.0f && visible(x, toLight, dist * (1.0f - 1e-4f))) {
         const float lightPdf = luminance(e.emission) / s_.emitterWeight * d2 / cosLight;
         const float w = powerWeight(lightPdf, bsdfPdf(m, n, wo, toLight));
         sum += f * e.emission * glm::dot(n, toLight) * w / lightPdf;
-        const vec3 weight = e.emission * (glm::dot(n, toLight) * w / lightPdf);
-        out.emitters.diffuse = lobes.diffuse * weight;
-        out.emitters.specular = lobes.specular * weight;
       }
     }
     for (size_t li = 0; li < scene_.lights.size(); ++li) {
@@ -369,11 +360,9 @@ class Tracer {
       const vec3 f = evalBsdf(m, n, wo, wi).sum();
       if (maxComponent(f) <= 0.0f) continue;
       if (l.castsShadows && !visible(x, wi, dist)) continue;
-      const vec3 light = f * irradiance * glm::dot(n, wi);
-      sum += light;
-      out.lights += light;
+      sum += f * irradiance * glm::dot(n, wi);
     }
-    return out;
+    return sum;
   }
 
   const Scene& scene_;

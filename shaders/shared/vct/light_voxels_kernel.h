@@ -5,7 +5,7 @@
 // are read through FETCH(opacityAt|albedoAt|normalAt|emissionAt|lightAt) (glsl_cpp.h).
 #ifndef VOXGI_LIGHT_VOXELS_KERNEL_H
 #define VOXGI_LIGHT_VOXELS_KERNEL_H
-#include "../lighting.h"
+#include "../area_light.h"
 
 VOXGI_NAMESPACE_BEGIN
 
@@ -68,6 +68,20 @@ VOLUME_FN vec4 lightVoxel(VOLUMES_IN ivec3 v, LightVoxelsParams params) {
     LightData l = FETCH(lightAt)(i);
     vec3 toLight;
     float distance;
+    if (l.info.x == kLightTriangle) {
+      // pi L F, F the form factor (cosine included). A voxel whose normals cancel faces the
+      // triangle's centroid. The visibility ray stops 1.5 voxels short of the centroid, outside
+      // the triangle's own voxels.
+      precise vec3 middle =
+          (vec3(l.position) + vec3(l.direction) + vec3(l.falloff)) * (1.0f / 3.0f);
+      vec3 facing = n != vec3(0.0f) ? n : normalize3(middle - p);
+      float f = triangleFormFactor(l, p, facing, toLight, distance);
+      if (f <= 0.0f) continue;
+      float seen = voxelVisibility(VOLUMES p, facing, toLight, max(distance - 1.5f, 0.0f), params);
+      precise vec3 add = vec3(l.intensity) * (kPi * f * seen);
+      irradiance = irradiance + add;
+      continue;
+    }
     vec3 e = lightIrradiance(l, p, params.values.x, toLight, distance);
     if (e == vec3(0.0f)) continue;
     // A voxel whose normals cancel has no preferred side: it takes the light unattenuated.

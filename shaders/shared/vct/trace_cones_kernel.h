@@ -4,7 +4,7 @@
 #ifndef VOXGI_TRACE_CONES_KERNEL_H
 #define VOXGI_TRACE_CONES_KERNEL_H
 #include "cone_kernel.h"
-#include "../lighting.h"
+#include "../area_light.h"
 
 VOXGI_NAMESPACE_BEGIN
 
@@ -32,17 +32,35 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
     LightData l = FETCH(lightAt)(i);
     vec3 toLight;
     float distance;
-    vec3 e = lightIrradiance(l, p, params.shadow.w, toLight, distance);
-    if (e == vec3(0.0f)) continue;
-    float cosine = dot3(n, toLight);
-    if (cosine <= 0.0f) continue;
+    // What arrives unoccluded, cosine included: E cos for a point, spot or directional light,
+    // pi L F for a triangle (its form factor F), whose shadow cone is as wide as the triangle and
+    // stops short of its voxels.
+    vec3 unoccluded;
+    float cosine;
+    float tanHalf = params.shadow.x;
+    float shadowLength;
+    if (l.info.x == kLightTriangle) {
+      float f = triangleFormFactor(l, p, n, toLight, distance);
+      if (f <= 0.0f) continue;
+      cosine = max(dot3(n, toLight), 0.0f);
+      unoccluded = vec3(l.intensity) * (kPi * f);
+      tanHalf = min(l.direction.w / distance, params.shadow.x);
+      shadowLength = triangleShadowLength(distance, l.direction.w);
+    } else {
+      vec3 e = lightIrradiance(l, p, params.shadow.w, toLight, distance);
+      if (e == vec3(0.0f)) continue;
+      cosine = dot3(n, toLight);
+      if (cosine <= 0.0f) continue;
+      unoccluded = e * cosine;
+      shadowLength = distance;
+    }
     float visibility = 1.0f;
-    if (l.info.y == 1u)
-      visibility = 1.0f - marchCone(VOLUMES origin, toLight, cosine, params.shadow.x,
-                                    min(distance, maxDistance), shadowKind, params)
+    if (l.info.y == 1u && shadowLength > 0.0f)
+      visibility = 1.0f - marchCone(VOLUMES origin, toLight, cosine, tanHalf,
+                                    min(shadowLength, maxDistance), shadowKind, params)
                               .occlusion;
     minVisibility = min(minVisibility, visibility);
-    precise vec3 arriving = e * (cosine * visibility);
+    precise vec3 arriving = unoccluded * visibility;
     r.directDiffuse = r.directDiffuse + arriving * kInvPi;
     if (specular) {
       precise float rl = dot3(mirror, toLight);
