@@ -196,17 +196,20 @@ TEST(Cli, CompareReportsMetricsNoiseFloorAndAnErrorMap) {
 }
 
 TEST(Cli, PlanSaysWhatRunsAndWhy) {
+  // The box's light is two emissive triangles: area lights with a shadow cone each by default.
   const CommandResult r = voxgi("plan " + sourcePath("scenes/cornell_box.json"));
   ASSERT_EQ(r.code, 0) << r.output;
-  for (const char* line : {"in   bounce", "bounce.count=1", "in     emission volume",
-                           "out    specular cone       no glossy material",
-                           "out    shadow cones        no analytic lights"})
+  for (const char* line :
+       {"out  bounce", "bounce.count=0", "in     emission volume",
+        "2 emissive triangle(s) as area lights", "out    specular cone       no glossy material",
+        "in     shadow cones        2 of 2 light(s) cast shadows"})
     EXPECT_NE(r.output.find(line), std::string::npos) << line << "\n" << r.output;
-  const CommandResult off = voxgi("plan " + sourcePath("scenes/cornell_box.json") +
-                                  " --set bounce.count=0 --set ao.mode=on");
-  EXPECT_NE(off.output.find("out  bounce"), std::string::npos) << off.output;
-  EXPECT_NE(off.output.find("in     ambient occlusion   ao.mode=on"), std::string::npos)
-      << off.output;
+  const CommandResult other = voxgi("plan " + sourcePath("scenes/cornell_box.json") +
+                                    " --set bounce.count=1 --set ao.mode=on"
+                                    " --set emitters.mode=voxels");
+  for (const char* line : {"in   bounce", "bounce.count=1", "in     ambient occlusion   ao.mode=on",
+                           "out    shadow cones        no analytic or area lights"})
+    EXPECT_NE(other.output.find(line), std::string::npos) << line << "\n" << other.output;
 }
 
 TEST(Cli, RenderHelpListsEveryParameterWithItsDefault) {

@@ -31,10 +31,15 @@ TEST(SceneLoad, CornellBox) {
   const Scene s = loadScene(sourcePath("scenes/cornell_box.json"));
   EXPECT_EQ(s.triangleCount(), 32u);
   EXPECT_TRUE(vct().plan(s, Settings{}).on(Effect::emission));
-  EXPECT_EQ(s.settings, std::vector<std::string>{"bounce.count=1"});
-  EXPECT_EQ(resolveSettings(vct(), s.settings, s.file, "default", {}).vct.bounceCount, 1);
-  EXPECT_EQ(
-      resolveSettings(vct(), s.settings, s.file, "default", {"bounce.count=0"}).vct.bounceCount, 0);
+  EXPECT_TRUE(s.settings.empty());
+  // A scene's settings come before --set (the LPV box asks for 16 propagation steps).
+  const Scene lpvBox = loadScene(sourcePath("scenes/cornell_box_lpv.json"));
+  const Technique& lpv = findTechnique("lpv");
+  EXPECT_EQ(lpvBox.settings, std::vector<std::string>{"propagate.steps=16"});
+  EXPECT_EQ(resolveSettings(lpv, lpvBox.settings, lpvBox.file, "default", {}).lpv.steps, 16);
+  EXPECT_EQ(resolveSettings(lpv, lpvBox.settings, lpvBox.file, "default", {"propagate.steps=3"})
+                .lpv.steps,
+            3);
   EXPECT_EQ(s.grid.resolution, 64);
   bool red = false;
   for (const Material& m : s.materials)

@@ -45,9 +45,18 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
 
   int shadowLights = 0;
   for (const Light& l : scene.lights) shadowLights += l.castsShadows ? 1 : 0;
+  // Under emitters.mode=area_lights every emissive triangle is a light with a shadow cone.
+  size_t areaLights = 0;
+  if (s.emitters == EmitterLighting::area_lights)
+    for (const Mesh& m : scene.meshes)
+      if (scene.materials[m.material].emissive()) areaLights += m.triangles.size();
   std::ostringstream lights;
-  lights << scene.lights.size() << " analytic light(s)"
-         << (emitters.names.empty() ? "" : " and emissive surfaces") << " -> radiance per voxel";
+  lights << scene.lights.size() << " analytic light(s)";
+  if (areaLights > 0)
+    lights << " and " << areaLights << " emissive triangle(s) as area lights (emitters.mode)";
+  else if (!emitters.names.empty())
+    lights << " and emissive surfaces";
+  lights << " -> radiance per voxel";
   p.stage(StageId::vct_light_voxels, true, lights.str());
   p.stage(StageId::vct_mip, true, settingValue(settings, "mip.mode") + " pyramid (mip.mode)");
   p.set(Effect::isotropic, s.mip == MipMode::isotropic);
@@ -67,12 +76,12 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
           << ")";
   p.note("diffuse cones", true, diffuse.str());
   std::ostringstream shadow;
-  if (scene.lights.empty())
-    shadow << "no analytic lights";
+  if (scene.lights.empty() && areaLights == 0)
+    shadow << "no analytic or area lights";
   else
-    shadow << shadowLights << " of " << scene.lights.size()
+    shadow << shadowLights + int(areaLights) << " of " << scene.lights.size() + areaLights
            << " light(s) cast shadows: one cone each";
-  p.note("shadow cones", shadowLights > 0, shadow.str());
+  p.note("shadow cones", shadowLights > 0 || areaLights > 0, shadow.str());
   const MeshesWith glossy = meshesWith(scene, [](const Material& m) { return m.glossy(); });
   p.effect("specular cone", Effect::specular, p.full || glossy.inView,
            glossy.inView          ? "glossy material " + glossy.names + " in view"
