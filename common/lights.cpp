@@ -28,6 +28,13 @@ std::vector<shared::LightData> voxelLights(const Scene& scene) {
   return out;
 }
 
+size_t emissiveTriangleCount(const Scene& scene) {
+  size_t count = 0;
+  for (const Mesh& m : scene.meshes)
+    if (scene.materials[m.material].emissive()) count += m.triangles.size();
+  return count;
+}
+
 std::vector<shared::LightData> areaLights(const Scene& scene) {
   std::vector<shared::LightData> out;
   for (const Mesh& mesh : scene.meshes) {

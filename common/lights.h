@@ -14,6 +14,10 @@ std::vector<shared::LightData> voxelLights(const Scene& scene);
 // The most emissive triangles emitters.mode=area_lights takes: each costs a shadow cone per pixel.
 constexpr size_t kMaxAreaLights = 64;
 
+// The triangles of the scene's meshes with an emissive material: its area lights under
+// emitters.mode=area_lights (a degenerate one counted too; areaLights leaves it out).
+size_t emissiveTriangleCount(const Scene& scene);
+
 // Every emissive triangle of the scene's meshes as an area light (shared::kLightTriangle);
 // degenerate ones are left out. Throws InputError naming the scene and emitters.mode past
 // kMaxAreaLights.

@@ -137,8 +137,9 @@ int runBenchSvo(const BenchSvoOptions& o) {
     for (const int threads : o.threads) {
       tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
       svo::SampleSet set;
-      const double samplesSeconds =
-          medianSeconds(o.repeats, [&] { set = svo::prepareSamples(scene, depth, 4.0, 1); });
+      const double samplesSeconds = medianSeconds(o.repeats, [&] {
+        set = svo::prepareSamples(scene, depth, 4.0, 1, EmitterLighting::voxels);
+      });
       std::vector<double> structure, sums;
       cpu::svo::Octree octree;
       for (int r = 0; r < o.repeats; ++r) {
@@ -175,7 +176,7 @@ int runBenchSvo(const BenchSvoOptions& o) {
            {"octree_bytes", octreeBytes(octree)}});
     }
     if (context) {  // the GPU's build: upload, atomics, read-back in the canonical form
-      const svo::SampleSet set = svo::prepareSamples(scene, depth, 4.0, 1);
+      const svo::SampleSet set = svo::prepareSamples(scene, depth, 4.0, 1, EmitterLighting::voxels);
       const double gpuBuild = medianSeconds(o.repeats, [&] {
         gpu::svo::buildOctree(*context, set.samples, depth, set.weightScale, cloudFile);
       });

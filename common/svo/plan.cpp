@@ -1,6 +1,7 @@
 // The sparse voxel octree's effect planner (docs/effect-plan.md).
 #include <sstream>
 
+#include "common/lights.h"
 #include "common/error.h"
 #include "common/svo/tree_depth.h"
 #include "common/technique.h"
@@ -44,9 +45,12 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
           << " points per leaf face (svo.mesh_density)";
   p.stage(StageId::svo_build_svo, true, build.str());
   std::ostringstream frames;
-  frames << (scene.lights.empty() ? "no analytic lights"
-                                  : std::to_string(scene.lights.size()) + " analytic light(s)")
-         << " injected with " << settingValue(settings, "voxel_shadow.mode") << " voxel shadows; "
+  const size_t areaLights =
+      settings.vct.emitters == EmitterLighting::area_lights ? emissiveTriangleCount(scene) : 0;
+  frames << scene.lights.size() << " analytic light(s)";
+  if (areaLights > 0)
+    frames << " and " << areaLights << " emissive triangle(s) as area lights (emitters.mode)";
+  frames << " injected with " << settingValue(settings, "voxel_shadow.mode") << " voxel shadows; "
          << s.frames << " frame(s) (svo.frames)"
          << (s.clearEachFrame == SvoToggle::on ? " each gathering from the direct light alone"
                                                : ", one more bounce each");

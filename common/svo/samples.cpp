@@ -45,7 +45,8 @@ void appendCloud(const Scene& scene, const PointCloud& cloud, double leaf,
 
 }  // namespace
 
-SampleSet prepareSamples(const Scene& scene, int depth, double meshDensity, uint64_t seed) {
+SampleSet prepareSamples(const Scene& scene, int depth, double meshDensity, uint64_t seed,
+                         EmitterLighting emitters) {
   const double leaf = scene.grid.size / double(1 << depth);
   SampleSet set;
   // Points per material of the meshes, decided before anything is allocated.
@@ -69,7 +70,10 @@ SampleSet prepareSamples(const Scene& scene, int depth, double meshDensity, uint
     sampling.points = n;
     sampling.material = int(m);
     sampling.seed = mix64(seed ^ mix64(m));
+    const size_t first = set.samples.size();
     appendCloud(scene, sampleSurfaces(scene, sampling), leaf, set.samples);
+    if (emitters == EmitterLighting::area_lights)
+      for (size_t i = first; i < set.samples.size(); ++i) set.samples[i].emission = glm::vec4(0.0f);
   }
 
   // Emission as a fraction of the largest emission a sample carries.

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/scene.h"
+#include "common/settings.h"
 #include "shaders/shared/svo/splat_kernel.h"
 
 namespace voxgi::svo {
@@ -26,7 +27,10 @@ struct SampleSet {
 // points per leaf face of area (svo.mesh_density), per material, from `seed`. A point's RoI edge
 // is the side of a square of its area (pi r^2 / 2, common/point_neighbours.h), in leaves, at most
 // 1; its opacity density is the reciprocal, so a surface's samples add opacity 1 per leaf face.
+// Under emitters.mode=area_lights the meshes' emissive triangles are area lights, so the points
+// sampled on them carry no emission; a point cloud's emission stays.
 // Throws InputError naming svo.mesh_density when the samples would not fit in memory.
-SampleSet prepareSamples(const Scene& scene, int depth, double meshDensity, uint64_t seed);
+SampleSet prepareSamples(const Scene& scene, int depth, double meshDensity, uint64_t seed,
+                         EmitterLighting emitters);
 
 }  // namespace voxgi::svo

@@ -29,8 +29,8 @@ const std::vector<Param>& params() {
                     "B-spline over 4^3 leaves (smoother, 8 trilinear samples)"),
     };
     // Voxel cone tracing's keys that the octree's stages read.
-    static const char* const kShared[] = {"cones.", "shadow.", "specular.", "light.",
-                                          "voxel_shadow."};
+    static const char* const kShared[] = {"emitters.", "cones.", "shadow.",
+                                          "specular.", "light.", "voxel_shadow."};
     for (const Param& p : vct::params())
       if (std::any_of(std::begin(kShared), std::end(kShared),
                       [&](const char* prefix) { return p.key.rfind(prefix, 0) == 0; }))

@@ -114,7 +114,7 @@ FirstStep firstStep(const Settings& settings) {
 }
 
 ConeTraceSetup treeConeTrace(const StageContext& ctx, int depth) {
-  ConeTraceSetup s = prepareConeTrace(ctx, EmitterLighting::voxels);
+  ConeTraceSetup s = prepareConeTrace(ctx);
   treeParams(s.params, depth);
   s.cones.clear();  // no diffuse cones: the leaves hold the diffuse light
   s.params.grid.w = 0;

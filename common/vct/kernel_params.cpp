@@ -56,8 +56,9 @@ std::vector<shared::ObjectData> objectData(const Scene& scene, bool everyObject)
   return out;
 }
 
-// The analytic lights, then the emissive triangles as area lights.
-std::vector<shared::LightData> lightsFor(const Scene& scene, EmitterLighting emitters) {
+}  // namespace
+
+std::vector<shared::LightData> sceneLights(const Scene& scene, EmitterLighting emitters) {
   std::vector<shared::LightData> lights = voxelLights(scene);
   if (emitters == EmitterLighting::area_lights) {
     const std::vector<shared::LightData> area = areaLights(scene);
@@ -65,8 +66,6 @@ std::vector<shared::LightData> lightsFor(const Scene& scene, EmitterLighting emi
   }
   return lights;
 }
-
-}  // namespace
 
 shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount,
                                             bool emission) {
@@ -80,14 +79,14 @@ shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCo
 
 LightVoxelsSetup prepareLightVoxels(const StageContext& ctx, bool emissionVolume) {
   const EmitterLighting emitters = ctx.settings.vct.emitters;
-  LightVoxelsSetup s{lightsFor(ctx.scene, emitters), {}};
+  LightVoxelsSetup s{sceneLights(ctx.scene, emitters), {}};
   s.params = lightVoxelsParams(ctx, int(s.lights.size()),
                                emissionVolume && emitters == EmitterLighting::voxels);
   return s;
 }
 
-ConeTraceSetup prepareConeTrace(const StageContext& ctx, EmitterLighting emitters) {
-  ConeTraceSetup s{lightsFor(ctx.scene, emitters),
+ConeTraceSetup prepareConeTrace(const StageContext& ctx) {
+  ConeTraceSetup s{sceneLights(ctx.scene, ctx.settings.vct.emitters),
                    coneData(diffuseCones(ctx.settings.vct.cones)),
                    objectData(ctx.scene, ctx.plan.full),
                    {}};

@@ -8,6 +8,9 @@
 
 namespace voxgi {
 
+// The scene's analytic lights, then under emitters.mode=area_lights its emissive triangles.
+std::vector<shared::LightData> sceneLights(const Scene& scene, EmitterLighting emitters);
+
 // `emission`: the voxels' emission is added to their radiance.
 shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount, bool emission);
 
@@ -30,9 +33,7 @@ struct ConeTraceSetup {
   std::vector<shared::ObjectData> objects;
   shared::ConeTraceParams params;
 };
-// `emitters`: vct's emitters.mode; the octree keeps its emitters in the leaves (voxels), because
-// its point clouds' emitters have no triangles.
-ConeTraceSetup prepareConeTrace(const StageContext& ctx, EmitterLighting emitters);
+ConeTraceSetup prepareConeTrace(const StageContext& ctx);
 // The same for the bounce stage: the diffuse cone set only (no lights, objects or ambient
 // occlusion).
 ConeTraceSetup prepareBounce(const StageContext& ctx);

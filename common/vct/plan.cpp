@@ -1,6 +1,7 @@
 // Voxel cone tracing's effect planner (docs/effect-plan.md).
 #include <sstream>
 
+#include "common/lights.h"
 #include "common/technique.h"
 #include "common/vct/cone_sets.h"
 
@@ -46,10 +47,8 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   int shadowLights = 0;
   for (const Light& l : scene.lights) shadowLights += l.castsShadows ? 1 : 0;
   // Under emitters.mode=area_lights every emissive triangle is a light with a shadow cone.
-  size_t areaLights = 0;
-  if (s.emitters == EmitterLighting::area_lights)
-    for (const Mesh& m : scene.meshes)
-      if (scene.materials[m.material].emissive()) areaLights += m.triangles.size();
+  const size_t areaLights =
+      s.emitters == EmitterLighting::area_lights ? emissiveTriangleCount(scene) : 0;
   std::ostringstream lights;
   lights << scene.lights.size() << " analytic light(s)";
   if (areaLights > 0)

@@ -11,8 +11,8 @@ namespace voxgi::cpu {
 void svo::build_svo(const StageContext& ctx, BufferSet& buffers) {
   const int depth = voxgi::svo::treeDepth(ctx.scene);
   const SvoSettings& s = ctx.settings.svo;
-  const voxgi::svo::SampleSet set =
-      voxgi::svo::prepareSamples(ctx.scene, depth, s.meshDensity, uint64_t(s.seed));
+  const voxgi::svo::SampleSet set = voxgi::svo::prepareSamples(
+      ctx.scene, depth, s.meshDensity, uint64_t(s.seed), ctx.settings.vct.emitters);
   SampleHomes homes;
   Octree o = buildOctree(set.samples, depth, ctx.scene.file, &homes);
   Words sums = accumulateLeaves(o, set.samples, set.weightScale, ctx.scene.file, &homes);

@@ -1,7 +1,7 @@
 // CPU propagate_svo stage: the leaves' injected light, then svo.frames progressive bounces
 // (cpu/svo/leaf_light.h).
-#include "common/lights.h"
 #include "common/svo/stage_inputs.h"
+#include "common/vct/kernel_params.h"
 #include "common/svo/tree_depth.h"
 #include "cpu/stages.h"
 #include "cpu/svo/leaf_light.h"
@@ -14,7 +14,9 @@ void svo::propagate_svo(const StageContext& ctx, BufferSet& buffers) {
   const SvoSettings& s = ctx.settings.svo;
   const Octree o = octreeFromWords(treeWords(buffers, false), depth);
   const Leaves leaves = treeLeaves(buffers);
-  const std::vector<shared::LightData> lights = voxelLights(ctx.scene);
+  // Under emitters.mode=area_lights the meshes' emitters are lights and their samples carry no
+  // emission (common/svo/samples.h); a point cloud's emission stays in the leaves.
+  const std::vector<shared::LightData> lights = sceneLights(ctx.scene, ctx.settings.vct.emitters);
   const LeafRadiance direct =
       injectLeaves(o, leaves, lights, lightVoxelsParams(ctx, int(lights.size()), true));
   const ConeTraceSetup bounce = treeBounce(ctx, depth);

@@ -14,7 +14,7 @@ void vct::trace_cones(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, StageId::vct_trace_cones);
   const Scene& scene = ctx.scene;
   const int n = scene.grid.resolution;
-  const ConeTraceSetup setup = prepareConeTrace(ctx, ctx.settings.vct.emitters);
+  const ConeTraceSetup setup = prepareConeTrace(ctx);
   const RadianceBuffers lit = finalRadiance(ctx);
   const ConeVolumes volumes(buffers.at(lit.radiance), buffers.at(lit.pyramid), ctx.settings.vct.mip,
                             n, setup.lights, setup.cones);

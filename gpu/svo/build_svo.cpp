@@ -13,8 +13,8 @@ void svo::build_svo(GlContext& context, const StageContext& ctx, BufferSet& buff
   beginStage(context, ctx, StageId::svo_build_svo);
   const int depth = voxgi::svo::treeDepth(ctx.scene);
   const SvoSettings& s = ctx.settings.svo;
-  const voxgi::svo::SampleSet set =
-      voxgi::svo::prepareSamples(ctx.scene, depth, s.meshDensity, uint64_t(s.seed));
+  const voxgi::svo::SampleSet set = voxgi::svo::prepareSamples(
+      ctx.scene, depth, s.meshDensity, uint64_t(s.seed), ctx.settings.vct.emitters);
   voxgi::svo::putTree(buffers,
                       buildOctree(context, set.samples, depth, set.weightScale, ctx.scene.file),
                       set.weightScale, set.emissionScale);

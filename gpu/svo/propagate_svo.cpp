@@ -2,8 +2,8 @@
 // (gpu/svo/leaf_light.h), frame by frame as cpu/svo/leaf_light.cpp's propagateFrames. The leaf
 // sums are decoded on the host (common/svo/stage_inputs.h: exact power-of-two scaling, the same
 // floats the CPU decodes).
-#include "common/lights.h"
 #include "common/svo/stage_inputs.h"
+#include "common/vct/kernel_params.h"
 #include "common/svo/tree_depth.h"
 #include "gpu/stages.h"
 #include "gpu/svo/leaf_light.h"
@@ -19,7 +19,9 @@ void svo::propagate_svo(GlContext& context, const StageContext& ctx, BufferSet& 
   const OctreeWords words = treeWords(buffers, false);
   const Tree tree{words, depth};
   const Leaves leaves = treeLeaves(buffers);
-  const std::vector<shared::LightData> lights = voxelLights(ctx.scene);
+  // Under emitters.mode=area_lights the meshes' emitters are lights and their samples carry no
+  // emission (common/svo/samples.h); a point cloud's emission stays in the leaves.
+  const std::vector<shared::LightData> lights = sceneLights(ctx.scene, ctx.settings.vct.emitters);
   const LeafRadiance direct =
       injectLeaves(context, tree, leaves, lights, lightVoxelsParams(ctx, int(lights.size()), true));
   const ConeTraceSetup bounce = treeBounce(ctx, depth);

@@ -17,7 +17,7 @@ void vct::trace_cones(GlContext& context, const StageContext& ctx, BufferSet& bu
   const int n = scene.grid.resolution;
   const int faces = pyramidFaces(ctx.settings.vct.mip);
   const RadianceBuffers lit = finalRadiance(ctx);
-  const ConeTraceSetup setup = prepareConeTrace(ctx, ctx.settings.vct.emitters);
+  const ConeTraceSetup setup = prepareConeTrace(ctx);
   const auto& [lights, cones, objects, params] = setup;
 
   const Buffer& position = buffers.at(BufferId::common_gbuffer_pixel_position);

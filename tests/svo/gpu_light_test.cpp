@@ -54,7 +54,7 @@ TEST_P(GpuSvoLight, InjectionMipAndGatherAgreeWithTheCpu) {
   light.position = {278.0, 400.0, 280.0};
   light.intensity = glm::vec3(4e4f);
   scene.lights.push_back(light);
-  const svo::SampleSet set = svo::prepareSamples(scene, kDepth, 2.0, 1);
+  const svo::SampleSet set = svo::prepareSamples(scene, kDepth, 2.0, 1, EmitterLighting::voxels);
   const cpu::svo::Octree o = cpu::svo::buildOctree(set.samples, kDepth);
   const Words sums = cpu::svo::accumulateLeaves(o, set.samples, set.weightScale, scene.file);
   const cpu::svo::Leaves leaves =

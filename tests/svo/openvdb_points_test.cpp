@@ -42,7 +42,7 @@ TEST(SvoOpenVdb, LeafColoursEqualOpenVdbPointRasterisation) {
   }
   scene.pointClouds.push_back(cloud);
 
-  const svo::SampleSet set = svo::prepareSamples(scene, kDepth, 4.0, 1);
+  const svo::SampleSet set = svo::prepareSamples(scene, kDepth, 4.0, 1, EmitterLighting::voxels);
   ASSERT_EQ(set.samples.size(), cloud.size());
   for (const auto& s : set.samples) ASSERT_EQ(s.position.w, 1.0f);
   const cpu::svo::Octree o = cpu::svo::buildOctree(set.samples, kDepth);

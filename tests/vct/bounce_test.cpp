@@ -98,7 +98,8 @@ TEST(Bounce, OctreeClosedBoxApproachesRadiosity) {
   float l[4];
   for (int frames = 0; frames < 4; ++frames) {
     const Settings settings =
-        resolveSettings(svo, {}, scene.file, "default", {"svo.frames=" + std::to_string(frames)});
+        resolveSettings(svo, {}, scene.file, "default",
+                        {"svo.frames=" + std::to_string(frames), "emitters.mode=voxels"});
     const BufferSet b = runCpuUntil(svo, scene, settings, "propagate_svo");
     const cpu::svo::Octree o = cpu::svo::octreeFromWords(svo::treeWords(b, false), depth);
     const glm::uvec3 leaf(kN / 2, 2, kN / 2);

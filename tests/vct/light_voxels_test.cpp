@@ -152,8 +152,9 @@ TEST(LightVoxels, AreaLightLightsTheFloorByItsFormFactorAndItsVoxelsAreDark) {
   emitter.albedo = glm::vec3(0.5f);
   emitter.emission = glm::vec3(3.0f, 2.0f, 1.0f);
   // Centred over the middle of floor voxel (8, 4, 8).
-  const double c = 8.5 * kH;
-  std::vector<Triangle> square = quad(1, 0.78, {c - 0.25, c - 0.25}, {c + 0.25, c + 0.25});
+  const double centre = 8.5 * kH;
+  std::vector<Triangle> square =
+      quad(1, 0.78, {centre - 0.25, centre - 0.25}, {centre + 0.25, centre + 0.25});
   for (Triangle& t : square) std::swap(t[1], t[2]);  // facing down
   Scene scene = makeScene(square, unitGrid(kN), emitter);
   Scene floor = floorScene(false);

@@ -30,8 +30,7 @@ struct Volumes {
   Volumes(Scene s, Settings st) : scene(std::move(s)), settings(st) {
     buffers = runCpuUntil(scene, settings, "mip");
     triangles = prepareVoxelTriangles(scene, scene.grid);
-    setup =
-        prepareConeTrace(StageContext{vct(), scene, settings, triangles}, settings.vct.emitters);
+    setup = prepareConeTrace(StageContext{vct(), scene, settings, triangles});
   }
   // trace_cones' terms at voxel-local p with normal n, for a non-glossy object.
   shared::PixelLight trace(glm::vec3 p, glm::vec3 n) const {
