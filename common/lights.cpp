@@ -35,6 +35,12 @@ size_t emissiveTriangleCount(const Scene& scene) {
   return count;
 }
 
+EmitterLighting emittersFor(const Scene& scene, EmitterLighting setting) {
+  if (setting != EmitterLighting::automatic) return setting;
+  return emissiveTriangleCount(scene) <= kMaxAreaLights ? EmitterLighting::area_lights
+                                                        : EmitterLighting::voxels;
+}
+
 std::vector<shared::LightData> areaLights(const Scene& scene) {
   std::vector<shared::LightData> out;
   for (const Mesh& mesh : scene.meshes) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "common/scene.h"
+#include "common/settings.h"
 #include "shaders/shared/lighting.h"
 
 namespace voxgi {
@@ -17,6 +18,10 @@ constexpr size_t kMaxAreaLights = 64;
 // The triangles of the scene's meshes with an emissive material: its area lights under
 // emitters.mode=area_lights (a degenerate one counted too; areaLights leaves it out).
 size_t emissiveTriangleCount(const Scene& scene);
+
+// What emitters.mode `setting` means for `scene`: voxels or area_lights (auto: area lights up to
+// kMaxAreaLights emissive triangles, each costing a shadow cone per pixel, else voxels).
+EmitterLighting emittersFor(const Scene& scene, EmitterLighting setting);
 
 // Every emissive triangle of the scene's meshes as an area light (shared::kLightTriangle);
 // degenerate ones are left out. Throws InputError naming the scene and emitters.mode past

@@ -46,7 +46,9 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   p.stage(StageId::svo_build_svo, true, build.str());
   std::ostringstream frames;
   const size_t areaLights =
-      settings.vct.emitters == EmitterLighting::area_lights ? emissiveTriangleCount(scene) : 0;
+      emittersFor(scene, settings.vct.emitters) == EmitterLighting::area_lights
+          ? emissiveTriangleCount(scene)
+          : 0;
   frames << scene.lights.size() << " analytic light(s)";
   if (areaLights > 0)
     frames << " and " << areaLights << " emissive triangle(s) as area lights (emitters.mode)";

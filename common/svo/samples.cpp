@@ -11,6 +11,7 @@
 #include "common/error.h"
 #include "common/memory.h"
 #include "common/parallel.h"
+#include "common/lights.h"
 #include "common/surface_sampling.h"
 
 namespace voxgi::svo {
@@ -72,7 +73,7 @@ SampleSet prepareSamples(const Scene& scene, int depth, double meshDensity, uint
     sampling.seed = mix64(seed ^ mix64(m));
     const size_t first = set.samples.size();
     appendCloud(scene, sampleSurfaces(scene, sampling), leaf, set.samples);
-    if (emitters == EmitterLighting::area_lights)
+    if (emittersFor(scene, emitters) == EmitterLighting::area_lights)
       for (size_t i = first; i < set.samples.size(); ++i) set.samples[i].emission = glm::vec4(0.0f);
   }
 

@@ -60,7 +60,7 @@ std::vector<shared::ObjectData> objectData(const Scene& scene, bool everyObject)
 
 std::vector<shared::LightData> sceneLights(const Scene& scene, EmitterLighting emitters) {
   std::vector<shared::LightData> lights = voxelLights(scene);
-  if (emitters == EmitterLighting::area_lights) {
+  if (emittersFor(scene, emitters) == EmitterLighting::area_lights) {
     const std::vector<shared::LightData> area = areaLights(scene);
     lights.insert(lights.end(), area.begin(), area.end());
   }
@@ -78,7 +78,7 @@ shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCo
 }
 
 LightVoxelsSetup prepareLightVoxels(const StageContext& ctx, bool emissionVolume) {
-  const EmitterLighting emitters = ctx.settings.vct.emitters;
+  const EmitterLighting emitters = emittersFor(ctx.scene, ctx.settings.vct.emitters);
   LightVoxelsSetup s{sceneLights(ctx.scene, emitters), {}};
   s.params = lightVoxelsParams(ctx, int(s.lights.size()),
                                emissionVolume && emitters == EmitterLighting::voxels);

@@ -47,14 +47,19 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   int shadowLights = 0;
   for (const Light& l : scene.lights) shadowLights += l.castsShadows ? 1 : 0;
   // Under emitters.mode=area_lights every emissive triangle is a light with a shadow cone.
-  const size_t areaLights =
-      s.emitters == EmitterLighting::area_lights ? emissiveTriangleCount(scene) : 0;
+  const size_t areaLights = emittersFor(scene, s.emitters) == EmitterLighting::area_lights
+                                ? emissiveTriangleCount(scene)
+                                : 0;
   std::ostringstream lights;
   lights << scene.lights.size() << " analytic light(s)";
   if (areaLights > 0)
     lights << " and " << areaLights << " emissive triangle(s) as area lights (emitters.mode)";
   else if (!emitters.names.empty())
-    lights << " and emissive surfaces";
+    lights << " and emissive surfaces"
+           << (s.emitters == EmitterLighting::automatic
+                   ? " (emitters.mode=auto: more than " + std::to_string(kMaxAreaLights) +
+                         " emissive triangles, in the voxels)"
+                   : "");
   lights << " -> radiance per voxel";
   p.stage(StageId::vct_light_voxels, true, lights.str());
   p.stage(StageId::vct_mip, true, settingValue(settings, "mip.mode") + " pyramid (mip.mode)");

@@ -13,12 +13,13 @@ enum class ShadowFalloff { plain, kahl2019 };    // kahl2019: [Kahl 2019, §5.4.
 enum class SpecularBrdf { phong, light_angle };  // light_angle: [Kahl 2019, eq. 5.6]
 enum class AmbientOcclusion { off, on };         // [Villegas 2017, §4.2]
 // voxels: emission in the voxels, gathered by the cones ([Villegas 2017, §2.3]); area_lights: each
-// emissive triangle an area light (shaders/shared/area_light.h)
-enum class EmitterLighting { voxels, area_lights };
+// emissive triangle an area light (shaders/shared/area_light.h); automatic ("auto"): area lights
+// up to kMaxAreaLights emissive triangles, else voxels (common/lights.h, emittersFor)
+enum class EmitterLighting { voxels, area_lights, automatic };
 
 struct VctSettings {
   // light_voxels
-  EmitterLighting emitters = EmitterLighting::area_lights;
+  EmitterLighting emitters = EmitterLighting::automatic;
   LightAttenuation attenuation = LightAttenuation::cosine;
   VoxelShadow voxelShadow = VoxelShadow::hard;
   float voxelShadowKappa = 1.0f;   // soft shadows: occlusion per colliding voxel, times 1/t

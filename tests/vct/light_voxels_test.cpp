@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
+#include "common/lights.h"
 #include "shaders/shared/lighting.h"
 #include "tests/test_scenes.h"
 
@@ -179,8 +180,9 @@ TEST(LightVoxels, AreaLightLightsTheFloorByItsFormFactorAndItsVoxelsAreDark) {
   EXPECT_EQ(glm::vec3(e), glm::vec3(0.0f));
 }
 
-// More emissive triangles than area lights take: one line naming the scene and the setting.
-TEST(LightVoxels, AreaLightsRefuseMoreTrianglesThanTheyTake) {
+// More emissive triangles than area lights take: asked for explicitly, one line naming the scene
+// and the setting; under the default (auto), their emission goes into the voxels.
+TEST(LightVoxels, AreaLightsRefuseMoreTrianglesThanTheyTakeAndAutoKeepsThemInTheVoxels) {
   Material emitter;
   emitter.emission = glm::vec3(1.0f);
   std::vector<Triangle> strips;
@@ -198,6 +200,10 @@ TEST(LightVoxels, AreaLightsRefuseMoreTrianglesThanTheyTake) {
               std::string::npos)
         << e.what();
   }
+  EXPECT_EQ(emittersFor(scene, EmitterLighting::automatic), EmitterLighting::voxels);
+  const BufferSet b = runCpuUntil(scene, Settings{}, "light_voxels");
+  // A voxel of the strips' plane (layer 8) holds their emission.
+  EXPECT_GT(voxelValue(b.at(BufferId::vct_light_voxels_radiance), {0, 8, 8}).r, 0.0f);
 }
 
 TEST(LightVoxels, NormalWeightedAttenuation) {
