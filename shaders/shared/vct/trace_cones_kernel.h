@@ -32,10 +32,12 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
     LightData l = FETCH(lightAt)(i);
     vec3 toLight;
     float distance;
-    // What arrives unoccluded, cosine included: E cos for a point, spot or directional light,
-    // pi L F for a triangle (its form factor F), whose shadow cone is as wide as the triangle and
-    // stops short of its voxels.
-    vec3 unoccluded;
+    // What arrives is radiance x weight x visibility: a point, spot or directional light's
+    // irradiance E x cos, or a triangle's radiance L x pi F (its form factor, the cosine
+    // included), whose shadow cone is as wide as the triangle (at most shadow.aperture) and stops
+    // short of its voxels.
+    vec3 radiance;
+    float weight;
     float cosine;
     float tanHalf = params.shadow.x;
     float shadowLength;
@@ -43,15 +45,16 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
       float f = triangleFormFactor(l, p, n, toLight, distance);
       if (f <= 0.0f) continue;
       cosine = max(dot3(n, toLight), 0.0f);
-      unoccluded = vec3(l.intensity) * (kPi * f);
+      radiance = vec3(l.intensity);
+      weight = kPi * f;
       tanHalf = min(l.direction.w / distance, params.shadow.x);
       shadowLength = triangleShadowLength(distance, l.direction.w);
     } else {
-      vec3 e = lightIrradiance(l, p, params.shadow.w, toLight, distance);
-      if (e == vec3(0.0f)) continue;
+      radiance = lightIrradiance(l, p, params.shadow.w, toLight, distance);
+      if (radiance == vec3(0.0f)) continue;
       cosine = dot3(n, toLight);
       if (cosine <= 0.0f) continue;
-      unoccluded = e * cosine;
+      weight = cosine;
       shadowLength = distance;
     }
     float visibility = 1.0f;
@@ -60,7 +63,7 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
                                     min(shadowLength, maxDistance), shadowKind, params)
                               .occlusion;
     minVisibility = min(minVisibility, visibility);
-    precise vec3 arriving = unoccluded * visibility;
+    precise vec3 arriving = radiance * (weight * visibility);
     r.directDiffuse = r.directDiffuse + arriving * kInvPi;
     if (specular) {
       precise float rl = dot3(mirror, toLight);
