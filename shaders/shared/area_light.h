@@ -96,7 +96,7 @@ VOXGI_FN float triangleFormFactor(LightData l, vec3 p, vec3 n, OUT(vec3) toLight
 // to it) is w = 2 r t / d wide at t, and its quadrilinear sample reads voxels of up to 2w, whose
 // trilinear filter reaches one such voxel from the sample: the samples touch the light where
 // d - t = 2w, at t = d^2 / (d + 4 r). 1.5 voxels more stay clear of the light's conservative
-// voxels.
+// voxels. A cone narrowed to shadow.aperture stays clear too.
 VOXGI_FN float triangleShadowLength(float distance, float radius) {
   precise float reach = distance * distance / (distance + 4.0f * radius) - 1.5f;
   return max(reach, 0.0f);
