@@ -73,6 +73,11 @@ struct Buffer {
   double value(size_t element, int component) const;
 };
 
+// Components 0..2 of element e of `b`, or 0 where the plan did not produce the buffer (nullptr).
+inline glm::vec3 vec3AtOr0(const Buffer* b, size_t e) {
+  return b == nullptr ? glm::vec3(0.0f) : b->vec3At(e);
+}
+
 // The buffers of one run, each under its own declaration (stage and name): bounce's radiance
 // never replaces light_voxels'. A stage reads its inputs with at() or find() and adds its outputs
 // with put(); iteration follows the declaration order of common/stages.inc.

@@ -19,10 +19,6 @@ const Buffer* lightBuffer(const Technique& technique, const BufferSet& buffers,
   return nullptr;
 }
 
-glm::vec3 rgbOr0(const Buffer* b, size_t e) {
-  return b == nullptr ? glm::vec3(0.0f) : b->vec3At(e);
-}
-
 }  // namespace
 
 std::string_view termName(LightTerm term) {
@@ -100,18 +96,18 @@ std::optional<TermImages> techniqueTerms(const Technique& technique, const Buffe
   const glm::vec3 zero(0.0f);
   for (size_t e = 0; e < size_t(w) * size_t(h); ++e) {
     const uint32_t id = objectId.get<uint32_t>(e, 0);
-    const glm::vec3 a = rgbOr0(albedo, e), s = rgbOr0(specular, e);
+    const glm::vec3 a = vec3AtOr0(albedo, e), s = vec3AtOr0(specular, e);
     const float ao = ambient == nullptr ? 0.0f : ambient->get<float>(e, 0);
     // Each term is the composition with the other terms' inputs at zero.
     termImage(terms, LightTerm::emission).pixels[e] = shared::composePixel(
-        id, zero, zero, rgbOr0(emission, e), zero, zero, zero, zero, 0.0f, scene.background);
+        id, zero, zero, vec3AtOr0(emission, e), zero, zero, zero, zero, 0.0f, scene.background);
     termImage(terms, LightTerm::direct).pixels[e] =
-        shared::composePixel(id, a, s, zero, rgbOr0(directDiffuse, e), rgbOr0(directSpecular, e),
-                             zero, zero, 0.0f, zero);
+        shared::composePixel(id, a, s, zero, vec3AtOr0(directDiffuse, e),
+                             vec3AtOr0(directSpecular, e), zero, zero, 0.0f, zero);
     termImage(terms, LightTerm::indirect_diffuse).pixels[e] = shared::composePixel(
-        id, a, s, zero, zero, zero, rgbOr0(indirectDiffuse, e), zero, ao, zero);
+        id, a, s, zero, zero, zero, vec3AtOr0(indirectDiffuse, e), zero, ao, zero);
     termImage(terms, LightTerm::indirect_specular).pixels[e] = shared::composePixel(
-        id, a, s, zero, zero, zero, zero, rgbOr0(indirectSpecular, e), 0.0f, zero);
+        id, a, s, zero, zero, zero, zero, vec3AtOr0(indirectSpecular, e), 0.0f, zero);
   }
   return terms;
 }

@@ -41,6 +41,11 @@ EmitterLighting emittersFor(const Scene& scene, EmitterLighting setting) {
                                                         : EmitterLighting::voxels;
 }
 
+size_t areaLightCount(const Scene& scene, EmitterLighting setting) {
+  return emittersFor(scene, setting) == EmitterLighting::area_lights ? emissiveTriangleCount(scene)
+                                                                     : 0;
+}
+
 std::vector<shared::LightData> areaLights(const Scene& scene) {
   std::vector<shared::LightData> out;
   for (const Mesh& mesh : scene.meshes) {
@@ -69,6 +74,15 @@ std::vector<shared::LightData> areaLights(const Scene& scene) {
                          " emissive triangles, the scene has " + std::to_string(out.size()) +
                          "; use emitters.mode=voxels");
   return out;
+}
+
+std::vector<shared::LightData> sceneLights(const Scene& scene, EmitterLighting setting) {
+  std::vector<shared::LightData> lights = voxelLights(scene);
+  if (emittersFor(scene, setting) == EmitterLighting::area_lights) {
+    const std::vector<shared::LightData> area = areaLights(scene);
+    lights.insert(lights.end(), area.begin(), area.end());
+  }
+  return lights;
 }
 
 }  // namespace voxgi

@@ -23,9 +23,17 @@ size_t emissiveTriangleCount(const Scene& scene);
 // kMaxAreaLights emissive triangles, each costing a shadow cone per pixel, else voxels).
 EmitterLighting emittersFor(const Scene& scene, EmitterLighting setting);
 
+// The scene's area lights under emitters.mode `setting` (emittersFor): its emissive triangles, or
+// none.
+size_t areaLightCount(const Scene& scene, EmitterLighting setting);
+
 // Every emissive triangle of the scene's meshes as an area light (shared::kLightTriangle);
 // degenerate ones are left out. Throws InputError naming the scene and emitters.mode past
 // kMaxAreaLights.
 std::vector<shared::LightData> areaLights(const Scene& scene);
+
+// The lights a technique's stages loop over: the analytic lights (voxelLights), then the area
+// lights when emitters.mode `setting` means them.
+std::vector<shared::LightData> sceneLights(const Scene& scene, EmitterLighting setting);
 
 }  // namespace voxgi

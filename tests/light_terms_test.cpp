@@ -18,15 +18,9 @@ using reference::PathTraceOptions;
 
 constexpr double kPi = 3.14159265358979;
 
-glm::dvec3 meanVec(const Image& image) {
-  glm::dvec3 sum(0.0);
-  for (const glm::vec3& p : image.pixels) sum += glm::dvec3(p);
-  return sum / double(image.pixels.size());
-}
-
 // Mean over pixels and channels.
-double meanOf(const Image& image) {
-  const glm::dvec3 m = meanVec(image);
+double channelMean(const Image& image) {
+  const glm::dvec3 m = meanOf(image);
   return (m.x + m.y + m.z) / 3.0;
 }
 
@@ -71,9 +65,9 @@ TEST(LightTerms, PathTracedTermsAddUpToTheImage) {
     for (const LightTerm t : kLightTerms) {
       const bool indirect = t == LightTerm::indirect_diffuse || t == LightTerm::indirect_specular;
       if (bounces == 0 && indirect)
-        EXPECT_EQ(meanOf(termImage(r.terms, t)), 0.0) << termName(t);
+        EXPECT_EQ(channelMean(termImage(r.terms, t)), 0.0) << termName(t);
       else
-        EXPECT_GT(meanOf(termImage(r.terms, t)), 0.0) << termName(t) << " bounces " << bounces;
+        EXPECT_GT(channelMean(termImage(r.terms, t)), 0.0) << termName(t) << " bounces " << bounces;
     }
   }
 }
@@ -87,19 +81,15 @@ TEST(LightTerms, PathTracedSkyLitPlaneSplitsByLobe) {
   m.albedo = glm::vec3(0.5f, 0.25f, 0.1f);
   m.specular = glm::vec3(0.2f, 0.3f, 0.4f);
   m.shininess = 10.0f;
-  Scene scene = makeScene(quad(1, 0.0, {-1e3, -1e3}, {1e3, 1e3}), unitGrid(8), m);
+  Scene scene = withCamera(makeScene(quad(1, 0.0, {-1e3, -1e3}, {1e3, 1e3}), unitGrid(8), m),
+                           {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, 0.01, 8);
   scene.background = {1.0f, 2.0f, 0.5f};
-  scene.camera.position = {0, 1, 0};
-  scene.camera.lookAt = {0, 0, 0};
-  scene.camera.up = {0, 0, 1};
-  scene.camera.fovYDeg = 0.01;
-  scene.camera.width = scene.camera.height = 8;
   PathTraceOptions o;
   o.spp = 256;
   o.bounces = 0;
   const auto r = pathTrace(scene, o);
-  const glm::dvec3 diffuse = meanVec(termImage(r.terms, LightTerm::indirect_diffuse)),
-                   glossy = meanVec(termImage(r.terms, LightTerm::indirect_specular));
+  const glm::dvec3 diffuse = meanOf(termImage(r.terms, LightTerm::indirect_diffuse)),
+                   glossy = meanOf(termImage(r.terms, LightTerm::indirect_specular));
   for (int c = 0; c < 3; ++c) {
     const double l = scene.background[c];
     // The Lambertian lobe's estimate is exact per sample where a Phong sample is taken, so only
@@ -107,8 +97,8 @@ TEST(LightTerms, PathTracedSkyLitPlaneSplitsByLobe) {
     EXPECT_NEAR(diffuse[c], m.albedo[c] * l, 0.05 * m.albedo[c] * l) << c;
     EXPECT_NEAR(glossy[c], m.specular[c] * l, 0.05 * m.specular[c] * l) << c;
   }
-  EXPECT_EQ(meanOf(termImage(r.terms, LightTerm::direct)), 0.0);
-  EXPECT_EQ(meanOf(termImage(r.terms, LightTerm::emission)), 0.0);
+  EXPECT_EQ(channelMean(termImage(r.terms, LightTerm::direct)), 0.0);
+  EXPECT_EQ(channelMean(termImage(r.terms, LightTerm::emission)), 0.0);
 }
 
 // The staged techniques compose their image from the same terms.
@@ -122,8 +112,8 @@ TEST(LightTerms, TechniqueTermsAddUpToItsImage) {
     const auto terms = techniqueTerms(technique, b, settings, scene);
     ASSERT_TRUE(terms.has_value()) << technique.name;
     expectTermsAddUp(*terms, bufferImage(b.at(technique.image)), 1e-5f);
-    EXPECT_GT(meanOf(termImage(*terms, LightTerm::direct)), 0.0) << technique.name;
-    EXPECT_GT(meanOf(termImage(*terms, LightTerm::indirect_diffuse)), 0.0) << technique.name;
+    EXPECT_GT(channelMean(termImage(*terms, LightTerm::direct)), 0.0) << technique.name;
+    EXPECT_GT(channelMean(termImage(*terms, LightTerm::indirect_diffuse)), 0.0) << technique.name;
   }
 }
 
@@ -134,13 +124,9 @@ TEST(LightTerms, ConeTracedSkyLitFloorIsIndirectDiffuse) {
   const int n = 64;
   Material m;
   m.albedo = glm::vec3(0.5f);
-  Scene scene = makeScene(quad(1, 0.25, {0.0, 0.0}, {1.0, 1.0}), unitGrid(n), m);
+  Scene scene = withCamera(makeScene(quad(1, 0.25, {0.0, 0.0}, {1.0, 1.0}), unitGrid(n), m),
+                           {0.5, 0.75, 0.5}, {0.5, 0.25, 0.5}, {0, 0, 1}, 20.0, 16);
   scene.background = glm::vec3(2.0f, 1.0f, 0.5f);
-  scene.camera.position = {0.5, 0.75, 0.5};
-  scene.camera.lookAt = {0.5, 0.25, 0.5};
-  scene.camera.up = {0, 0, 1};
-  scene.camera.fovYDeg = 20.0;
-  scene.camera.width = scene.camera.height = 16;
   Settings settings;
   settings.vct.mip = MipMode::anisotropic;
   settings.vct.coneClearance = 1.0f / 3.0f;
@@ -151,7 +137,7 @@ TEST(LightTerms, ConeTracedSkyLitFloorIsIndirectDiffuse) {
   for (const glm::vec3& p : termImage(*terms, LightTerm::indirect_diffuse).pixels)
     for (int c = 0; c < 3; ++c) ASSERT_NEAR(p[c], 0.5f * scene.background[c], 1e-5f);
   for (const LightTerm t : {LightTerm::emission, LightTerm::direct, LightTerm::indirect_specular})
-    EXPECT_EQ(meanOf(termImage(*terms, t)), 0.0) << termName(t);
+    EXPECT_EQ(channelMean(termImage(*terms, t)), 0.0) << termName(t);
 }
 
 }  // namespace

@@ -14,16 +14,6 @@ namespace {
 using reference::pathTrace;
 using reference::PathTraceOptions;
 
-Scene withCamera(Scene scene, glm::dvec3 position, glm::dvec3 lookAt, glm::dvec3 up, double fov,
-                 int size) {
-  scene.camera.position = position;
-  scene.camera.lookAt = lookAt;
-  scene.camera.up = up;
-  scene.camera.fovYDeg = fov;
-  scene.camera.width = scene.camera.height = size;
-  return scene;
-}
-
 // The inside of a cube [-1, 1]^3 whose faces point inwards.
 std::vector<Triangle> insideOfCube() {
   std::vector<Triangle> tris;
@@ -36,12 +26,6 @@ std::vector<Triangle> insideOfCube() {
         tris.push_back(t);
       }
   return tris;
-}
-
-glm::dvec3 meanOf(const Image& image) {
-  glm::dvec3 sum(0.0);
-  for (const auto& p : image.pixels) sum += glm::dvec3(p);
-  return sum / double(image.pixels.size());
 }
 
 TEST(PathTrace, DiffusePlaneUnderUniformSkyIsAlbedoTimesSky) {

@@ -49,6 +49,22 @@ GridSpec unitGrid(int n, double size) {
   return g;
 }
 
+Scene withCamera(Scene scene, glm::dvec3 position, glm::dvec3 lookAt, glm::dvec3 up, double fov,
+                 int size) {
+  scene.camera.position = position;
+  scene.camera.lookAt = lookAt;
+  scene.camera.up = up;
+  scene.camera.fovYDeg = fov;
+  scene.camera.width = scene.camera.height = size;
+  return scene;
+}
+
+glm::dvec3 meanOf(const Image& image) {
+  glm::dvec3 sum(0.0);
+  for (const glm::vec3& p : image.pixels) sum += glm::dvec3(p);
+  return sum / double(image.pixels.size());
+}
+
 BufferSet runCpu(const Scene& scene, VoxelizeMode mode) {
   Settings settings;
   settings.voxelizeMode = mode;

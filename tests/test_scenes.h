@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/buffer.h"
+#include "common/image_io.h"
 #include "common/scene.h"
 #include "common/stage.h"
 
@@ -20,6 +21,11 @@ Scene makeScene(const std::vector<Triangle>& triangles, const GridSpec& grid,
 std::vector<Triangle> quad(int axis, double at, glm::dvec2 lo, glm::dvec2 hi);
 // A unit grid [0, size]^3 with N^3 voxels.
 GridSpec unitGrid(int n, double size = 1.0);
+// `scene` seen from `position` toward `lookAt` through a square image of `size` pixels.
+Scene withCamera(Scene scene, glm::dvec3 position, glm::dvec3 lookAt, glm::dvec3 up, double fov,
+                 int size);
+// The mean pixel of an image, per channel.
+glm::dvec3 meanOf(const Image& image);
 
 // The voxelize stage on the CPU.
 BufferSet runCpu(const Scene& scene, VoxelizeMode mode);

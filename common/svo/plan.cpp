@@ -45,10 +45,7 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
           << " points per leaf face (svo.mesh_density)";
   p.stage(StageId::svo_build_svo, true, build.str());
   std::ostringstream frames;
-  const size_t areaLights =
-      emittersFor(scene, settings.vct.emitters) == EmitterLighting::area_lights
-          ? emissiveTriangleCount(scene)
-          : 0;
+  const size_t areaLights = areaLightCount(scene, settings.vct.emitters);
   frames << scene.lights.size() << " analytic light(s)";
   if (areaLights > 0)
     frames << " and " << areaLights << " emissive triangle(s) as area lights (emitters.mode)";

@@ -65,6 +65,7 @@ SampleSet prepareSamples(const Scene& scene, int depth, double meshDensity, uint
       std::to_string(set.cloudPoints + set.meshPoints) + " svo samples", scene.file,
       "svo.mesh_density");
   set.samples.reserve(set.cloudPoints + set.meshPoints);
+  const bool meshEmission = emittersFor(scene, emitters) == EmitterLighting::voxels;
   for (const PointCloud& cloud : scene.pointClouds) appendCloud(scene, cloud, leaf, set.samples);
   for (const auto& [m, n] : meshCounts) {
     SurfaceSampling sampling;
@@ -73,7 +74,7 @@ SampleSet prepareSamples(const Scene& scene, int depth, double meshDensity, uint
     sampling.seed = mix64(seed ^ mix64(m));
     const size_t first = set.samples.size();
     appendCloud(scene, sampleSurfaces(scene, sampling), leaf, set.samples);
-    if (emittersFor(scene, emitters) == EmitterLighting::area_lights)
+    if (!meshEmission)
       for (size_t i = first; i < set.samples.size(); ++i) set.samples[i].emission = glm::vec4(0.0f);
   }
 

@@ -58,15 +58,6 @@ std::vector<shared::ObjectData> objectData(const Scene& scene, bool everyObject)
 
 }  // namespace
 
-std::vector<shared::LightData> sceneLights(const Scene& scene, EmitterLighting emitters) {
-  std::vector<shared::LightData> lights = voxelLights(scene);
-  if (emittersFor(scene, emitters) == EmitterLighting::area_lights) {
-    const std::vector<shared::LightData> area = areaLights(scene);
-    lights.insert(lights.end(), area.begin(), area.end());
-  }
-  return lights;
-}
-
 shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount,
                                             bool emission) {
   const VctSettings& s = ctx.settings.vct;

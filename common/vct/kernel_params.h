@@ -8,9 +8,6 @@
 
 namespace voxgi {
 
-// The scene's analytic lights, then under emitters.mode=area_lights its emissive triangles.
-std::vector<shared::LightData> sceneLights(const Scene& scene, EmitterLighting emitters);
-
 // `emission`: the voxels' emission is added to their radiance.
 shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount, bool emission);
 

@@ -47,9 +47,7 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   int shadowLights = 0;
   for (const Light& l : scene.lights) shadowLights += l.castsShadows ? 1 : 0;
   // Under emitters.mode=area_lights every emissive triangle is a light with a shadow cone.
-  const size_t areaLights = emittersFor(scene, s.emitters) == EmitterLighting::area_lights
-                                ? emissiveTriangleCount(scene)
-                                : 0;
+  const size_t areaLights = areaLightCount(scene, s.emitters);
   std::ostringstream lights;
   lights << scene.lights.size() << " analytic light(s)";
   if (areaLights > 0)

@@ -1,7 +1,7 @@
 // CPU propagate_svo stage: the leaves' injected light, then svo.frames progressive bounces
 // (cpu/svo/leaf_light.h).
+#include "common/lights.h"
 #include "common/svo/stage_inputs.h"
-#include "common/vct/kernel_params.h"
 #include "common/svo/tree_depth.h"
 #include "cpu/stages.h"
 #include "cpu/svo/leaf_light.h"

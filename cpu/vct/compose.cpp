@@ -6,15 +6,6 @@
 #include "shaders/shared/compose_kernel.h"
 
 namespace voxgi::cpu {
-namespace {
-
-// A pixel's rgb, or 0 where the scene does not produce the buffer (no glossy or emissive material).
-glm::vec3 rgbOr0(const Buffer* b, size_t e) {
-  return b == nullptr ? glm::vec3(0.0f) : b->vec3At(e);
-}
-
-}  // namespace
-
 void vct::compose(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, StageId::vct_compose);
   using enum BufferId;
@@ -37,9 +28,9 @@ void vct::compose(const StageContext& ctx, BufferSet& buffers) {
       for (int x = 0; x < width; ++x) {
         const size_t e = size_t(y) * size_t(width) + size_t(x);
         const glm::vec3 c = shared::composePixel(
-            objectId.get<uint32_t>(e, 0), rgbOr0(albedo, e), rgbOr0(specular, e),
-            rgbOr0(emission, e), rgbOr0(directDiffuse, e), rgbOr0(directSpecular, e),
-            rgbOr0(indirectDiffuse, e), rgbOr0(indirectSpecular, e),
+            objectId.get<uint32_t>(e, 0), vec3AtOr0(albedo, e), vec3AtOr0(specular, e),
+            vec3AtOr0(emission, e), vec3AtOr0(directDiffuse, e), vec3AtOr0(directSpecular, e),
+            vec3AtOr0(indirectDiffuse, e), vec3AtOr0(indirectSpecular, e),
             ambient == nullptr ? 0.0f : ambient->get<float>(e, 0), ctx.scene.background);
         color.setVec3(e, c);
       }

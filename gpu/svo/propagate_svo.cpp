@@ -2,8 +2,8 @@
 // (gpu/svo/leaf_light.h), frame by frame as cpu/svo/leaf_light.cpp's propagateFrames. The leaf
 // sums are decoded on the host (common/svo/stage_inputs.h: exact power-of-two scaling, the same
 // floats the CPU decodes).
+#include "common/lights.h"
 #include "common/svo/stage_inputs.h"
-#include "common/vct/kernel_params.h"
 #include "common/svo/tree_depth.h"
 #include "gpu/stages.h"
 #include "gpu/svo/leaf_light.h"

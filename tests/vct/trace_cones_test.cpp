@@ -320,11 +320,7 @@ TEST(TraceCones, WallMovedBy1e4VoxelChangesTheImageByOrder1e4) {
     light.position = {0.4, 0.8, 0.5};
     light.intensity = glm::vec3(0.2f);
     scene.lights.push_back(light);
-    scene.camera.position = {0.5, 0.9, 0.5};
-    scene.camera.lookAt = {0.5, 0.1, 0.5};
-    scene.camera.up = {0.0, 0.0, 1.0};
-    scene.camera.fovYDeg = 30.0;
-    scene.camera.width = scene.camera.height = 64;
+    scene = withCamera(scene, {0.5, 0.9, 0.5}, {0.5, 0.1, 0.5}, {0.0, 0.0, 1.0}, 30.0, 64);
     Settings settings;
     settings.voxelizeMode = VoxelizeMode::antialiased;
     return runCpuUntil(scene, settings, "compose").at(BufferId::vct_compose_color);
