@@ -11,6 +11,7 @@
 #include "common/mips.h"
 #include "common/settings.h"
 #include "cpu/vct/cell_occupancy.h"
+#include "shaders/shared/lighting.h"
 #include "shaders/shared/vct/cone_kernel.h"
 
 namespace voxgi::cpu {

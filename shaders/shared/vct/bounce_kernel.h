@@ -20,21 +20,20 @@ VOLUME_FN vec3 gatherVoxel(VOLUMES_IN ivec3 v, ConeTraceParams params) {
   vec3 normalSum = FETCH(normalAt)(v);
   precise vec3 p = vec3(v) + vec3(0.5f);
   float offset = params.march.y;
-  float unused;
   if (normalSum == vec3(0.0f)) {
     // Normals that cancel (the two sides of a thin wall) leave no hemisphere: the mean over the
     // sphere, as two hemispheres about z, as light_voxels lights such a voxel from every side.
     vec3 z = vec3(0.0f, 0.0f, 1.0f);
     precise vec3 above = p + z * offset;
     precise vec3 below = p - z * offset;
-    vec3 up = gatherDiffuse(VOLUMES above, z, kMarchRadiance, params, unused);
-    vec3 down = gatherDiffuse(VOLUMES below, -z, kMarchRadiance, params, unused);
+    vec3 up = gatherDiffuse(VOLUMES above, z, kMarchRadiance, params).radiance;
+    vec3 down = gatherDiffuse(VOLUMES below, -z, kMarchRadiance, params).radiance;
     precise vec3 mean = (up + down) * 0.5f;
     return mean;
   }
   vec3 n = normalize3(normalSum);
   precise vec3 origin = p + n * offset;
-  return gatherDiffuse(VOLUMES origin, n, kMarchRadiance, params, unused);
+  return gatherDiffuse(VOLUMES origin, n, kMarchRadiance, params).radiance;
 }
 
 // The direct radiance plus the albedo times `gathered`, premultiplied by direct.a.

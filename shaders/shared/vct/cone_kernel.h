@@ -18,6 +18,14 @@ struct ConeHit {
   float ambient;    // AO delta along this cone
 };
 
+VOXGI_FN ConeHit noConeHit() {
+  ConeHit hit;
+  hit.radiance = vec3(0.0f);
+  hit.occlusion = 0.0f;
+  hit.ambient = 0.0f;
+  return hit;
+}
+
 const int kMarchRadiance = 0;
 const int kMarchFirstHit = 1;  // [Kahl 2019, §5.4.4]: stop at the first sample with opacity > 1/100
 const int kMarchShadow = 2;    // opacity only
@@ -93,10 +101,7 @@ VOXGI_FN float smoothstep01(float x) {
 // background times its remaining transparency.
 VOLUME_FN ConeHit marchCone(VOLUMES_IN vec3 origin, vec3 dir, float rise, float tanHalf,
                             float maxDistance, int kind, ConeTraceParams params) {
-  ConeHit hit;
-  hit.radiance = vec3(0.0f);
-  hit.occlusion = 0.0f;
-  hit.ambient = 0.0f;
+  ConeHit hit = noConeHit();
   float n = float(params.grid.x);
   float beta = params.march.x;
   bool ambient = params.limits.x == 1 && kind <= kMarchFirstHit;
@@ -162,29 +167,56 @@ VOXGI_FN void tangentFrame(vec3 n, OUT(vec3) t, OUT(vec3) b) {
   b = vec3(c, s + n.y * n.y * a, -n.y);
 }
 
+// The diffuse cones' hits so far, weighted.
+struct DiffuseSum {
+  vec3 radiance;  // E / pi when the weights sum to 1
+  float ambient;  // the weighted ambient-occlusion delta
+  float weights;
+};
+
+VOXGI_FN DiffuseSum noDiffuse() {
+  DiffuseSum s;
+  s.radiance = vec3(0.0f);
+  s.ambient = 0.0f;
+  s.weights = 0.0f;
+  return s;
+}
+
+// Diffuse cone c's axis in the tangent frame (t, b, n).
+VOXGI_FN vec3 diffuseConeDirection(vec3 t, vec3 b, vec3 n, ConeData c) {
+  precise vec3 d = (t * c.direction.x + b * c.direction.y) + n * c.direction.z;
+  return d;
+}
+
+VOXGI_FN DiffuseSum addDiffuseCone(DiffuseSum s, ConeHit h, ConeData c) {
+  precise vec3 radiance = s.radiance + h.radiance * c.weight.x;
+  precise float ambient = s.ambient + h.ambient * c.weight.x;
+  precise float weights = s.weights + c.weight.x;
+  s.radiance = radiance;
+  s.ambient = ambient;
+  s.weights = weights;
+  return s;
+}
+
+VOXGI_FN float diffuseAmbientOcclusion(DiffuseSum s) {
+  return s.weights > 0.0f ? s.ambient / s.weights : 0.0f;
+}
+
 // The diffuse cone set (FETCH(coneAt), params.grid.w cones in the tangent frame) around unit n from
-// `origin`: the weighted sum of the cones' radiance, which is E / pi when the weights sum to 1, and
-// the weighted ambient-occlusion delta.
-VOLUME_FN vec3 gatherDiffuse(VOLUMES_IN vec3 origin, vec3 n, int kind, ConeTraceParams params,
-                             OUT(float) ambientOcclusion) {
+// `origin`. Each cone rises from the surface at its direction's component along n.
+VOLUME_FN DiffuseSum gatherDiffuse(VOLUMES_IN vec3 origin, vec3 n, int kind,
+                                   ConeTraceParams params) {
   vec3 t;
   vec3 b;
   tangentFrame(n, t, b);
-  precise vec3 sum = vec3(0.0f);
-  precise float ambient = 0.0f;
-  precise float weights = 0.0f;
+  DiffuseSum s = noDiffuse();
   for (int k = 0; k < params.grid.w; ++k) {
     ConeData c = FETCH(coneAt)(k);
-    precise vec3 d = (t * c.direction.x + b * c.direction.y) + n * c.direction.z;
-    // The cone rises from the surface at its direction's component along n.
-    ConeHit h =
-        marchCone(VOLUMES origin, d, c.direction.z, c.direction.w, params.march.w, kind, params);
-    sum = sum + h.radiance * c.weight.x;
-    ambient = ambient + h.ambient * c.weight.x;
-    weights = weights + c.weight.x;
+    ConeHit h = marchCone(VOLUMES origin, diffuseConeDirection(t, b, n, c), c.direction.z,
+                          c.direction.w, params.march.w, kind, params);
+    s = addDiffuseCone(s, h, c);
   }
-  ambientOcclusion = weights > 0.0f ? ambient / weights : 0.0f;
-  return sum;
+  return s;
 }
 
 VOXGI_NAMESPACE_END

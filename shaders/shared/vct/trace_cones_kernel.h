@@ -8,83 +8,153 @@
 
 VOXGI_NAMESPACE_BEGIN
 
+// trace_cones' work comes in phases so that the CPU can march the cones of several pixels at once
+// (cpu/vct/cone_lanes.h) and still compute exactly what tracePixel computes: per pixel the cones'
+// origin and mirror direction, per light a LightPath, its shadow cone's march and addLight, per
+// diffuse cone its march and addDiffuseCone, the specular cone's march, then finishPixel.
+
+// The point all of a pixel's cones start from: params.march.y voxels above p along n.
+VOXGI_FN vec3 coneOrigin(vec3 p, vec3 n, ConeTraceParams params) {
+  precise vec3 origin = p + n * params.march.y;
+  return origin;
+}
+
+// The mirror direction of the view ray at p: the specular cone's axis.
+VOXGI_FN vec3 mirrorDirection(vec3 p, vec3 n, ConeTraceParams params) {
+  precise vec3 view = normalize3(vec3(params.camera) - p);
+  precise vec3 mirror = n * (2.0f * dot3(n, view)) - view;
+  return mirror;
+}
+
+// What one light sends toward the surface point, before its shadow cone.
+struct LightPath {
+  vec3 toLight;        // unit direction toward the light
+  vec3 radiance;       // E of a point, spot or directional light; L of a triangle
+  float weight;        // cos for E; pi F (the form factor, the cosine included) for L
+  float cosine;        // n . toLight: the shadow cone's rise
+  float tanHalf;       // the shadow cone's aperture
+  float shadowLength;  // how far the shadow cone marches; 0: the light casts no shadow here
+  bool arrives;        // false: nothing arrives (behind the surface, outside a spot, ...)
+};
+
+// What arrives is radiance x weight x visibility: a point, spot or directional light's irradiance
+// E x cos, or a triangle's radiance L x pi F, whose shadow cone is as wide as the triangle (at
+// most shadow.aperture) and stops short of its voxels.
+VOXGI_FN LightPath lightPath(LightData l, vec3 p, vec3 n, ConeTraceParams params) {
+  LightPath path;
+  float distance;
+  float shadowLength;
+  path.tanHalf = params.shadow.x;
+  path.arrives = true;
+  if (l.info.x == kLightTriangle) {
+    float f = triangleFormFactor(l, p, n, path.toLight, distance);
+    path.arrives = !(f <= 0.0f);
+    path.cosine = max(dot3(n, path.toLight), 0.0f);
+    path.radiance = vec3(l.intensity);
+    path.weight = kPi * f;
+    if (path.arrives) path.tanHalf = min(l.direction.w / distance, params.shadow.x);
+    shadowLength = path.arrives ? triangleShadowLength(distance, l.direction.w) : 0.0f;
+  } else {
+    path.radiance = lightIrradiance(l, p, params.shadow.w, path.toLight, distance);
+    path.cosine = dot3(n, path.toLight);
+    path.arrives = path.radiance != vec3(0.0f) && !(path.cosine <= 0.0f);
+    path.weight = path.cosine;
+    shadowLength = distance;
+  }
+  path.shadowLength = path.arrives && l.info.y == 1u && shadowLength > 0.0f
+                          ? min(shadowLength, params.march.w)
+                          : 0.0f;
+  return path;
+}
+
+// The kind of march of the shadow cones: opacity only, or with Kahl's falloff.
+VOXGI_FN int shadowMarchKind(ConeTraceParams params) {
+  return params.modes.z == 1 ? kMarchShadowKahl : kMarchShadow;
+}
+
+// The kind of march of the diffuse cones: composited radiance, or Kahl's first hit.
+VOXGI_FN int diffuseMarchKind(ConeTraceParams params) {
+  return params.modes.y == 1 ? kMarchFirstHit : kMarchRadiance;
+}
+
+// Direct light summed over the lights so far.
+struct DirectLight {
+  vec3 diffuse;
+  vec3 specular;
+  float minVisibility;  // the smallest shadow-cone visibility
+  float lightAngle;     // [Kahl 2019, eq. 5.6]'s sum over the lights
+};
+
+VOXGI_FN DirectLight noDirectLight() {
+  DirectLight d;
+  d.diffuse = vec3(0.0f);
+  d.specular = vec3(0.0f);
+  d.minVisibility = 1.0f;
+  d.lightAngle = 0.0f;
+  return d;
+}
+
+// d plus the light of `path` arriving with `visibility` (1 - its shadow cone's occlusion).
+VOXGI_FN DirectLight addLight(DirectLight d, LightPath path, float visibility, vec3 mirror,
+                              ObjectData object, ConeTraceParams params) {
+  d.minVisibility = min(d.minVisibility, visibility);
+  precise vec3 arriving = path.radiance * (path.weight * visibility);
+  d.diffuse = d.diffuse + arriving * kInvPi;
+  if (object.specular.x > 0.0f) {
+    float shininess = object.specular.y;
+    precise float rl = dot3(mirror, path.toLight);
+    d.specular = d.specular + arriving * phongLobe(rl, shininess);
+    if (params.modes.w == 1) {
+      // [Kahl 2019, eq. 5.6]: (1 - max(0, angle - grace) / pi)^q with grace = 0.008 pi shininess.
+      precise float late = max(acosApprox(rl) - params.specular.y * shininess, 0.0f);
+      d.lightAngle = d.lightAngle + powApprox(1.0f - late * kInvPi, params.specular.x);
+    }
+  }
+  return d;
+}
+
+// trace_cones' terms from the direct light, the diffuse cones and the specular cone's march
+// (unused when the object has none).
+VOXGI_FN PixelLight finishPixel(DirectLight d, DiffuseSum diffuse, ConeHit specularHit,
+                                ObjectData object, ConeTraceParams params) {
+  PixelLight r;
+  r.directDiffuse = d.diffuse;
+  r.directSpecular = d.specular;
+  r.indirectDiffuse = diffuse.radiance;
+  r.ambientOcclusion = diffuseAmbientOcclusion(diffuse);
+  // [Kahl 2019, eq. 5.9] darkens first-hit diffuse light by the smallest shadow-cone visibility.
+  if (params.modes.y == 1) r.indirectDiffuse = r.indirectDiffuse * d.minVisibility;
+  r.indirectSpecular = vec3(0.0f);
+  if (object.specular.x > 0.0f)
+    r.indirectSpecular =
+        params.modes.w == 1 ? specularHit.radiance * d.lightAngle : specularHit.radiance;
+  return r;
+}
+
 // Everything trace_cones computes for the surface point p (voxel-local) with unit normal n facing
 // the camera: direct light with a shadow cone per shadow-casting light, the diffuse cone set, the
 // specular cone along the mirror direction, and ambient occlusion.
 VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
                                 ConeTraceParams params) {
-  PixelLight r;
-  r.directDiffuse = vec3(0.0f);
-  r.directSpecular = vec3(0.0f);
-  r.indirectDiffuse = vec3(0.0f);
-  r.indirectSpecular = vec3(0.0f);
-  r.ambientOcclusion = 0.0f;
-  float maxDistance = params.march.w;
-  precise vec3 origin = p + n * params.march.y;
-  precise vec3 view = normalize3(vec3(params.camera) - p);
-  precise vec3 mirror = n * (2.0f * dot3(n, view)) - view;
-  bool specular = object.specular.x > 0.0f;
-  float shininess = object.specular.y;
-  int shadowKind = params.modes.z == 1 ? kMarchShadowKahl : kMarchShadow;
-  float minVisibility = 1.0f;
-  precise float lightAngle = 0.0f;
+  vec3 origin = coneOrigin(p, n, params);
+  vec3 mirror = mirrorDirection(p, n, params);
+  DirectLight d = noDirectLight();
   for (int i = 0; i < params.modes.x; ++i) {
-    LightData l = FETCH(lightAt)(i);
-    vec3 toLight;
-    float distance;
-    // What arrives is radiance x weight x visibility: a point, spot or directional light's
-    // irradiance E x cos, or a triangle's radiance L x pi F (its form factor, the cosine
-    // included), whose shadow cone is as wide as the triangle (at most shadow.aperture) and stops
-    // short of its voxels.
-    vec3 radiance;
-    float weight;
-    float cosine;
-    float tanHalf = params.shadow.x;
-    float shadowLength;
-    if (l.info.x == kLightTriangle) {
-      float f = triangleFormFactor(l, p, n, toLight, distance);
-      if (f <= 0.0f) continue;
-      cosine = max(dot3(n, toLight), 0.0f);
-      radiance = vec3(l.intensity);
-      weight = kPi * f;
-      tanHalf = min(l.direction.w / distance, params.shadow.x);
-      shadowLength = triangleShadowLength(distance, l.direction.w);
-    } else {
-      radiance = lightIrradiance(l, p, params.shadow.w, toLight, distance);
-      if (radiance == vec3(0.0f)) continue;
-      cosine = dot3(n, toLight);
-      if (cosine <= 0.0f) continue;
-      weight = cosine;
-      shadowLength = distance;
-    }
+    LightPath path = lightPath(FETCH(lightAt)(i), p, n, params);
+    if (!path.arrives) continue;
     float visibility = 1.0f;
-    if (l.info.y == 1u && shadowLength > 0.0f)
-      visibility = 1.0f - marchCone(VOLUMES origin, toLight, cosine, tanHalf,
-                                    min(shadowLength, maxDistance), shadowKind, params)
+    if (path.shadowLength > 0.0f)
+      visibility = 1.0f - marchCone(VOLUMES origin, path.toLight, path.cosine, path.tanHalf,
+                                    path.shadowLength, shadowMarchKind(params), params)
                               .occlusion;
-    minVisibility = min(minVisibility, visibility);
-    precise vec3 arriving = radiance * (weight * visibility);
-    r.directDiffuse = r.directDiffuse + arriving * kInvPi;
-    if (specular) {
-      precise float rl = dot3(mirror, toLight);
-      r.directSpecular = r.directSpecular + arriving * phongLobe(rl, shininess);
-      if (params.modes.w == 1) {
-        // [Kahl 2019, eq. 5.6]: (1 - max(0, angle - grace) / pi)^q with grace = 0.008 pi shininess.
-        precise float late = max(acosApprox(rl) - params.specular.y * shininess, 0.0f);
-        lightAngle = lightAngle + powApprox(1.0f - late * kInvPi, params.specular.x);
-      }
-    }
+    d = addLight(d, path, visibility, mirror, object, params);
   }
-  int diffuseKind = params.modes.y == 1 ? kMarchFirstHit : kMarchRadiance;
-  r.indirectDiffuse = gatherDiffuse(VOLUMES origin, n, diffuseKind, params, r.ambientOcclusion);
-  // [Kahl 2019, eq. 5.9] darkens first-hit diffuse light by the smallest shadow-cone visibility.
-  if (params.modes.y == 1) r.indirectDiffuse = r.indirectDiffuse * minVisibility;
-  if (specular) {
-    ConeHit h = marchCone(VOLUMES origin, mirror, dot3(n, mirror), object.specular.x, maxDistance,
-                          kMarchRadiance, params);
-    r.indirectSpecular = params.modes.w == 1 ? h.radiance * lightAngle : h.radiance;
-  }
-  return r;
+  DiffuseSum diffuse = gatherDiffuse(VOLUMES origin, n, diffuseMarchKind(params), params);
+  ConeHit specularHit = noConeHit();
+  if (object.specular.x > 0.0f)
+    specularHit = marchCone(VOLUMES origin, mirror, dot3(n, mirror), object.specular.x,
+                            params.march.w, kMarchRadiance, params);
+  return finishPixel(d, diffuse, specularHit, object, params);
 }
 
 VOXGI_NAMESPACE_END

@@ -1,0 +1,330 @@
+#include "cpu/vct/cone_lanes.h"
+
+#include <bit>
+
+// xsimd (Debian's libxsimd-dev) rather than intrinsics: the lanes stay portable, and its batches
+// map one to one onto the IEEE operations marchCone does (no contraction, no approximations).
+#include <xsimd/xsimd.hpp>
+#include <emmintrin.h>
+
+namespace voxgi::cpu {
+namespace {
+
+// SSE2 is what every x86-64 runs; four lanes keep the per-lane filters' registers free.
+using Arch = xsimd::sse2;
+using Lanes = xsimd::batch<float, Arch>;
+using LaneInts = xsimd::batch<int32_t, Arch>;
+using LaneMask = xsimd::batch_bool<float, Arch>;
+using Texel = xsimd::batch<float, Arch>;  // one voxel's four words
+using TexelBits = xsimd::batch<uint32_t, Arch>;
+constexpr int kLanes = int(Lanes::size);
+
+// glm's min and max, whose choices at ties and signed zeros the shared kernel relies on.
+Lanes glmMin(Lanes x, Lanes y) {
+  return xsimd::select(y < x, y, x);
+}
+Lanes glmMax(Lanes x, Lanes y) {
+  return xsimd::select(x < y, y, x);
+}
+
+// Lane j's bit of a mask. (xsimd 8.1's batch_bool has no mask(); this is SSE2's movemask.)
+int bitsOf(LaneMask m) {
+  return _mm_movemask_ps(m);
+}
+
+// shared::log2Approx for normal x > 0 (a cone's diameter, 1 - opacity): frexp from the exponent
+// bits, then the same series.
+Lanes log2Lanes(Lanes x) {
+  const LaneInts bits = xsimd::bitwise_cast<LaneInts>(x);
+  // The exponent as a float: small integers, so e - 1 is exact in either form.
+  Lanes e = xsimd::to_float(((bits >> 23) & LaneInts(0xff)) - LaneInts(126));
+  Lanes m =
+      xsimd::bitwise_cast<Lanes>((bits & LaneInts(int32_t(0x807fffff))) | LaneInts(0x3f000000));
+  const LaneMask small = m < Lanes(0.70710678f);
+  m = xsimd::select(small, m * Lanes(2.0f), m);
+  e = xsimd::select(small, e - Lanes(1.0f), e);
+  const Lanes s = (m - Lanes(1.0f)) / (m + Lanes(1.0f));
+  const Lanes s2 = s * s;
+  const Lanes series =
+      s * (Lanes(1.0f) +
+           s2 * (Lanes(0.33333333f) +
+                 s2 * (Lanes(0.2f) + s2 * (Lanes(0.14285714f) + s2 * Lanes(0.11111111f)))));
+  return e + series * Lanes(2.8853901f);
+}
+
+// shared::exp2Approx: ldexp(v, i) is v times 2^i exactly for i in [-126, 127].
+Lanes exp2Lanes(Lanes x) {
+  const Lanes c = glmMin(glmMax(x, Lanes(-126.0f)), Lanes(127.0f));
+  const Lanes i = xsimd::floor(c);
+  const Lanes g = (c - i - Lanes(0.5f)) * Lanes(0.69314718f);
+  const Lanes p =
+      Lanes(1.0f) +
+      g * (Lanes(1.0f) +
+           g * (Lanes(0.5f) +
+                g * (Lanes(0.16666667f) +
+                     g * (Lanes(0.041666667f) +
+                          g * (Lanes(0.0083333333f) +
+                               g * (Lanes(0.0013888889f) + g * Lanes(0.00019841270f)))))));
+  const Lanes scale = xsimd::bitwise_cast<Lanes>((xsimd::to_int(i) + LaneInts(127)) << 23);
+  return (p * Lanes(1.4142136f)) * scale;
+}
+
+// shared::powApprox for x > 0.
+Lanes powLanes(Lanes x, Lanes y) {
+  return exp2Lanes(y * log2Lanes(x));
+}
+
+Texel texelAt(const uint32_t* p) {
+  return xsimd::bitwise_cast<Texel>(TexelBits::load_unaligned(p));
+}
+
+Texel lerp(Texel a, Texel b, float t) {
+  return a + (b - a) * Texel(t);
+}
+
+// What a lane's samples need that stays fixed along its cone: sampleLevel's faces and weights.
+struct LaneCone {
+  int face[3];
+  glm::vec3 weight;  // dir^2
+};
+
+// The first words of a trilinear cell's eight voxels in blendCell's order (000, 100, 010, 110,
+// 001, 101, 011, 111); null outside the level, whose voxels read as 0 (shared::pyramidVoxel).
+struct CellTaps {
+  const uint32_t* voxel[8];
+};
+
+CellTaps cellTaps(const ConeVolumes& volumes, int level, const shared::TrilinearCell& c,
+                  size_t stride) {
+  const int size = volumes.n >> level;
+  const size_t s = size_t(size);
+  const uint32_t* words = volumes.levels[level];
+  CellTaps taps;
+  for (int k = 0; k < 8; ++k) {
+    const glm::ivec3 v = c.base + glm::ivec3(k & 1, k >> 1 & 1, k >> 2);
+    const bool in =
+        c.inside || (v.x >= 0 && v.y >= 0 && v.z >= 0 && v.x < size && v.y < size && v.z < size);
+    taps.voxel[k] =
+        in ? words + stride * (size_t(v.x) + s * (size_t(v.y) + s * size_t(v.z))) : nullptr;
+  }
+  return taps;
+}
+
+Texel tapAt(const uint32_t* voxel, size_t face) {
+  return voxel != nullptr ? texelAt(voxel + face) : Texel(0.0f);
+}
+
+// shared::blendCell of one face (its first word `face` words into each voxel).
+Texel blendCell(const CellTaps& t, size_t face, glm::vec3 f) {
+  const Texel y0 = lerp(lerp(tapAt(t.voxel[0], face), tapAt(t.voxel[1], face), f.x),
+                        lerp(tapAt(t.voxel[2], face), tapAt(t.voxel[3], face), f.x), f.y);
+  const Texel y1 = lerp(lerp(tapAt(t.voxel[4], face), tapAt(t.voxel[5], face), f.x),
+                        lerp(tapAt(t.voxel[6], face), tapAt(t.voxel[7], face), f.x), f.y);
+  return lerp(y0, y1, f.z);
+}
+
+// shared::sampleLevel over the trilinear cell c of `level`.
+Texel sampleLevel(const ConeVolumes& volumes, int level, const shared::TrilinearCell& c,
+                  const LaneCone& cone, const shared::ConeTraceParams& params) {
+  if (volumes.cellEmpty(level, c.base)) return Texel(0.0f);
+  const bool directional = level > 0 && params.grid.z != 0;
+  const CellTaps taps = cellTaps(volumes, level, c, directional ? 4 * size_t(volumes.faces) : 4);
+  if (!directional) return blendCell(taps, 0, c.f);
+  Texel sum(0.0f);
+  for (int axis = 0; axis < 3; ++axis)
+    if (cone.weight[axis] > 0.0f)
+      sum = sum + blendCell(taps, 4 * size_t(cone.face[axis]), c.f) * Texel(cone.weight[axis]);
+  return sum;
+}
+
+// shared::trilinearCell of `level` for every lane: 1 / 2^level from the exponent bits (exact, as
+// the kernel's 1 / float(1 << level) is), then the same operations.
+struct LaneCells {
+  alignas(16) int32_t base[3][kLanes];
+  alignas(16) float f[3][kLanes];
+  int inside;  // lane bits
+
+  LaneCells(const Lanes (&q)[3], Lanes level, float n) {
+    const LaneInts l = xsimd::to_int(level);
+    const Lanes scale = xsimd::bitwise_cast<Lanes>((LaneInts(127) - l) << 23);
+    const Lanes size = xsimd::floor(Lanes(n) * scale);  // n >> level
+    LaneMask in(true);
+    for (int k = 0; k < 3; ++k) {
+      const Lanes c = q[k] * scale - Lanes(0.5f);
+      const Lanes lowest = xsimd::floor(c);
+      (c - lowest).store_aligned(f[k]);
+      xsimd::to_int(lowest).store_aligned(base[k]);
+      in = in && lowest >= Lanes(0.0f) && lowest + Lanes(1.0f) < size;
+    }
+    inside = bitsOf(in);
+  }
+  shared::TrilinearCell at(int j) const {
+    return {glm::ivec3(base[0][j], base[1][j], base[2][j]), glm::vec3(f[0][j], f[1][j], f[2][j]),
+            (inside >> j & 1) != 0};
+  }
+};
+
+// The cones in the lanes, one array per quantity (the lanes of one batch).
+struct LaneState {
+  alignas(16) float origin[3][kLanes];
+  alignas(16) float direction[3][kLanes];
+  alignas(16) float rise[kLanes], tanHalf[kLanes], maxDistance[kLanes];
+  alignas(16) float t[kLanes], occlusion[kLanes], radiance[3][kLanes], ambient[kLanes];
+  alignas(16) float sample[4][kLanes];  // this step's samples
+  int steps[kLanes];
+  long job[kLanes];  // -1: idle
+  LaneCone cone[kLanes];
+};
+
+}  // namespace
+
+void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int kind,
+                const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits) {
+  const float n = float(params.grid.x);
+  const float beta = params.march.x;
+  const bool ambient = params.limits.x == 1 && kind <= shared::kMarchFirstHit;
+  const bool radiance = kind <= shared::kMarchFirstHit;
+  LaneState st;
+  size_t next = 0;
+  const auto start = [&](int j) {
+    st.job[j] = next < jobs.size() ? long(next) : -1;
+    if (st.job[j] < 0) return;
+    const ConeJob& c = jobs[next++];
+    for (int k = 0; k < 3; ++k) {
+      st.origin[k][j] = c.origin[k];
+      st.direction[k][j] = c.direction[k];
+      st.radiance[k][j] = 0.0f;
+    }
+    st.rise[j] = c.rise;
+    st.tanHalf[j] = c.tanHalf;
+    st.maxDistance[j] = c.maxDistance;
+    st.t[j] = 0.5f;
+    st.occlusion[j] = 0.0f;
+    st.ambient[j] = 0.0f;
+    st.steps[j] = 0;
+    const glm::vec3 d = c.direction;
+    st.cone[j] = {{d.x >= 0.0f ? 0 : 1, d.y >= 0.0f ? 2 : 3, d.z >= 0.0f ? 4 : 5}, d * d};
+  };
+  const auto finish = [&](int j, bool exited) {
+    shared::ConeHit h;
+    h.radiance = glm::vec3(st.radiance[0][j], st.radiance[1][j], st.radiance[2][j]);
+    h.occlusion = st.occlusion[j];
+    h.ambient = st.ambient[j];
+    if (exited && radiance) {
+      const glm::vec3 sky = glm::vec3(params.background) * (1.0f - h.occlusion);
+      h.radiance = h.radiance + sky;
+    }
+    hits[size_t(st.job[j])] = h;
+    start(j);
+  };
+  for (int j = 0; j < kLanes; ++j) start(j);
+
+  for (;;) {
+    int live = 0;
+    for (int j = 0; j < kLanes; ++j) live |= int(st.job[j] >= 0) << j;
+    if (live == 0) break;
+    // Lanes that stop before sampling: the step limit or the distance reached (not exited), or
+    // the grid left (exited).
+    int over = 0;
+    for (int j = 0; j < kLanes; ++j) over |= int(st.steps[j] >= params.limits.y) << j;
+    const Lanes t = Lanes::load_aligned(st.t);
+    over = (over | bitsOf(t > Lanes::load_aligned(st.maxDistance))) & live;
+    Lanes q[3];
+    LaneMask outside(false);
+    for (int k = 0; k < 3; ++k) {
+      q[k] = Lanes::load_aligned(st.origin[k]) + Lanes::load_aligned(st.direction[k]) * t;
+      outside = outside || q[k] < Lanes(0.0f) || q[k] > Lanes(n);
+    }
+    const int exited = bitsOf(outside) & live & ~over;
+    const int sampling = live & ~over & ~exited;
+
+    Lanes width = Lanes(2.0f) * t * Lanes::load_aligned(st.tanHalf);
+    if (params.surface.x > 0.0f) {
+      const Lanes height = Lanes(params.march.y) + t * Lanes::load_aligned(st.rise);
+      width = glmMin(width, height * Lanes(params.surface.x));
+    }
+    const Lanes diameter = glmMax(width, Lanes(1.0f));
+    const Lanes level = glmMin(log2Lanes(diameter), Lanes(float(params.grid.y)));
+    const Lanes l0 = xsimd::floor(level);
+    const Lanes f = level - l0;
+
+    // Each sampling lane's quadrilinear sample (shared::sampleCone), filtered on its own.
+    const LaneCells lower(q, l0, n), upper(q, l0 + Lanes(1.0f), n);
+    alignas(16) float l0s[kLanes], fs[kLanes];
+    l0.store_aligned(l0s);
+    f.store_aligned(fs);
+    for (int j = 0; j < kLanes; ++j) {
+      Texel s(0.0f);
+      if (sampling >> j & 1) {
+        const int l = int(l0s[j]);
+        s = sampleLevel(volumes, l, lower.at(j), st.cone[j], params);
+        if (fs[j] != 0.0f)
+          s = lerp(s, sampleLevel(volumes, l + 1, upper.at(j), st.cone[j], params), fs[j]);
+      }
+      alignas(16) float v[4];
+      s.store_aligned(v);
+      for (int k = 0; k < 4; ++k) st.sample[k][j] = v[k];
+    }
+
+    const Lanes sampleAlpha = Lanes::load_aligned(st.sample[3]);
+    const Lanes a = glmMin(sampleAlpha, Lanes(1.0f));
+    LaneMask seen = a > Lanes(0.0f);  // lanes that did not sample hold 0
+    Lanes corrected;
+    if (kind == shared::kMarchShadowKahl) {
+      const Lanes x = xsimd::sqrt(t) * Lanes(params.shadow.y) / Lanes::load_aligned(st.maxDistance);
+      const Lanes c = glmMin(glmMax(x, Lanes(0.0f)), Lanes(1.0f));
+      corrected = a * (c * c * (Lanes(3.0f) - Lanes(2.0f) * c));
+    } else if (beta == 1.0f) {
+      corrected = a;
+    } else {
+      const LaneMask opaque = a >= Lanes(1.0f);
+      const Lanes transparency = xsimd::select(seen && !opaque, Lanes(1.0f) - a, Lanes(1.0f));
+      corrected = xsimd::select(opaque, a, Lanes(1.0f) - powLanes(transparency, Lanes(beta)));
+    }
+    int firstHit = 0;
+    if (kind == shared::kMarchFirstHit) {
+      const LaneMask hit = seen && corrected > Lanes(0.01f);
+      firstHit = bitsOf(hit);
+      seen = seen && !hit;
+      for (int k = 0; k < 3; ++k) {
+        const Lanes surface = Lanes::load_aligned(st.sample[k]) / sampleAlpha;
+        xsimd::select(hit, surface, Lanes::load_aligned(st.radiance[k]))
+            .store_aligned(st.radiance[k]);
+      }
+      Lanes occlusion = xsimd::select(hit, Lanes(1.0f), Lanes::load_aligned(st.occlusion));
+      occlusion.store_aligned(st.occlusion);
+    }
+    const Lanes occlusion = Lanes::load_aligned(st.occlusion);
+    const Lanes remaining = Lanes(1.0f) - occlusion;
+    if (radiance) {
+      const Lanes scale = remaining * corrected / a;
+      for (int k = 0; k < 3; ++k) {
+        const Lanes r = Lanes::load_aligned(st.radiance[k]);
+        xsimd::select(seen, r + Lanes::load_aligned(st.sample[k]) * scale, r)
+            .store_aligned(st.radiance[k]);
+      }
+    }
+    if (ambient) {
+      const Lanes falloff =
+          Lanes(1.0f) / (Lanes(1.0f) + Lanes(params.shadow.z) * (Lanes(0.5f) * diameter));
+      const Lanes before = Lanes::load_aligned(st.ambient);
+      xsimd::select(seen, before + (Lanes(1.0f) - before) * corrected * falloff, before)
+          .store_aligned(st.ambient);
+    }
+    const Lanes occluded = xsimd::select(seen, occlusion + remaining * corrected, occlusion);
+    occluded.store_aligned(st.occlusion);
+    const int opaque = bitsOf(seen && occluded >= Lanes(0.999f));
+
+    const Lanes step = glmMax(Lanes(beta) * diameter, Lanes(params.march.z));
+    (t + step).store_aligned(st.t);
+    for (int j = 0; j < kLanes; ++j) ++st.steps[j];
+    for (int j = 0; j < kLanes; ++j) {
+      if ((over | firstHit | opaque) >> j & 1)
+        finish(j, false);
+      else if (exited >> j & 1)
+        finish(j, true);
+    }
+  }
+}
+
+}  // namespace voxgi::cpu

@@ -1,0 +1,29 @@
+// The CPU's fast path for shared::marchCone: a stream of cones marched four at a time, one per
+// SIMD lane (xsimd over SSE2). A lane whose cone ends takes the next cone of the stream, so lanes
+// stay busy while neighbouring cones end at different steps. The per-step arithmetic (position,
+// width, level, opacity correction, compositing) runs in the lanes; each lane's sample is filtered
+// on its own, a voxel's four words in one register. It computes exactly what marchCone computes:
+// the same operations in the same order, no fused multiply-add (tests/vct/cone_lanes_test.cpp
+// checks it bit for bit), so the CPU's images do not depend on which path traced them.
+#pragma once
+
+#include <span>
+
+#include "cpu/vct/cone_volumes.h"
+
+namespace voxgi::cpu {
+
+// One cone: marchCone's arguments but the kind, which all cones of a stream share.
+struct ConeJob {
+  glm::vec3 origin;
+  glm::vec3 direction;  // unit
+  float rise;           // direction . n of the surface it leaves
+  float tanHalf;        // tan(half aperture)
+  float maxDistance;    // voxels
+};
+
+// hits[i] = shared::marchCone(volumes, jobs[i]..., kind, params), bit for bit.
+void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int kind,
+                const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
+
+}  // namespace voxgi::cpu

@@ -1,0 +1,131 @@
+// The lanes (cpu/vct/cone_lanes.h) compute exactly what the shared marchCone computes: bit for
+// bit, on random cones through a lit Cornell box, for every kind of march and the settings that
+// change the arithmetic (step factor, clearance, pyramid mode, ambient occlusion, step limit).
+#include <bit>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "common/scene_load.h"
+#include "common/vct/kernel_params.h"
+#include "common/vct/radiance_buffers.h"
+#include "cpu/vct/cone_lanes.h"
+#include "tests/test_scenes.h"
+
+namespace voxgi::test {
+namespace {
+
+void expectSameBits(const shared::ConeHit& lanes, const shared::ConeHit& scalar, size_t job) {
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(std::bit_cast<uint32_t>(lanes.radiance[k]),
+              std::bit_cast<uint32_t>(scalar.radiance[k]))
+        << "job " << job << " radiance " << k << ": " << lanes.radiance[k] << " vs "
+        << scalar.radiance[k];
+  EXPECT_EQ(std::bit_cast<uint32_t>(lanes.occlusion), std::bit_cast<uint32_t>(scalar.occlusion))
+      << "job " << job << ": " << lanes.occlusion << " vs " << scalar.occlusion;
+  EXPECT_EQ(std::bit_cast<uint32_t>(lanes.ambient), std::bit_cast<uint32_t>(scalar.ambient))
+      << "job " << job;
+}
+
+// Random cones: origins anywhere in the grid and a little outside it, any direction, apertures
+// from a pencil to a hemisphere's, lengths from a voxel to past the grid.
+std::vector<cpu::ConeJob> randomCones(int n, size_t count, uint32_t seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  std::vector<cpu::ConeJob> jobs;
+  for (size_t i = 0; i < count; ++i) {
+    const glm::vec3 origin = glm::vec3(unit(rng), unit(rng), unit(rng)) * (float(n) + 2.0f) - 1.0f;
+    glm::vec3 d;
+    do d = glm::vec3(unit(rng), unit(rng), unit(rng)) * 2.0f - 1.0f;
+    while (glm::dot(d, d) > 1.0f || glm::dot(d, d) < 1e-4f);
+    d = glm::normalize(d);
+    // Axis-aligned directions too: their zero weights skip faces.
+    if (i % 16 == 0) d = glm::vec3(0.0f, i % 32 == 0 ? 1.0f : -1.0f, 0.0f);
+    const float tanHalf = std::pow(10.0f, unit(rng) * 3.5f - 3.0f);  // 0.001 .. 3.2
+    const float maxDistance = i % 4 == 0 ? 1e30f : unit(rng) * 2.0f * float(n);
+    jobs.push_back({origin, d, unit(rng) * 2.0f - 1.0f, tanHalf, maxDistance});
+  }
+  return jobs;
+}
+
+struct Case {
+  MipMode mip;
+  float step;
+  float clearance;
+  AmbientOcclusion ao;
+  int maxSteps;  // 0: the planned limit
+};
+
+TEST(ConeLanes, BitIdenticalToTheSharedMarch) {
+  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
+  scene.grid.resolution = 32;
+  const Case cases[] = {
+      {MipMode::anisotropic, 0.5f, 0.0f, AmbientOcclusion::on, 0},
+      {MipMode::isotropic, 1.0f, 0.0f, AmbientOcclusion::off, 0},
+      {MipMode::anisotropic, 1.0f, 0.5f, AmbientOcclusion::on, 0},
+      {MipMode::isotropic, 0.3f, 0.25f, AmbientOcclusion::on, 0},
+      {MipMode::anisotropic, 2.0f, 0.0f, AmbientOcclusion::off, 7},
+  };
+  for (const Case& c : cases) {
+    Settings settings;
+    settings.vct.mip = c.mip;
+    settings.vct.coneStep = c.step;
+    settings.vct.coneClearance = c.clearance;
+    settings.vct.ambientOcclusion = c.ao;
+    const BufferSet buffers = runCpuUntil(scene, settings, "mip");
+    const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
+    const StageContext ctx{vct(), scene, settings, triangles};
+    const ConeTraceSetup setup = prepareConeTrace(ctx);
+    shared::ConeTraceParams params = setup.params;
+    if (c.maxSteps > 0) params.limits.y = c.maxSteps;
+    params.shadow.y = 1.5f;  // Kahl's strength, so that the falloff is not a constant
+    const RadianceBuffers lit = finalRadiance(ctx);
+    const cpu::ConeVolumes volumes(buffers.at(lit.radiance), buffers.at(lit.pyramid), c.mip,
+                                   scene.grid.resolution, setup.lights, setup.cones);
+    const std::vector<cpu::ConeJob> jobs = randomCones(scene.grid.resolution, 3000, 7);
+    for (const int kind : {shared::kMarchRadiance, shared::kMarchFirstHit, shared::kMarchShadow,
+                           shared::kMarchShadowKahl}) {
+      std::vector<shared::ConeHit> hits(jobs.size());
+      cpu::marchCones(volumes, jobs, kind, params, hits);
+      size_t seen = 0;
+      for (size_t i = 0; i < jobs.size(); ++i) {
+        const cpu::ConeJob& j = jobs[i];
+        const shared::ConeHit scalar = shared::marchCone(volumes, j.origin, j.direction, j.rise,
+                                                         j.tanHalf, j.maxDistance, kind, params);
+        expectSameBits(hits[i], scalar, i);
+        seen += scalar.occlusion > 0.0f;
+        if (::testing::Test::HasFailure()) return;
+      }
+      // The cones meet the walls: the comparison is not between empty marches.
+      EXPECT_GT(seen, jobs.size() / 4) << "kind " << kind;
+    }
+  }
+}
+
+// A stream shorter than the lanes and an empty one.
+TEST(ConeLanes, ShortStreams) {
+  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
+  scene.grid.resolution = 16;
+  const Settings settings;
+  const BufferSet buffers = runCpuUntil(scene, settings, "mip");
+  const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
+  const StageContext ctx{vct(), scene, settings, triangles};
+  const ConeTraceSetup setup = prepareConeTrace(ctx);
+  const RadianceBuffers lit = finalRadiance(ctx);
+  const cpu::ConeVolumes volumes(buffers.at(lit.radiance), buffers.at(lit.pyramid),
+                                 settings.vct.mip, 16, setup.lights, setup.cones);
+  cpu::marchCones(volumes, {}, shared::kMarchRadiance, setup.params, {});
+  const std::vector<cpu::ConeJob> jobs = randomCones(16, 3, 11);
+  std::vector<shared::ConeHit> hits(jobs.size());
+  cpu::marchCones(volumes, jobs, shared::kMarchRadiance, setup.params, hits);
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    const cpu::ConeJob& j = jobs[i];
+    expectSameBits(hits[i],
+                   shared::marchCone(volumes, j.origin, j.direction, j.rise, j.tanHalf,
+                                     j.maxDistance, shared::kMarchRadiance, setup.params),
+                   i);
+  }
+}
+
+}  // namespace
+}  // namespace voxgi::test
