@@ -10,14 +10,17 @@
 namespace voxgi::cpu {
 namespace {
 
-// SSE2 is what every x86-64 runs; four lanes keep the per-lane filters' registers free.
+// SSE2 is what every x86-64 runs. Two batches of four lanes: their polynomial chains (the level's
+// log2, the step correction's pow) are independent, so the core overlaps them.
 using Arch = xsimd::sse2;
 using Lanes = xsimd::batch<float, Arch>;
 using LaneInts = xsimd::batch<int32_t, Arch>;
 using LaneMask = xsimd::batch_bool<float, Arch>;
 using Texel = xsimd::batch<float, Arch>;  // one voxel's four words
 using TexelBits = xsimd::batch<uint32_t, Arch>;
-constexpr int kLanes = int(Lanes::size);
+constexpr int kWidth = int(Lanes::size);
+constexpr int kBatches = 2;
+constexpr int kLanes = kBatches * kWidth;
 
 // glm's min and max, whose choices at ties and signed zeros the shared kernel relies on.
 Lanes glmMin(Lanes x, Lanes y) {
@@ -142,9 +145,10 @@ Texel sampleLevel(const ConeVolumes& volumes, int level, const shared::Trilinear
 struct LaneCells {
   alignas(16) int32_t base[3][kLanes];
   alignas(16) float f[3][kLanes];
-  int inside;  // lane bits
+  int inside = 0;  // lane bits
 
-  LaneCells(const Lanes (&q)[3], Lanes level, float n) {
+  // Lanes o .. o + kWidth - 1.
+  void fill(int o, const Lanes (&q)[3], Lanes level, float n) {
     const LaneInts l = xsimd::to_int(level);
     const Lanes scale = xsimd::bitwise_cast<Lanes>((LaneInts(127) - l) << 23);
     const Lanes size = xsimd::floor(Lanes(n) * scale);  // n >> level
@@ -152,11 +156,11 @@ struct LaneCells {
     for (int k = 0; k < 3; ++k) {
       const Lanes c = q[k] * scale - Lanes(0.5f);
       const Lanes lowest = xsimd::floor(c);
-      (c - lowest).store_aligned(f[k]);
-      xsimd::to_int(lowest).store_aligned(base[k]);
+      (c - lowest).store_aligned(f[k] + o);
+      xsimd::to_int(lowest).store_aligned(base[k] + o);
       in = in && lowest >= Lanes(0.0f) && lowest + Lanes(1.0f) < size;
     }
-    inside = bitsOf(in);
+    inside |= bitsOf(in) << o;
   }
   shared::TrilinearCell at(int j) const {
     return {glm::ivec3(base[0][j], base[1][j], base[2][j]), glm::vec3(f[0][j], f[1][j], f[2][j]),
@@ -164,15 +168,15 @@ struct LaneCells {
   }
 };
 
-// The cones in the lanes, one array per quantity (the lanes of one batch).
+// The cones in the lanes, one array per quantity.
 struct LaneState {
   alignas(16) float origin[3][kLanes];
   alignas(16) float direction[3][kLanes];
   alignas(16) float rise[kLanes], tanHalf[kLanes], maxDistance[kLanes];
   alignas(16) float t[kLanes], occlusion[kLanes], radiance[3][kLanes], ambient[kLanes];
   alignas(16) float sample[4][kLanes];  // this step's samples
-  int steps[kLanes];
-  long job[kLanes];  // -1: idle
+  alignas(16) float steps[kLanes];      // steps taken (exact integers)
+  long job[kLanes];                     // -1: idle
   LaneCone cone[kLanes];
 };
 
@@ -201,7 +205,7 @@ void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int k
     st.t[j] = 0.5f;
     st.occlusion[j] = 0.0f;
     st.ambient[j] = 0.0f;
-    st.steps[j] = 0;
+    st.steps[j] = 0.0f;
     const glm::vec3 d = c.direction;
     st.cone[j] = {{d.x >= 0.0f ? 0 : 1, d.y >= 0.0f ? 2 : 3, d.z >= 0.0f ? 4 : 5}, d * d};
   };
@@ -223,36 +227,42 @@ void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int k
     int live = 0;
     for (int j = 0; j < kLanes; ++j) live |= int(st.job[j] >= 0) << j;
     if (live == 0) break;
-    // Lanes that stop before sampling: the step limit or the distance reached (not exited), or
-    // the grid left (exited).
-    int over = 0;
-    for (int j = 0; j < kLanes; ++j) over |= int(st.steps[j] >= params.limits.y) << j;
-    const Lanes t = Lanes::load_aligned(st.t);
-    over = (over | bitsOf(t > Lanes::load_aligned(st.maxDistance))) & live;
-    Lanes q[3];
-    LaneMask outside(false);
-    for (int k = 0; k < 3; ++k) {
-      q[k] = Lanes::load_aligned(st.origin[k]) + Lanes::load_aligned(st.direction[k]) * t;
-      outside = outside || q[k] < Lanes(0.0f) || q[k] > Lanes(n);
+    // Before sampling, per batch: lanes that stop (the step limit or the distance reached: not
+    // exited; the grid left: exited), then each lane's diameter, level and trilinear cells.
+    int over = 0, exited = 0;
+    alignas(16) float diameters[kLanes], l0s[kLanes], fs[kLanes];
+    LaneCells lower, upper;
+    for (int o = 0; o < kLanes; o += kWidth) {
+      const Lanes t = Lanes::load_aligned(st.t + o);
+      const int stop = bitsOf(t > Lanes::load_aligned(st.maxDistance + o) ||
+                              Lanes::load_aligned(st.steps + o) >= Lanes(float(params.limits.y)));
+      Lanes q[3];
+      LaneMask outside(false);
+      for (int k = 0; k < 3; ++k) {
+        q[k] = Lanes::load_aligned(st.origin[k] + o) + Lanes::load_aligned(st.direction[k] + o) * t;
+        outside = outside || q[k] < Lanes(0.0f) || q[k] > Lanes(n);
+      }
+      over |= stop << o;
+      exited |= (bitsOf(outside) & ~stop) << o;
+      Lanes width = Lanes(2.0f) * t * Lanes::load_aligned(st.tanHalf + o);
+      if (params.surface.x > 0.0f) {
+        const Lanes height = Lanes(params.march.y) + t * Lanes::load_aligned(st.rise + o);
+        width = glmMin(width, height * Lanes(params.surface.x));
+      }
+      const Lanes diameter = glmMax(width, Lanes(1.0f));
+      const Lanes level = glmMin(log2Lanes(diameter), Lanes(float(params.grid.y)));
+      const Lanes l0 = xsimd::floor(level);
+      diameter.store_aligned(diameters + o);
+      l0.store_aligned(l0s + o);
+      (level - l0).store_aligned(fs + o);
+      lower.fill(o, q, l0, n);
+      upper.fill(o, q, l0 + Lanes(1.0f), n);
     }
-    const int exited = bitsOf(outside) & live & ~over;
+    over &= live;
+    exited &= live;
     const int sampling = live & ~over & ~exited;
 
-    Lanes width = Lanes(2.0f) * t * Lanes::load_aligned(st.tanHalf);
-    if (params.surface.x > 0.0f) {
-      const Lanes height = Lanes(params.march.y) + t * Lanes::load_aligned(st.rise);
-      width = glmMin(width, height * Lanes(params.surface.x));
-    }
-    const Lanes diameter = glmMax(width, Lanes(1.0f));
-    const Lanes level = glmMin(log2Lanes(diameter), Lanes(float(params.grid.y)));
-    const Lanes l0 = xsimd::floor(level);
-    const Lanes f = level - l0;
-
     // Each sampling lane's quadrilinear sample (shared::sampleCone), filtered on its own.
-    const LaneCells lower(q, l0, n), upper(q, l0 + Lanes(1.0f), n);
-    alignas(16) float l0s[kLanes], fs[kLanes];
-    l0.store_aligned(l0s);
-    f.store_aligned(fs);
     for (int j = 0; j < kLanes; ++j) {
       Texel s(0.0f);
       if (sampling >> j & 1) {
@@ -266,60 +276,65 @@ void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int k
       for (int k = 0; k < 4; ++k) st.sample[k][j] = v[k];
     }
 
-    const Lanes sampleAlpha = Lanes::load_aligned(st.sample[3]);
-    const Lanes a = glmMin(sampleAlpha, Lanes(1.0f));
-    LaneMask seen = a > Lanes(0.0f);  // lanes that did not sample hold 0
-    Lanes corrected;
-    if (kind == shared::kMarchShadowKahl) {
-      const Lanes x = xsimd::sqrt(t) * Lanes(params.shadow.y) / Lanes::load_aligned(st.maxDistance);
-      const Lanes c = glmMin(glmMax(x, Lanes(0.0f)), Lanes(1.0f));
-      corrected = a * (c * c * (Lanes(3.0f) - Lanes(2.0f) * c));
-    } else if (beta == 1.0f) {
-      corrected = a;
-    } else {
-      const LaneMask opaque = a >= Lanes(1.0f);
-      const Lanes transparency = xsimd::select(seen && !opaque, Lanes(1.0f) - a, Lanes(1.0f));
-      corrected = xsimd::select(opaque, a, Lanes(1.0f) - powLanes(transparency, Lanes(beta)));
-    }
-    int firstHit = 0;
-    if (kind == shared::kMarchFirstHit) {
-      const LaneMask hit = seen && corrected > Lanes(0.01f);
-      firstHit = bitsOf(hit);
-      seen = seen && !hit;
-      for (int k = 0; k < 3; ++k) {
-        const Lanes surface = Lanes::load_aligned(st.sample[k]) / sampleAlpha;
-        xsimd::select(hit, surface, Lanes::load_aligned(st.radiance[k]))
-            .store_aligned(st.radiance[k]);
+    // After sampling, per batch: the step correction, compositing and the next step.
+    int ended = over;
+    for (int o = 0; o < kLanes; o += kWidth) {
+      const Lanes t = Lanes::load_aligned(st.t + o);
+      const Lanes diameter = Lanes::load_aligned(diameters + o);
+      const Lanes sampleAlpha = Lanes::load_aligned(st.sample[3] + o);
+      const Lanes a = glmMin(sampleAlpha, Lanes(1.0f));
+      LaneMask seen = a > Lanes(0.0f);  // lanes that did not sample hold 0
+      Lanes corrected;
+      if (kind == shared::kMarchShadowKahl) {
+        const Lanes x =
+            xsimd::sqrt(t) * Lanes(params.shadow.y) / Lanes::load_aligned(st.maxDistance + o);
+        const Lanes c = glmMin(glmMax(x, Lanes(0.0f)), Lanes(1.0f));
+        corrected = a * (c * c * (Lanes(3.0f) - Lanes(2.0f) * c));
+      } else if (beta == 1.0f) {
+        corrected = a;
+      } else {
+        const LaneMask opaque = a >= Lanes(1.0f);
+        const Lanes transparency = xsimd::select(seen && !opaque, Lanes(1.0f) - a, Lanes(1.0f));
+        corrected = xsimd::select(opaque, a, Lanes(1.0f) - powLanes(transparency, Lanes(beta)));
       }
-      Lanes occlusion = xsimd::select(hit, Lanes(1.0f), Lanes::load_aligned(st.occlusion));
-      occlusion.store_aligned(st.occlusion);
-    }
-    const Lanes occlusion = Lanes::load_aligned(st.occlusion);
-    const Lanes remaining = Lanes(1.0f) - occlusion;
-    if (radiance) {
-      const Lanes scale = remaining * corrected / a;
-      for (int k = 0; k < 3; ++k) {
-        const Lanes r = Lanes::load_aligned(st.radiance[k]);
-        xsimd::select(seen, r + Lanes::load_aligned(st.sample[k]) * scale, r)
-            .store_aligned(st.radiance[k]);
+      if (kind == shared::kMarchFirstHit) {
+        // [Kahl 2019, §5.4.4]: the first sample past 1/100 is the surface, and the cone ends.
+        const LaneMask hit = seen && corrected > Lanes(0.01f);
+        ended |= bitsOf(hit) << o;
+        seen = seen && !hit;
+        for (int k = 0; k < 3; ++k) {
+          const Lanes surface = Lanes::load_aligned(st.sample[k] + o) / sampleAlpha;
+          xsimd::select(hit, surface, Lanes::load_aligned(st.radiance[k] + o))
+              .store_aligned(st.radiance[k] + o);
+        }
+        xsimd::select(hit, Lanes(1.0f), Lanes::load_aligned(st.occlusion + o))
+            .store_aligned(st.occlusion + o);
       }
+      const Lanes occlusion = Lanes::load_aligned(st.occlusion + o);
+      const Lanes remaining = Lanes(1.0f) - occlusion;
+      if (radiance) {
+        const Lanes scale = remaining * corrected / a;
+        for (int k = 0; k < 3; ++k) {
+          const Lanes r = Lanes::load_aligned(st.radiance[k] + o);
+          xsimd::select(seen, r + Lanes::load_aligned(st.sample[k] + o) * scale, r)
+              .store_aligned(st.radiance[k] + o);
+        }
+      }
+      if (ambient) {
+        const Lanes falloff =
+            Lanes(1.0f) / (Lanes(1.0f) + Lanes(params.shadow.z) * (Lanes(0.5f) * diameter));
+        const Lanes before = Lanes::load_aligned(st.ambient + o);
+        xsimd::select(seen, before + (Lanes(1.0f) - before) * corrected * falloff, before)
+            .store_aligned(st.ambient + o);
+      }
+      const Lanes occluded = xsimd::select(seen, occlusion + remaining * corrected, occlusion);
+      occluded.store_aligned(st.occlusion + o);
+      ended |= bitsOf(seen && occluded >= Lanes(0.999f)) << o;
+      (t + glmMax(Lanes(beta) * diameter, Lanes(params.march.z))).store_aligned(st.t + o);
+      (Lanes::load_aligned(st.steps + o) + Lanes(1.0f)).store_aligned(st.steps + o);
     }
-    if (ambient) {
-      const Lanes falloff =
-          Lanes(1.0f) / (Lanes(1.0f) + Lanes(params.shadow.z) * (Lanes(0.5f) * diameter));
-      const Lanes before = Lanes::load_aligned(st.ambient);
-      xsimd::select(seen, before + (Lanes(1.0f) - before) * corrected * falloff, before)
-          .store_aligned(st.ambient);
-    }
-    const Lanes occluded = xsimd::select(seen, occlusion + remaining * corrected, occlusion);
-    occluded.store_aligned(st.occlusion);
-    const int opaque = bitsOf(seen && occluded >= Lanes(0.999f));
-
-    const Lanes step = glmMax(Lanes(beta) * diameter, Lanes(params.march.z));
-    (t + step).store_aligned(st.t);
-    for (int j = 0; j < kLanes; ++j) ++st.steps[j];
     for (int j = 0; j < kLanes; ++j) {
-      if ((over | firstHit | opaque) >> j & 1)
+      if (ended >> j & 1)
         finish(j, false);
       else if (exited >> j & 1)
         finish(j, true);
