@@ -35,6 +35,13 @@ int bitsOf(LaneMask m) {
   return _mm_movemask_ps(m);
 }
 
+// floor(x) for |x| < 2^31: the truncation, less 1 where it rounded up (xsimd's floor also handles
+// larger magnitudes, which no lane holds).
+Lanes floorLanes(Lanes x) {
+  const Lanes t = xsimd::to_float(xsimd::to_int(x));
+  return t - xsimd::select(t > x, Lanes(1.0f), Lanes(0.0f));
+}
+
 // shared::log2Approx for normal x > 0 (a cone's diameter, 1 - opacity): frexp from the exponent
 // bits, then the same series.
 Lanes log2Lanes(Lanes x) {
@@ -58,7 +65,7 @@ Lanes log2Lanes(Lanes x) {
 // shared::exp2Approx: ldexp(v, i) is v times 2^i exactly for i in [-126, 127].
 Lanes exp2Lanes(Lanes x) {
   const Lanes c = glmMin(glmMax(x, Lanes(-126.0f)), Lanes(127.0f));
-  const Lanes i = xsimd::floor(c);
+  const Lanes i = floorLanes(c);
   const Lanes g = (c - i - Lanes(0.5f)) * Lanes(0.69314718f);
   const Lanes p =
       Lanes(1.0f) +
@@ -152,14 +159,16 @@ struct LaneCells {
   void fill(int o, const Lanes (&q)[3], Lanes level, float n) {
     const LaneInts l = xsimd::to_int(level);
     const Lanes scale = xsimd::bitwise_cast<Lanes>((LaneInts(127) - l) << 23);
-    const Lanes size = xsimd::floor(Lanes(n) * scale);  // n >> level
+    // The level has n / 2^level voxels a side, rounded down: lowest + 1 < that whole number
+    // exactly where lowest + 2 <= n / 2^level.
+    const Lanes size = Lanes(n) * scale;
     LaneMask in(true);
     for (int k = 0; k < 3; ++k) {
       const Lanes c = q[k] * scale - Lanes(0.5f);
-      const Lanes lowest = xsimd::floor(c);
+      const Lanes lowest = floorLanes(c);
       (c - lowest).store_aligned(f[k] + o);
       xsimd::to_int(lowest).store_aligned(base[k] + o);
-      in = in && lowest >= Lanes(0.0f) && lowest + Lanes(1.0f) < size;
+      in = in && lowest >= Lanes(0.0f) && lowest + Lanes(2.0f) <= size;
     }
     inside |= bitsOf(in) << o;
   }
@@ -252,7 +261,7 @@ void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int k
       }
       const Lanes diameter = glmMax(width, Lanes(1.0f));
       const Lanes level = glmMin(log2Lanes(diameter), Lanes(float(params.grid.y)));
-      const Lanes l0 = xsimd::floor(level);
+      const Lanes l0 = floorLanes(level);
       diameter.store_aligned(diameters + o);
       l0.store_aligned(l0s + o);
       (level - l0).store_aligned(fs + o);
