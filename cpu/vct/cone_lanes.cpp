@@ -294,52 +294,55 @@ void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int k
       const Lanes sampleAlpha = Lanes::load_aligned(st.sample[3] + o);
       const Lanes a = glmMin(sampleAlpha, Lanes(1.0f));
       LaneMask seen = a > Lanes(0.0f);  // lanes that did not sample hold 0
-      Lanes corrected;
-      if (kind == shared::kMarchShadowKahl) {
-        const Lanes x =
-            xsimd::sqrt(t) * Lanes(params.shadow.y) / Lanes::load_aligned(st.maxDistance + o);
-        const Lanes c = glmMin(glmMax(x, Lanes(0.0f)), Lanes(1.0f));
-        corrected = a * (c * c * (Lanes(3.0f) - Lanes(2.0f) * c));
-      } else if (beta == 1.0f) {
-        corrected = a;
-      } else {
-        const LaneMask opaque = a >= Lanes(1.0f);
-        const Lanes transparency = xsimd::select(seen && !opaque, Lanes(1.0f) - a, Lanes(1.0f));
-        corrected = xsimd::select(opaque, a, Lanes(1.0f) - powLanes(transparency, Lanes(beta)));
-      }
-      if (kind == shared::kMarchFirstHit) {
-        // [Kahl 2019, §5.4.4]: the first sample past 1/100 is the surface, and the cone ends.
-        const LaneMask hit = seen && corrected > Lanes(0.01f);
-        ended |= bitsOf(hit) << o;
-        seen = seen && !hit;
-        for (int k = 0; k < 3; ++k) {
-          const Lanes surface = Lanes::load_aligned(st.sample[k] + o) / sampleAlpha;
-          xsimd::select(hit, surface, Lanes::load_aligned(st.radiance[k] + o))
-              .store_aligned(st.radiance[k] + o);
+      // Empty space (about half the samples): nothing to composite, the cones only step on.
+      if (xsimd::any(seen)) {
+        Lanes corrected;
+        if (kind == shared::kMarchShadowKahl) {
+          const Lanes x =
+              xsimd::sqrt(t) * Lanes(params.shadow.y) / Lanes::load_aligned(st.maxDistance + o);
+          const Lanes c = glmMin(glmMax(x, Lanes(0.0f)), Lanes(1.0f));
+          corrected = a * (c * c * (Lanes(3.0f) - Lanes(2.0f) * c));
+        } else if (beta == 1.0f) {
+          corrected = a;
+        } else {
+          const LaneMask opaque = a >= Lanes(1.0f);
+          const Lanes transparency = xsimd::select(seen && !opaque, Lanes(1.0f) - a, Lanes(1.0f));
+          corrected = xsimd::select(opaque, a, Lanes(1.0f) - powLanes(transparency, Lanes(beta)));
         }
-        xsimd::select(hit, Lanes(1.0f), Lanes::load_aligned(st.occlusion + o))
-            .store_aligned(st.occlusion + o);
-      }
-      const Lanes occlusion = Lanes::load_aligned(st.occlusion + o);
-      const Lanes remaining = Lanes(1.0f) - occlusion;
-      if (radiance) {
-        const Lanes scale = remaining * corrected / a;
-        for (int k = 0; k < 3; ++k) {
-          const Lanes r = Lanes::load_aligned(st.radiance[k] + o);
-          xsimd::select(seen, r + Lanes::load_aligned(st.sample[k] + o) * scale, r)
-              .store_aligned(st.radiance[k] + o);
+        if (kind == shared::kMarchFirstHit) {
+          // [Kahl 2019, §5.4.4]: the first sample past 1/100 is the surface, and the cone ends.
+          const LaneMask hit = seen && corrected > Lanes(0.01f);
+          ended |= bitsOf(hit) << o;
+          seen = seen && !hit;
+          for (int k = 0; k < 3; ++k) {
+            const Lanes surface = Lanes::load_aligned(st.sample[k] + o) / sampleAlpha;
+            xsimd::select(hit, surface, Lanes::load_aligned(st.radiance[k] + o))
+                .store_aligned(st.radiance[k] + o);
+          }
+          xsimd::select(hit, Lanes(1.0f), Lanes::load_aligned(st.occlusion + o))
+              .store_aligned(st.occlusion + o);
         }
+        const Lanes occlusion = Lanes::load_aligned(st.occlusion + o);
+        const Lanes remaining = Lanes(1.0f) - occlusion;
+        if (radiance) {
+          const Lanes scale = remaining * corrected / a;
+          for (int k = 0; k < 3; ++k) {
+            const Lanes r = Lanes::load_aligned(st.radiance[k] + o);
+            xsimd::select(seen, r + Lanes::load_aligned(st.sample[k] + o) * scale, r)
+                .store_aligned(st.radiance[k] + o);
+          }
+        }
+        if (ambient) {
+          const Lanes falloff =
+              Lanes(1.0f) / (Lanes(1.0f) + Lanes(params.shadow.z) * (Lanes(0.5f) * diameter));
+          const Lanes before = Lanes::load_aligned(st.ambient + o);
+          xsimd::select(seen, before + (Lanes(1.0f) - before) * corrected * falloff, before)
+              .store_aligned(st.ambient + o);
+        }
+        const Lanes occluded = xsimd::select(seen, occlusion + remaining * corrected, occlusion);
+        occluded.store_aligned(st.occlusion + o);
+        ended |= bitsOf(seen && occluded >= Lanes(0.999f)) << o;
       }
-      if (ambient) {
-        const Lanes falloff =
-            Lanes(1.0f) / (Lanes(1.0f) + Lanes(params.shadow.z) * (Lanes(0.5f) * diameter));
-        const Lanes before = Lanes::load_aligned(st.ambient + o);
-        xsimd::select(seen, before + (Lanes(1.0f) - before) * corrected * falloff, before)
-            .store_aligned(st.ambient + o);
-      }
-      const Lanes occluded = xsimd::select(seen, occlusion + remaining * corrected, occlusion);
-      occluded.store_aligned(st.occlusion + o);
-      ended |= bitsOf(seen && occluded >= Lanes(0.999f)) << o;
       (t + glmMax(Lanes(beta) * diameter, Lanes(params.march.z))).store_aligned(st.t + o);
       (Lanes::load_aligned(st.steps + o) + Lanes(1.0f)).store_aligned(st.steps + o);
     }
