@@ -40,9 +40,12 @@ TEST(Settings, PresetsSetTheirKeysAndListEveryKey) {
   applyPreset(s, vct, "kahl2019");
   EXPECT_EQ(s.vct.voxelShadow, VoxelShadow::none);
   EXPECT_EQ(s.vct.mip, MipMode::isotropic);
+  EXPECT_EQ(s.vct.coneOffsetUnit, ConeOffsetUnit::voxel);  // the papers' offsets are in voxels
   Settings v;
   applyPreset(v, vct, "villegas2017");
   EXPECT_EQ(v.vct.attenuation, LightAttenuation::normal_weighted);
+  EXPECT_EQ(v.vct.coneOffsetUnit, ConeOffsetUnit::voxel);
+  EXPECT_EQ(Settings{}.vct.coneOffsetUnit, ConeOffsetUnit::grid64);
   EXPECT_THROW(applyPreset(v, vct, "nobody2020"), InputError);
   const std::string help = describeSettings(vct);
   for (const std::string& kv : settingValues(Settings{}, vct))

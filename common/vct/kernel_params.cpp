@@ -24,12 +24,17 @@ shared::ConeTraceParams coneTraceParams(const StageContext& ctx, int lightCount,
   const float minStep = std::max(s.coneStep, maxDistance / float(kMaxSteps - 2));
   const int steps = std::min(kMaxSteps, int(std::ceil(maxDistance / minStep)) + 2);
   const double halfShadow = 0.5 * double(s.shadowAperture) * std::numbers::pi / 180.0;
+  // docs/stages/vct/trace_cones.md, "Self-occlusion": a start fixed in voxels comes closer to the
+  // surface as the grid gets finer, while the coarse samples that occlude stay as wide.
+  const float offset = s.coneOffsetUnit == ConeOffsetUnit::grid64
+                           ? s.coneOffset * std::max(1.0f, float(n) / 64.0f)
+                           : s.coneOffset;
   return {glm::ivec4(n, mipLevelCount(n), s.mip == MipMode::anisotropic ? 1 : 0, coneCount),
           glm::ivec4(lightCount, s.diffuseCones == DiffuseCones::first_hit ? 1 : 0,
                      s.shadowFalloff == ShadowFalloff::kahl2019 ? 1 : 0,
                      s.specularBrdf == SpecularBrdf::light_angle ? 1 : 0),
           glm::ivec4(ctx.plan.on(Effect::ambient_occlusion) ? 1 : 0, steps, 0, 0),
-          glm::vec4(s.coneStep, s.coneOffset, minStep, maxDistance),
+          glm::vec4(s.coneStep, offset, minStep, maxDistance),
           glm::vec4(float(std::tan(halfShadow)), s.shadowStrength, s.ambientLambda,
                     float(ctx.scene.grid.voxelSize())),
           glm::vec4(s.specularFalloff, 0.008f * std::numbers::pi_v<float>, 0.0f, 0.0f),

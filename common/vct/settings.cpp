@@ -27,7 +27,11 @@ const std::vector<Param>& params() {
       number<vct>("cones.step", &VctSettings::coneStep, 0.05f, 4.0f,
                   "step along a cone as a fraction of its diameter (beta)"),
       number<vct>("cones.offset", &VctSettings::coneOffset, 0.0f, 8.0f,
-                  "voxels along the normal before a cone starts (self-intersection)"),
+                  "distance along the normal before a cone starts (self-intersection), in "
+                  "cones.offset_unit"),
+      choice<vct>("cones.offset_unit", &VctSettings::coneOffsetUnit, {"grid64", "voxel"},
+                  "voxels of a 64^3 grid over the scene's box, never fewer voxels of the actual "
+                  "grid (the start stays put in the scene above 64^3), or voxels"),
       number<vct>("cones.clearance", &VctSettings::coneClearance, 0.0f, 4.0f,
                   "largest voxel a cone samples per voxel of its height above its own surface, "
                   "so that its coarse samples leave that surface out (0: as wide as the cone)"),
@@ -57,16 +61,16 @@ const std::vector<Preset>& presets() {
       {"default", {}},
       // [Kahl 2019]: direct light computed while voxelizing (no voxel shadows), glGenerateMipmap,
       // and §5.4.4's cone variants: 5 cones, first hit, smoothstep/sqrt shadows, light-angle
-      // specular.
+      // specular; the cones' offset in voxels.
       {"kahl2019",
        {"mip.mode=isotropic", "voxel_shadow.mode=none", "cones.set=kahl5",
-        "cones.diffuse=first_hit", "shadow.falloff=kahl2019", "shadow.aperture=30",
-        "specular.brdf=light_angle"}},
+        "cones.offset_unit=voxel", "cones.diffuse=first_hit", "shadow.falloff=kahl2019",
+        "shadow.aperture=30", "specular.brdf=light_angle"}},
       // [Villegas 2017]: emission in the voxels (§2.3), normal-weighted attenuation, soft voxel
-      // shadows, directional volumes, 6 cones, AO.
+      // shadows, directional volumes, 6 cones, AO, the cones' offset in voxels (§4).
       {"villegas2017",
        {"emitters.mode=voxels", "light.attenuation=normal_weighted", "voxel_shadow.mode=soft",
-        "mip.mode=anisotropic", "cones.set=villegas6", "ao.mode=on"}},
+        "mip.mode=anisotropic", "cones.set=villegas6", "ao.mode=on", "cones.offset_unit=voxel"}},
   };
   return table;
 }

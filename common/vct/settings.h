@@ -12,6 +12,9 @@ enum class DiffuseCones { weighted, first_hit };          // first_hit: [Kahl 20
 enum class ShadowFalloff { plain, kahl2019 };    // kahl2019: [Kahl 2019, §5.4.4] smoothstep/sqrt
 enum class SpecularBrdf { phong, light_angle };  // light_angle: [Kahl 2019, eq. 5.6]
 enum class AmbientOcclusion { off, on };         // [Villegas 2017, §4.2]
+// What cones.offset counts: voxels of a 64³ grid over the scene's box (never fewer than that many
+// voxels of the actual grid), or voxels of the actual grid ([Villegas 2017, §4]).
+enum class ConeOffsetUnit { grid64, voxel };
 // voxels: emission in the voxels, gathered by the cones ([Villegas 2017, §2.3]); area_lights: each
 // emissive triangle an area light (shaders/shared/area_light.h); automatic ("auto"): area lights
 // up to kMaxAreaLights emissive triangles, else voxels (common/lights.h, emittersFor)
@@ -29,8 +32,9 @@ struct VctSettings {
   // trace_cones
   ConeSet cones = ConeSet::equal7;
   DiffuseCones diffuseCones = DiffuseCones::weighted;
-  float coneStep = 0.5f;         // beta: step = beta * cone diameter
-  float coneOffset = 1.0f;       // voxels along the normal before a cone starts
+  float coneStep = 0.5f;    // beta: step = beta * cone diameter
+  float coneOffset = 1.0f;  // along the normal before a cone starts, in coneOffsetUnit
+  ConeOffsetUnit coneOffsetUnit = ConeOffsetUnit::grid64;
   float coneClearance = 0.0f;    // sampled voxel size per voxel of height above the surface; 0: off
   float shadowAperture = 10.0f;  // degrees
   ShadowFalloff shadowFalloff = ShadowFalloff::plain;

@@ -121,6 +121,26 @@ Material emitter() {
   return m;
 }
 
+// cones.offset counts voxels of a 64³ grid over the scene's box (docs/stages/vct/trace_cones.md,
+// "Self-occlusion"): from 64³ up the cones start at the same place in the scene, and never closer
+// than that many voxels of the actual grid; `voxel` counts plain voxels.
+TEST(TraceCones, TheStartOffsetStaysPutInTheSceneFrom64Up) {
+  const std::pair<int, float> expected[] = {{16, 1.5f}, {64, 1.5f}, {128, 3.0f}, {256, 6.0f}};
+  for (const auto& [n, grid64] : expected) {
+    const Scene scene = emptyScene(n, glm::vec3(1.0f));
+    const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
+    Settings settings;
+    settings.vct.coneOffset = 1.5f;
+    EXPECT_EQ(prepareConeTrace(StageContext{vct(), scene, settings, triangles}).params.march.y,
+              grid64)
+        << n;
+    settings.vct.coneOffsetUnit = ConeOffsetUnit::voxel;
+    EXPECT_EQ(prepareConeTrace(StageContext{vct(), scene, settings, triangles}).params.march.y,
+              1.5f)
+        << n;
+  }
+}
+
 // An emitting square (radiance 1) of half-size 1/4 facing down, 1/2 above a receiver looking up,
 // at 64^3: E / pi = F = 0.2395. The tolerance per set is the error measured when the set was
 // added plus a margin (docs/stages/vct/trace_cones.md): the cone set's quadrature and the pyramid's
