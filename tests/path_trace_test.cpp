@@ -13,6 +13,7 @@ namespace {
 
 using reference::pathTrace;
 using reference::PathTraceOptions;
+using reference::SamplerKind;
 
 // The inside of a cube [-1, 1]^3 whose faces point inwards.
 std::vector<Triangle> insideOfCube() {
@@ -118,32 +119,37 @@ TEST(PathTrace, FurnaceConvergesToEmissionOverOneMinusAlbedo) {
   const Scene scene = withCamera(makeScene(insideOfCube(), unitGrid(8), m), {0.1, 0.2, 0.3},
                                  {0.5, 0.1, -1.0}, {0, 1, 0}, 90.0, 16);
   // bounces k: E * (1 + a + ... + a^(k+1)); unlimited: E / (1 - a).
-  for (const auto& [bounces, expected] :
-       std::vector<std::pair<int, double>>{{0, 1.5}, {1, 1.75}, {-1, 2.0}}) {
-    PathTraceOptions o;
-    o.spp = 16;
-    o.bounces = bounces;
-    const auto r = pathTrace(scene, o);
-    const double mean = meanOf(r.image).x;
-    const double standardError = std::sqrt(meanOf(r.variance).x / double(r.image.pixels.size()));
-    EXPECT_NEAR(mean, expected, 4.0 * standardError + 1e-4)
-        << "bounces " << bounces << " se " << standardError;
-    EXPECT_LT(standardError, 0.01) << bounces;
-  }
+  for (const SamplerKind sampler : {SamplerKind::independent, SamplerKind::sobol})
+    for (const auto& [bounces, expected] :
+         std::vector<std::pair<int, double>>{{0, 1.5}, {1, 1.75}, {-1, 2.0}}) {
+      PathTraceOptions o;
+      o.spp = 16;
+      o.bounces = bounces;
+      o.sampler = sampler;
+      const auto r = pathTrace(scene, o);
+      const double mean = meanOf(r.image).x;
+      const double standardError = std::sqrt(meanOf(r.variance).x / double(r.image.pixels.size()));
+      EXPECT_NEAR(mean, expected, 4.0 * standardError + 1e-4)
+          << "bounces " << bounces << " se " << standardError << " sampler " << int(sampler);
+      EXPECT_LT(standardError, 0.01) << bounces;
+    }
 }
 
 TEST(PathTrace, BitIdenticalForAnyThreadCount) {
   Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
   scene.camera.width = scene.camera.height = 16;
-  PathTraceOptions o;
-  o.spp = 4;
-  std::vector<glm::vec3> reference;
-  for (int threads : {1, 2, 8}) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-    tbb::task_arena arena(threads);
-    const auto r = arena.execute([&] { return pathTrace(scene, o); });
-    if (reference.empty()) reference = r.image.pixels;
-    EXPECT_EQ(r.image.pixels, reference) << threads << " threads";
+  for (const SamplerKind sampler : {SamplerKind::independent, SamplerKind::sobol}) {
+    PathTraceOptions o;
+    o.spp = 4;
+    o.sampler = sampler;
+    std::vector<glm::vec3> reference;
+    for (int threads : {1, 2, 8}) {
+      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+      tbb::task_arena arena(threads);
+      const auto r = arena.execute([&] { return pathTrace(scene, o); });
+      if (reference.empty()) reference = r.image.pixels;
+      EXPECT_EQ(r.image.pixels, reference) << threads << " threads, sampler " << int(sampler);
+    }
   }
 }
 

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
 #include <memory>
 
 #include <CLI/CLI.hpp>
@@ -452,6 +453,15 @@ int main(int argc, char** argv) {
                    "path: indirect bounces after the first hit (-1: unlimited, Russian roulette)")
       ->check(CLI::Range(-1, 1000));
   render->add_option("--seed", pathOptions.seed, "path: random seed");
+  render
+      ->add_option("--sampler", pathOptions.sampler,
+                   "path: independent (hashed random numbers) or sobol (Owen-scrambled Sobol', "
+                   "docs/path-tracer.md)")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, reference::SamplerKind>{
+              {"independent", reference::SamplerKind::independent},
+              {"sobol", reference::SamplerKind::sobol}},
+          CLI::ignore_case));
   render->add_option("--out", out, "output EXR (linear); path also writes OUT.variance.exr")
       ->required();
   render->add_option("--png", png, "also write a tone-mapped sRGB preview");

@@ -8,10 +8,10 @@
 #include <numbers>
 #include <vector>
 
-#include "common/counter_random.h"
 #include "common/memory.h"
 #include "common/parallel.h"
 #include "common/ray_scene.h"
+#include "validation/reference/sampler.h"
 
 namespace voxgi::reference {
 namespace {
@@ -19,9 +19,6 @@ namespace {
 using glm::dvec3;
 using glm::vec3;
 constexpr float kPi = std::numbers::pi_v<float>;
-
-// Random numbers of one (pixel, sample): key = hash(seed, pixel, sample), independent of threads.
-using Sampler = CounterRandom;
 
 float luminance(vec3 c) {
   return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
@@ -152,6 +149,7 @@ class Tracer {
   // Radiance arriving at the camera along (o, d), and its terms. From the second vertex on, what
   // the path brings back reaches the camera through the first vertex's lobes; `lobeThroughput`
   // splits `throughput` by the lobe that the first vertex's BSDF value came from.
+  template <class Sampler>
   PathSample radiance(vec3 o, vec3 d, Sampler& rng) {
     PathSample sample;
     vec3& result = sample.radiance;
@@ -227,7 +225,7 @@ class Tracer {
       }
       if (bounces_ < 0 && depth >= 3) {  // Russian roulette for unlimited bounces
         const float q = std::min(0.95f, maxComponent(throughput));
-        if (rng.next() >= q) break;
+        if (rng.get1D() >= q) break;
         throughput /= q;
         lobeThroughput.diffuse /= q;
         lobeThroughput.specular /= q;
@@ -297,8 +295,11 @@ class Tracer {
     return s + d > 0.0f ? s / (s + d) : 0.0f;
   }
 
+  template <class Sampler>
   Lobes sampleBsdf(const Shading& m, vec3 n, vec3 wo, Sampler& rng, vec3& wi, float& pdf) const {
-    const float choice = rng.next(), u1 = rng.next(), u2 = rng.next();
+    const float choice = rng.get1D();
+    const glm::vec2 u = rng.get2D();
+    const float u1 = u.x, u2 = u.y;
     if (choice < specularProbability(m)) {  // Phong lobe around the mirror direction
       const vec3 r = 2.0f * glm::dot(n, wo) * n - wo;
       wi = around(r, std::pow(u1, 1.0f / (m.shininess + 1.0f)), 2.0f * kPi * u2);
@@ -317,9 +318,12 @@ class Tracer {
 
   // Next-event estimation: one sample of the emissive triangles (MIS-weighted) plus every
   // point, spot and directional light.
+  template <class Sampler>
   vec3 directLight(vec3 x, vec3 n, vec3 wo, const Shading& m, Sampler& rng) {
     vec3 sum(0.0f);
-    const float pick = rng.next(), u1 = rng.next(), u2 = rng.next();
+    const float pick = rng.get1D();
+    const glm::vec2 u = rng.get2D();
+    const float u1 = u.x, u2 = u.y;
     if (!s_.emitters.empty()) {
       const float target = pick * s_.emitterWeight;
       const size_t i =
@@ -406,12 +410,16 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
       glm::dvec3 sum(0.0), sum2(0.0);
       std::array<glm::dvec3, kLightTerms.size()> terms{};
       for (int s = 0; s < options.spp; ++s) {
-        Sampler rng{
-            mix64(options.seed ^ mix64(pixel ^ mix64(uint64_t(s) + 0x632be59bd9b4e019ull)))};
-        const float px = (2.0f * (float(x) + rng.next()) / float(w) - 1.0f) * tanHalf * aspect;
-        const float py = (1.0f - 2.0f * (float(y) + rng.next()) / float(h)) * tanHalf;
-        const vec3 dir = glm::normalize(forward + px * right + py * up);
-        const PathSample path = tracer.radiance(setup.local(cam.position), dir, rng);
+        const auto trace = [&](auto rng) {
+          const glm::vec2 u = rng.get2D();
+          const float px = (2.0f * (float(x) + u.x) / float(w) - 1.0f) * tanHalf * aspect;
+          const float py = (1.0f - 2.0f * (float(y) + u.y) / float(h)) * tanHalf;
+          const vec3 dir = glm::normalize(forward + px * right + py * up);
+          return tracer.radiance(setup.local(cam.position), dir, rng);
+        };
+        const PathSample path = options.sampler == SamplerKind::sobol
+                                    ? trace(SobolSampler(options.seed, pixel, uint32_t(s)))
+                                    : trace(IndependentSampler(options.seed, pixel, uint32_t(s)));
         const glm::dvec3 l(path.radiance);
         sum += l;
         sum2 += l * l;

@@ -1,6 +1,6 @@
 // The reference renderer: an unbiased path tracer on Embree 3 with the scene semantics of the
-// real-time techniques (docs/path-tracer.md). Deterministic: every random number is a hash of
-// (seed, pixel, sample, dimension), so the image is bit-identical for any thread count.
+// real-time techniques (docs/path-tracer.md). Deterministic: every sample number is a function
+// of (seed, pixel, sample, dimension), so the image is bit-identical for any thread count.
 #pragma once
 
 #include <atomic>
@@ -10,6 +10,7 @@
 #include "common/image_io.h"
 #include "common/light_terms.h"
 #include "common/scene.h"
+#include "validation/reference/sampler.h"
 
 namespace voxgi::reference {
 
@@ -17,8 +18,9 @@ struct PathTraceOptions {
   int spp = 64;
   int bounces = -1;  // indirect bounces after the first hit; -1: unlimited (Russian roulette)
   uint64_t seed = 0;
-  const std::atomic<bool>* cancel = nullptr;      // set from elsewhere (Ctrl-C) to stop early
-  std::function<void(double fraction)> progress;  // called as rows finish, from worker threads
+  SamplerKind sampler = SamplerKind::independent;  // validation/reference/sampler.h
+  const std::atomic<bool>* cancel = nullptr;       // set from elsewhere (Ctrl-C) to stop early
+  std::function<void(double fraction)> progress;   // called as rows finish, from worker threads
 };
 
 struct PathTraceResult {
