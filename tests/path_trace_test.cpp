@@ -1,5 +1,7 @@
 // The reference path tracer against scenes with known answers (after pbrt-v4's
 // integrators_test.cpp): statistical tolerances from its own variance image where noise exists.
+#include <sstream>
+
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
@@ -123,7 +125,7 @@ TEST(PathTrace, FurnaceConvergesToEmissionOverOneMinusAlbedo) {
     for (const auto& [bounces, expected] :
          std::vector<std::pair<int, double>>{{0, 1.5}, {1, 1.75}, {-1, 2.0}}) {
       PathTraceOptions o;
-      o.spp = 16;
+      o.spp = 32;  // at 16 the unlimited case's standard error is 0.0101, above the 0.01 asked
       o.bounces = bounces;
       o.sampler = sampler;
       const auto r = pathTrace(scene, o);
@@ -131,8 +133,102 @@ TEST(PathTrace, FurnaceConvergesToEmissionOverOneMinusAlbedo) {
       const double standardError = std::sqrt(meanOf(r.variance).x / double(r.image.pixels.size()));
       EXPECT_NEAR(mean, expected, 4.0 * standardError + 1e-4)
           << "bounces " << bounces << " se " << standardError << " sampler " << int(sampler);
-      EXPECT_LT(standardError, 0.01) << bounces;
+      EXPECT_LT(standardError, 0.01) << bounces << " sampler " << int(sampler);
     }
+}
+
+// Lambert's formula: the form factor from a point with unit normal n to the convex polygon v
+// (seen from its front, wholly above the point's plane), in double precision.
+double polygonFormFactor(const std::vector<glm::dvec3>& v, glm::dvec3 p, glm::dvec3 n) {
+  double sum = 0.0;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const glm::dvec3 a = glm::normalize(v[i] - p), b = glm::normalize(v[(i + 1) % v.size()] - p);
+    const glm::dvec3 c = glm::cross(a, b);
+    sum += std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) * glm::dot(n, glm::normalize(c));
+  }
+  return std::abs(sum) / (2.0 * 3.14159265358979323846);
+}
+
+// The least-squares slope of log(error) against log(spp).
+double logLogSlope(const std::vector<std::pair<double, double>>& points) {
+  double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+  for (const auto& [n, e] : points) {
+    sx += std::log(n);
+    sy += std::log(e);
+    sxx += std::log(n) * std::log(n);
+    sxy += std::log(n) * std::log(e);
+  }
+  const double k = double(points.size());
+  return (k * sxy - sx * sy) / (k * sxx - sx * sx);
+}
+
+// Convergence rate (docs/path-tracer.md, "Sampling"): a square light (two triangles) of radiance
+// L over a diffuse plane, direct light only, seen by a narrow camera looking straight down. Each
+// pixel's exact value is albedo x L x the form factor, averaged over the pixel's footprint (a
+// 32 x 32 midpoint rule). The relative RMSE over 64 pixels, from 16 to 4096 spp: plain Monte
+// Carlo falls as N^-1/2 (slope -0.5 within 0.1, about 4 standard errors of the fit), the
+// Owen-scrambled Sobol' points faster than N^-0.7 (measured: -0.83; -0.52 while the emitter was
+// picked with a number of its own).
+TEST(PathTrace, SobolErrorFallsFasterThanOneOverSqrtSpp) {
+  Material plane;
+  plane.albedo = glm::vec3(0.5f);
+  Scene scene = makeScene(quad(1, 0.0, {-1e3, -1e3}, {1e3, 1e3}), unitGrid(8), plane);
+  const std::vector<glm::dvec3> square = {
+      {0.95, 1.0, -0.25}, {1.45, 1.0, -0.25}, {1.45, 1.0, 0.25}, {0.95, 1.0, 0.25}};
+  Material light;
+  light.emission = glm::vec3(5.0f);
+  // Wound to face down (-y): emitters light their front only.
+  const Scene lit = makeScene(
+      {{square[0], square[1], square[3]}, {square[1], square[2], square[3]}}, unitGrid(8), light);
+  Mesh mesh = lit.meshes[0];
+  mesh.material = uint32_t(scene.materials.size());
+  scene.materials.push_back(light);
+  scene.meshes.push_back(mesh);
+  constexpr int kSize = 8;
+  constexpr double kFov = 5.0;
+  scene = withCamera(scene, {0, 1, 0}, {0, 0, 0}, {0, 0, 1}, kFov, kSize);
+
+  // The camera ray through screen position (x + u, y + v) meets the plane at (-sx T, 0, sy T).
+  const double tanHalf = std::tan(kFov * 3.14159265358979323846 / 360.0);
+  std::vector<double> exact;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      double sum = 0.0;
+      constexpr int kSub = 32;
+      for (int j = 0; j < kSub; ++j)
+        for (int i = 0; i < kSub; ++i) {
+          const double u = (i + 0.5) / kSub, v = (j + 0.5) / kSub;
+          const glm::dvec3 p(-(2.0 * (x + u) / kSize - 1.0) * tanHalf, 0.0,
+                             (1.0 - 2.0 * (y + v) / kSize) * tanHalf);
+          sum += polygonFormFactor(square, p, {0.0, 1.0, 0.0});
+        }
+      exact.push_back(0.5 * 5.0 * sum / (kSub * kSub));
+    }
+
+  for (const SamplerKind sampler : {SamplerKind::independent, SamplerKind::sobol}) {
+    std::vector<std::pair<double, double>> errors;
+    for (const int spp : {16, 64, 256, 1024, 4096}) {
+      PathTraceOptions o;
+      o.spp = spp;
+      o.bounces = 0;
+      o.sampler = sampler;
+      const auto r = pathTrace(scene, o);
+      double mse = 0.0;
+      for (size_t i = 0; i < exact.size(); ++i) {
+        const double d = double(r.image.pixels[i].x) - exact[i];
+        mse += d * d / (exact[i] * exact[i]);
+      }
+      errors.push_back({double(spp), std::sqrt(mse / double(exact.size()))});
+    }
+    const double slope = logLogSlope(errors);
+    std::ostringstream table;
+    for (const auto& [n, e] : errors) table << n << " spp: " << e << "; ";
+    if (sampler == SamplerKind::independent) {
+      EXPECT_NEAR(slope, -0.5, 0.1) << table.str();
+    } else {
+      EXPECT_LT(slope, -0.7) << table.str();
+    }
+  }
 }
 
 TEST(PathTrace, BitIdenticalForAnyThreadCount) {

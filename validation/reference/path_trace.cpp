@@ -27,6 +27,13 @@ float maxComponent(vec3 c) {
   return std::max({c.x, c.y, c.z});
 }
 
+// x in [lo, hi) mapped onto [0, 1): the rest of a sample that chose the interval (clamped below
+// 1 against rounding, and 0 for an empty interval).
+float stretch(float x, float lo, float hi) {
+  if (!(hi > lo)) return 0.0f;
+  return std::clamp((x - lo) / (hi - lo), 0.0f, 0x1.fffffep-1f);
+}
+
 // An orthonormal basis around n (Duff et al. 2017).
 void basis(vec3 n, vec3& t, vec3& b) {
   const float s = std::copysign(1.0f, n.z);
@@ -297,10 +304,13 @@ class Tracer {
 
   template <class Sampler>
   Lobes sampleBsdf(const Shading& m, vec3 n, vec3 wo, Sampler& rng, vec3& wi, float& pdf) const {
-    const float choice = rng.get1D();
+    // One 2D sample picks the lobe with its first coordinate, stretched back to [0, 1) within the
+    // lobe's share, and the direction: the direction keeps the sample's stratification.
     const glm::vec2 u = rng.get2D();
-    const float u1 = u.x, u2 = u.y;
-    if (choice < specularProbability(m)) {  // Phong lobe around the mirror direction
+    const float ps = specularProbability(m);
+    const bool glossy = u.x < ps;
+    const float u1 = glossy ? stretch(u.x, 0.0f, ps) : stretch(u.x, ps, 1.0f), u2 = u.y;
+    if (glossy) {  // Phong lobe around the mirror direction
       const vec3 r = 2.0f * glm::dot(n, wo) * n - wo;
       wi = around(r, std::pow(u1, 1.0f / (m.shininess + 1.0f)), 2.0f * kPi * u2);
     } else {  // cosine-weighted hemisphere
@@ -321,15 +331,18 @@ class Tracer {
   template <class Sampler>
   vec3 directLight(vec3 x, vec3 n, vec3 wo, const Shading& m, Sampler& rng) {
     vec3 sum(0.0f);
-    const float pick = rng.get1D();
+    // One 2D sample picks the emitter by power with its first coordinate, stretched back to
+    // [0, 1) within the emitter's interval, and the point on it: the point keeps the sample's
+    // stratification (a separate pick would pair the emitters with the points at random).
     const glm::vec2 u = rng.get2D();
-    const float u1 = u.x, u2 = u.y;
     if (!s_.emitters.empty()) {
-      const float target = pick * s_.emitterWeight;
+      const float target = u.x * s_.emitterWeight;
       const size_t i =
           std::min(size_t(std::upper_bound(s_.emitterCdf.begin(), s_.emitterCdf.end(), target) -
                           s_.emitterCdf.begin()),
                    s_.emitters.size() - 1);
+      const float u1 = stretch(target, i == 0 ? 0.0f : s_.emitterCdf[i - 1], s_.emitterCdf[i]),
+                  u2 = u.y;
       const Emitter& e = s_.emitters[i];
       const float su = std::sqrt(u1);
       const vec3 p = e.p0 + su * (1.0f - u2) * e.e1 + su * u2 * e.e2;  // uniform on the triangle
