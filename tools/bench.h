@@ -2,7 +2,8 @@
 // `voxgi bench voxelize` against OpenVDB's tools::meshToVolume on the same mesh and voxel size;
 // `voxgi bench vct` per-stage times of the VCT pipeline, plus mip against a memcpy of its input;
 // `voxgi bench lpv` per-stage times of lpv and holpv, propagation against the bytes it moves;
-// `voxgi bench svo` the octree's build from a point cloud against OpenVDB's point rasterisation.
+// `voxgi bench svo` the octree's build from a point cloud against OpenVDB's point rasterisation;
+// `voxgi bench path` the path tracer's efficiency per sampler against the independent one.
 #pragma once
 
 #include <functional>
@@ -69,6 +70,19 @@ struct BenchSvoOptions {
 
 void addBenchSvoOptions(CLI::App& cmd, BenchSvoOptions& options);
 int runBenchSvo(const BenchSvoOptions& options);
+
+struct BenchPathOptions {
+  std::vector<std::string> scenes{"scenes/cornell_box.json"};
+  int image = 128;
+  int spp = 64;
+  int referenceSpp = 4096;
+  int threads = 0;  // 0: all cores
+  int repeats = 3;
+  std::string json;
+};
+
+void addBenchPathOptions(CLI::App& cmd, BenchPathOptions& options);
+int runBenchPath(const BenchPathOptions& options);
 
 // The median time of each stage the plan runs after voxelize on `backend`, each from the CPU's
 // outputs of the stages before it (voxelize has its own benchmark); stage -> seconds.

@@ -517,6 +517,11 @@ int main(int argc, char** argv) {
       "the octree's build from a 1.4M-point cloud: CPU per depth and thread count, "
       "OpenVDB's point rasterisation beside it");
   tools::addBenchSvoOptions(*benchSvoCmd, benchSvo);
+  tools::BenchPathOptions benchPath;
+  auto* benchPathCmd = benchCmd->add_subcommand(
+      "path", "the path tracer per transport: each sampler's time and error against a converged "
+              "render, efficiency 1 / (seconds x MSE)");
+  tools::addBenchPathOptions(*benchPathCmd, benchPath);
 
   try {
     app.parse(argc, argv);
@@ -546,6 +551,7 @@ int main(int argc, char** argv) {
     if (*benchVctCmd) return tools::runBenchVct(benchVct);
     if (*benchLpvCmd) return tools::runBenchLpv(benchLpv);
     if (*benchSvoCmd) return tools::runBenchSvo(benchSvo);
+    if (*benchPathCmd) return tools::runBenchPath(benchPath);
   } catch (const InputError& e) {
     std::cerr << "voxgi: " << e.what() << "\n";
     return kExitBadInput;

@@ -47,11 +47,28 @@ inline uint32_t reverseBits(uint32_t x) {
 inline uint32_t dimension0(uint32_t i) {
   return reverseBits(i);
 }
+// Dimension 1 XORs the direction numbers of the index's set bits; a table per byte of the index
+// does 8 bits at a time (a shuffled index has all 32 bits in play).
+struct Dimension1Tables {
+  uint32_t byte[4][256];
+  constexpr Dimension1Tables() : byte{} {
+    uint32_t v[32] = {};
+    v[0] = 1u << 31;
+    for (int k = 1; k < 32; ++k) v[k] = v[k - 1] ^ (v[k - 1] >> 1);
+    for (int b = 0; b < 4; ++b)
+      for (uint32_t x = 0; x < 256; ++x) {
+        uint32_t r = 0;
+        for (int k = 0; k < 8; ++k)
+          if (x >> k & 1u) r ^= v[8 * b + k];
+        byte[b][x] = r;
+      }
+  }
+};
+inline constexpr Dimension1Tables kDimension1;
+
 inline uint32_t dimension1(uint32_t i) {
-  uint32_t r = 0;
-  for (uint32_t v = 1u << 31; i != 0; i >>= 1, v ^= v >> 1)
-    if (i & 1u) r ^= v;
-  return r;
+  return kDimension1.byte[0][i & 255u] ^ kDimension1.byte[1][(i >> 8) & 255u] ^
+         kDimension1.byte[2][(i >> 16) & 255u] ^ kDimension1.byte[3][i >> 24];
 }
 
 // A random nested uniform (Owen) scramble of the 32-bit fraction x [Burley 2020, §3]: each bit
