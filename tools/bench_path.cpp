@@ -64,11 +64,11 @@ void addBenchPathOptions(CLI::App& cmd, BenchPathOptions& o) {
 
 int runBenchPath(const BenchPathOptions& o) {
   std::optional<tbb::global_control> limit;
-  if (o.threads > 0)
-    limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(o.threads));
+  if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(o.threads));
   nlohmann::json rows = nlohmann::json::array();
-  std::cout << "| scene | transport | sampler | spp | seconds | samples/s | rays/s | MSE | "
-               "efficiency 1/(s MSE) | × independent |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  std::cout
+      << "| scene | transport | sampler | spp | seconds | samples/s | rays/s | MSE | "
+         "efficiency 1/(s MSE) | × independent |\n|---|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string& path : o.scenes) {
     Scene scene = loadScene(path);
     const double aspect = double(scene.camera.height) / double(scene.camera.width);

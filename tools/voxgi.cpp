@@ -519,8 +519,9 @@ int main(int argc, char** argv) {
   tools::addBenchSvoOptions(*benchSvoCmd, benchSvo);
   tools::BenchPathOptions benchPath;
   auto* benchPathCmd = benchCmd->add_subcommand(
-      "path", "the path tracer per transport: each sampler's time and error against a converged "
-              "render, efficiency 1 / (seconds x MSE)");
+      "path",
+      "the path tracer per transport: each sampler's time and error against a converged "
+      "render, efficiency 1 / (seconds x MSE)");
   tools::addBenchPathOptions(*benchPathCmd, benchPath);
 
   try {

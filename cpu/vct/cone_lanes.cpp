@@ -1,7 +1,5 @@
 #include "cpu/vct/cone_lanes.h"
 
-#include <bit>
-
 // xsimd (Debian's libxsimd-dev) rather than intrinsics: the lanes stay portable, and its batches
 // map one to one onto the IEEE operations marchCone does (no contraction, no approximations).
 #include <xsimd/xsimd.hpp>
