@@ -44,6 +44,7 @@ void vct::trace_cones(const StageContext& ctx, BufferSet& buffers) {
     struct Pixel {
       size_t e;
       glm::vec3 p, n, origin, mirror;
+      glm::vec3 tangent, bitangent;  // the diffuse cones' frame around n
       shared::ObjectData object;
       shared::DirectLight direct;
     };
@@ -54,8 +55,10 @@ void vct::trace_cones(const StageContext& ctx, BufferSet& buffers) {
         const uint32_t id = objectId.get<uint32_t>(e, 0);
         if (id == 0u) continue;  // background: every term stays 0
         const glm::vec3 p = position.vec3At(e), nrm = normal.vec3At(e);
+        glm::vec3 t, b;
+        shared::tangentFrame(nrm, t, b);
         pixels.push_back({e, p, nrm, shared::coneOrigin(p, nrm, setup.params),
-                          shared::mirrorDirection(p, nrm, setup.params), setup.objects.at(id),
+                          shared::mirrorDirection(p, nrm, setup.params), t, b, setup.objects.at(id),
                           shared::noDirectLight()});
       }
     std::vector<ConeJob> jobs;
@@ -90,11 +93,10 @@ void vct::trace_cones(const StageContext& ctx, BufferSet& buffers) {
     jobs.clear();
     for (int c = 0; c < coneCount; ++c)
       for (const Pixel& px : pixels) {
-        glm::vec3 t, b;
-        shared::tangentFrame(px.n, t, b);
         const shared::ConeData cone = volumes.coneAt(c);
-        jobs.push_back({px.origin, shared::diffuseConeDirection(t, b, px.n, cone), cone.direction.z,
-                        cone.direction.w, setup.params.march.w});
+        jobs.push_back({px.origin,
+                        shared::diffuseConeDirection(px.tangent, px.bitangent, px.n, cone),
+                        cone.direction.z, cone.direction.w, setup.params.march.w});
       }
     march(shared::diffuseMarchKind(setup.params));
     std::vector<shared::DiffuseSum> diffuse(pixels.size(), shared::noDiffuse());
