@@ -1,5 +1,6 @@
 #include "tests/test_scenes.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -57,6 +58,16 @@ Scene withCamera(Scene scene, glm::dvec3 position, glm::dvec3 lookAt, glm::dvec3
   scene.camera.fovYDeg = fov;
   scene.camera.width = scene.camera.height = size;
   return scene;
+}
+
+double polygonFormFactor(const std::vector<glm::dvec3>& v, glm::dvec3 p, glm::dvec3 n) {
+  double sum = 0.0;
+  for (size_t i = 0; i < v.size(); ++i) {
+    const glm::dvec3 a = glm::normalize(v[i] - p), b = glm::normalize(v[(i + 1) % v.size()] - p);
+    const glm::dvec3 c = glm::cross(a, b);
+    sum += std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) * glm::dot(n, glm::normalize(c));
+  }
+  return std::abs(sum) / (2.0 * 3.14159265358979323846);
 }
 
 glm::dvec3 meanOf(const Image& image) {

@@ -27,6 +27,10 @@ Scene withCamera(Scene scene, glm::dvec3 position, glm::dvec3 lookAt, glm::dvec3
 // The mean pixel of an image, per channel.
 glm::dvec3 meanOf(const Image& image);
 
+// Lambert's formula: the form factor from a point with unit normal n to the convex polygon v
+// (seen from its front, wholly above the point's plane), in double precision.
+double polygonFormFactor(const std::vector<glm::dvec3>& v, glm::dvec3 p, glm::dvec3 n);
+
 // The voxelize stage on the CPU.
 BufferSet runCpu(const Scene& scene, VoxelizeMode mode);
 // Runs the CPU stages the technique's plan runs (vct's by default), in graph order, up to and

@@ -44,7 +44,7 @@ namespace {
 
 // Keys only the path tracer takes; every other key is a staged technique's (a --set key,
 // `resolution` or `backend`).
-const std::set<std::string> kPathKeys{"spp", "bounces", "seed"};
+const std::set<std::string> kPathKeys{"spp", "bounces", "seed", "sampler", "light_sampling"};
 
 // A path key to the path tracer; to a staged technique `resolution`, `backend`, a shared key or
 // one of its own (a sweep of propagate.steps leaves vct alone).
@@ -86,6 +86,18 @@ int parseInt(const std::string& key, const std::string& value) {
   if (used != value.size() || value.empty())
     throw InputError("--sweep", key, "expected an integer, got '" + value + "'");
   return n;
+}
+
+// The value that `names` gives `name`, for a --sweep of `key`.
+template <class T, size_t N>
+T named(const std::pair<const char*, T> (&names)[N], const std::string& key,
+        const std::string& name) {
+  std::string known;
+  for (const auto& [n, value] : names) {
+    if (name == n) return value;
+    known += (known.empty() ? "" : ", ") + std::string(n);
+  }
+  throw InputError("--sweep", key, "expected one of " + known + ", got '" + name + "'");
 }
 
 // One point of the study, checked and ready to run.
@@ -201,6 +213,10 @@ std::vector<Job> makeJobs(const StudyOptions& o, const std::vector<Sweep>& sweep
           job.options.bounces = std::max(parseInt(s->key, value), -1);
         else if (s->key == "seed")
           job.options.seed = uint64_t(parseInt(s->key, value));
+        else if (s->key == "sampler")
+          job.options.sampler = named(reference::kSamplerNames, s->key, value);
+        else if (s->key == "light_sampling")
+          job.options.lightSampling = named(reference::kLightSamplingNames, s->key, value);
         else
           applySetting(job.settings, s->key + "=" + value, "--sweep");
       }
@@ -264,7 +280,7 @@ void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
   cmd.add_option(
       "--sweep", o.sweeps,
       "key=v1,v2,... (repeatable): a --set key, resolution or backend (staged techniques); spp, "
-      "bounces or seed (path)");
+      "bounces, seed, sampler or light_sampling (path)");
   cmd.add_option("--preset", o.preset, "parameter preset, before --set and the sweeps");
   cmd.add_option("--set", o.sets, "fixed parameter key=value (repeatable)");
   cmd.add_option("--reference", o.reference, "reference image (.exr)")->required();
@@ -360,7 +376,7 @@ int runStudy(const StudyOptions& o) {
   for (const Sweep& s : sweeps) csv << "," << s.key;
   csv << ",label,seconds";
   for (const std::string& s : stages) csv << "," << s << "_seconds";
-  csv << ",rmse,rel_mse,mare,ssim,ssim_loss,pareto,pareto_technique";
+  csv << ",rmse,rel_mse,mare,ssim,ssim_loss,efficiency,pareto,pareto_technique";
   if (referenceTerms)
     for (const LightTerm term : kLightTerms)
       csv << ",rel_mse_" << termName(term) << ",share_" << termName(term) << ",brightness_"
@@ -381,8 +397,12 @@ int runStudy(const StudyOptions& o) {
       if (it != results[k].stages.end()) csv << it->second;
     }
     const reference::ImageMetrics& m = metrics[k];
+    // What a unit of error costs in time: 1 / (seconds x MSE), as voxgi bench path reports it.
+    const double efficiency = 1.0 / (results[k].seconds * m.rmse * m.rmse);
     csv << "," << m.rmse << "," << m.relMse << "," << m.mare << "," << m.ssim << "," << 1.0 - m.ssim
-        << "," << (front[k] ? 1 : 0) << "," << (techniqueFront[k] ? 1 : 0);
+        << ",";
+    if (std::isfinite(efficiency)) csv << efficiency;
+    csv << "," << (front[k] ? 1 : 0) << "," << (techniqueFront[k] ? 1 : 0);
     if (referenceTerms) {
       // A technique without terms leaves its cells empty.
       for (size_t t = 0; t < kLightTerms.size(); ++t) {

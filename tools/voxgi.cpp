@@ -455,12 +455,19 @@ int main(int argc, char** argv) {
   render->add_option("--seed", pathOptions.seed, "path: random seed");
   render
       ->add_option("--sampler", pathOptions.sampler,
-                   "path: independent (hashed random numbers) or sobol (Owen-scrambled Sobol', "
-                   "docs/path-tracer.md)")
+                   "path: sobol (Owen-scrambled Sobol', docs/path-tracer.md) or independent "
+                   "(hashed random numbers)")
       ->transform(CLI::CheckedTransformer(
-          std::map<std::string, reference::SamplerKind>{
-              {"independent", reference::SamplerKind::independent},
-              {"sobol", reference::SamplerKind::sobol}},
+          std::map<std::string, reference::SamplerKind>(std::begin(reference::kSamplerNames),
+                                                        std::end(reference::kSamplerNames)),
+          CLI::ignore_case));
+  render
+      ->add_option("--light-sampling", pathOptions.lightSampling,
+                   "path: solid_angle (uniform in the solid angle an area light subtends, "
+                   "docs/path-tracer.md) or area")
+      ->transform(CLI::CheckedTransformer(
+          std::map<std::string, reference::LightSampling>(
+              std::begin(reference::kLightSamplingNames), std::end(reference::kLightSamplingNames)),
           CLI::ignore_case));
   render->add_option("--out", out, "output EXR (linear); path also writes OUT.variance.exr")
       ->required();

@@ -11,6 +11,7 @@
 #include "common/memory.h"
 #include "common/parallel.h"
 #include "common/ray_scene.h"
+#include "validation/reference/emitters.h"
 #include "validation/reference/sampler.h"
 
 namespace voxgi::reference {
@@ -20,18 +21,8 @@ using glm::dvec3;
 using glm::vec3;
 constexpr float kPi = std::numbers::pi_v<float>;
 
-float luminance(vec3 c) {
-  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
-}
 float maxComponent(vec3 c) {
   return std::max({c.x, c.y, c.z});
-}
-
-// x in [lo, hi) mapped onto [0, 1): the rest of a sample that chose the interval (clamped below
-// 1 against rounding, and 0 for an empty interval).
-float stretch(float x, float lo, float hi) {
-  if (!(hi > lo)) return 0.0f;
-  return std::clamp((x - lo) / (hi - lo), 0.0f, 0x1.fffffep-1f);
 }
 
 // An orthonormal basis around n (Duff et al. 2017).
@@ -64,11 +55,6 @@ struct PathSample {
   vec3& term(LightTerm t) { return terms[size_t(t)]; }
 };
 
-struct Emitter {
-  vec3 p0, e1, e2, normal, emission;
-  float area;
-};
-
 // The reflectance and emission at a hit: its material's, with a point's own colour as albedo.
 struct Shading {
   vec3 albedo, specular, emission;
@@ -87,9 +73,7 @@ struct Setup {
   dvec3 origin{0.0};
   RayScene rays{RayScene::BuildQuality::high};  // built once, traced millions of times
   std::vector<std::vector<vec3>> normals;       // per mesh, per triangle: unit right-hand normal
-  std::vector<Emitter> emitters;
-  std::vector<float> emitterCdf;     // by area * luminance
-  float emitterWeight = 0.0f;        // sum of area * luminance
+  Emitters emitters;
   float sceneScale = 1.0f;           // bounds diagonal, for the ray offset
   std::vector<vec3> lightPositions;  // per light, relative to origin
 
@@ -110,20 +94,15 @@ struct Setup {
       vertices.reserve(mesh.positions.size());
       for (const dvec3& p : mesh.positions) vertices.push_back(local(p));
       rays.addMesh(unsigned(m), vertices, mesh.triangles);
-      const Material& material = scene.materials[mesh.material];
-      for (size_t t = 0; t < mesh.triangles.size(); ++t) {
-        const glm::uvec3& tri = mesh.triangles[t];
+      for (const glm::uvec3& tri : mesh.triangles) {
         const dvec3 a = mesh.positions[tri.x], b = mesh.positions[tri.y], c = mesh.positions[tri.z];
         const dvec3 n = glm::cross(b - a, c - a);
         const double len = glm::length(n);
         normals[m].push_back(len > 0.0 ? vec3(n / len) : vec3(0.0f));
-        if (material.emissive() && len > 0.0) {
-          emitters.push_back({local(a), vec3(b - a), vec3(c - a), vec3(n / len), material.emission,
-                              float(0.5 * len)});
-          emitterWeight += emitters.back().area * luminance(material.emission);
-          emitterCdf.push_back(emitterWeight);
-        }
       }
+      const Material& material = scene.materials[mesh.material];
+      if (material.emissive())
+        emitters.addMesh(uint32_t(m), vertices, mesh.triangles, material.emission);
     }
     // Point clouds as discs, geometry ids after the meshes'.
     for (size_t c = 0; c < scene.pointClouds.size(); ++c) {
@@ -138,8 +117,8 @@ struct Setup {
 
 class Tracer {
  public:
-  Tracer(const Scene& scene, const Setup& setup, int bounces)
-      : scene_(scene), s_(setup), bounces_(bounces) {}
+  Tracer(const Scene& scene, const Setup& setup, int bounces, LightSampling lightSampling)
+      : scene_(scene), s_(setup), bounces_(bounces), lightSampling_(lightSampling) {}
 
   uint64_t rays = 0;
 
@@ -190,10 +169,10 @@ class Tracer {
         } else {  // found by BSDF sampling: weigh against light sampling (power heuristic)
           const float d2 = glm::dot(x - lastPoint, x - lastPoint);
           // Emissive points are not light-sampled: BSDF sampling alone finds them.
-          const float lightPdf =
-              hit.geometry < scene_.meshes.size()
-                  ? luminance(m.emission) / s_.emitterWeight * d2 / glm::dot(ng, -d)
-                  : 0.0f;
+          const float lightPdf = hit.geometry < scene_.meshes.size()
+                                     ? s_.emitters.pdf(lastPoint, hit.geometry, hit.primitive, d2,
+                                                       glm::dot(ng, -d), lightSampling_)
+                                     : 0.0f;
           const float weight = powerWeight(lastPdf, lightPdf);
           if (depth == 1) {  // found from the first vertex: direct light
             result += throughput * m.emission * weight;
@@ -331,31 +310,16 @@ class Tracer {
   template <class Sampler>
   vec3 directLight(vec3 x, vec3 n, vec3 wo, const Shading& m, Sampler& rng) {
     vec3 sum(0.0f);
-    // One 2D sample picks the emitter by power with its first coordinate, stretched back to
-    // [0, 1) within the emitter's interval, and the point on it: the point keeps the sample's
-    // stratification (a separate pick would pair the emitters with the points at random).
+    // One 2D sample picks the emitter and the point on it (validation/reference/emitters.h).
     const glm::vec2 u = rng.get2D();
     if (!s_.emitters.empty()) {
-      const float target = u.x * s_.emitterWeight;
-      const size_t i =
-          std::min(size_t(std::upper_bound(s_.emitterCdf.begin(), s_.emitterCdf.end(), target) -
-                          s_.emitterCdf.begin()),
-                   s_.emitters.size() - 1);
-      const float u1 = stretch(target, i == 0 ? 0.0f : s_.emitterCdf[i - 1], s_.emitterCdf[i]),
-                  u2 = u.y;
-      const Emitter& e = s_.emitters[i];
-      const float su = std::sqrt(u1);
-      const vec3 p = e.p0 + su * (1.0f - u2) * e.e1 + su * u2 * e.e2;  // uniform on the triangle
-      vec3 toLight = p - x;
-      const float d2 = glm::dot(toLight, toLight);
-      const float dist = std::sqrt(d2);
-      toLight /= dist;
-      const float cosLight = glm::dot(e.normal, -toLight);
-      const vec3 f = evalBsdf(m, n, wo, toLight).sum();
-      if (cosLight > 0.0f && maxComponent(f) > 0.0f && visible(x, toLight, dist * (1.0f - 1e-4f))) {
-        const float lightPdf = luminance(e.emission) / s_.emitterWeight * d2 / cosLight;
-        const float w = powerWeight(lightPdf, bsdfPdf(m, n, wo, toLight));
-        sum += f * e.emission * glm::dot(n, toLight) * w / lightPdf;
+      const EmitterSample e = s_.emitters.sample(x, u, lightSampling_);
+      if (e.pdf > 0.0f) {
+        const vec3 f = evalBsdf(m, n, wo, e.direction).sum();
+        if (maxComponent(f) > 0.0f && visible(x, e.direction, e.distance * (1.0f - 1e-4f))) {
+          const float w = powerWeight(e.pdf, bsdfPdf(m, n, wo, e.direction));
+          sum += f * e.emitter->emission * glm::dot(n, e.direction) * w / e.pdf;
+        }
       }
     }
     for (size_t li = 0; li < scene_.lights.size(); ++li) {
@@ -391,6 +355,7 @@ class Tracer {
 
   const Setup& s_;
   int bounces_;
+  LightSampling lightSampling_;
 };
 
 }  // namespace
@@ -417,7 +382,7 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
   std::atomic<int> rowsDone{0};
   parallelFor(0, h, [&](int y) {
     if (options.cancel && options.cancel->load()) return;
-    Tracer tracer(scene, setup, options.bounces);
+    Tracer tracer(scene, setup, options.bounces, options.lightSampling);
     for (int x = 0; x < w; ++x) {
       const uint64_t pixel = uint64_t(y) * uint64_t(w) + uint64_t(x);
       glm::dvec3 sum(0.0), sum2(0.0);

@@ -10,6 +10,7 @@
 #include "common/image_io.h"
 #include "common/light_terms.h"
 #include "common/scene.h"
+#include "validation/reference/emitters.h"
 #include "validation/reference/sampler.h"
 
 namespace voxgi::reference {
@@ -18,9 +19,10 @@ struct PathTraceOptions {
   int spp = 64;
   int bounces = -1;  // indirect bounces after the first hit; -1: unlimited (Russian roulette)
   uint64_t seed = 0;
-  SamplerKind sampler = SamplerKind::independent;  // validation/reference/sampler.h
-  const std::atomic<bool>* cancel = nullptr;       // set from elsewhere (Ctrl-C) to stop early
-  std::function<void(double fraction)> progress;   // called as rows finish, from worker threads
+  SamplerKind sampler = SamplerKind::sobol;                  // validation/reference/sampler.h
+  LightSampling lightSampling = LightSampling::solid_angle;  // validation/reference/emitters.h
+  const std::atomic<bool>* cancel = nullptr;      // set from elsewhere (Ctrl-C) to stop early
+  std::function<void(double fraction)> progress;  // called as rows finish, from worker threads
 };
 
 struct PathTraceResult {

@@ -5,7 +5,9 @@
 // direction, and Russian roulette.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 
 #include <glm/vec2.hpp>
 
@@ -14,6 +16,17 @@
 namespace voxgi::reference {
 
 enum class SamplerKind { sobol, independent };
+// The names of the CLI, the study's sweeps and the benchmarks.
+inline constexpr std::pair<const char*, SamplerKind> kSamplerNames[] = {
+    {"sobol", SamplerKind::sobol}, {"independent", SamplerKind::independent}};
+
+// x in [lo, hi) mapped onto [0, 1): the rest of a sample number that chose the interval, reused
+// so that one 2D sample both makes a discrete choice and places a point (clamped below 1 against
+// rounding, and 0 for an empty interval).
+inline float stretch(float x, float lo, float hi) {
+  if (!(hi > lo)) return 0.0f;
+  return std::clamp((x - lo) / (hi - lo), 0.0f, 0x1.fffffep-1f);
+}
 
 // Independent uniform numbers: the d-th is a hash of (seed, pixel, sample, d). Plain Monte Carlo,
 // whose error falls as 1/sqrt(N).
