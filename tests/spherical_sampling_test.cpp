@@ -220,7 +220,8 @@ TEST(SphericalSampling, StaysFiniteInHardCases) {
 }
 
 // A quad given as two triangles is one rectangular emitter: the pdf of a direction to either half
-// is one over the whole rectangle's solid angle. A parallelogram that is not a rectangle stays two
+// is one over the whole rectangle's solid angle (seen from a point where area sampling's weight
+// varies by 2.6 x over it). A parallelogram that is not a rectangle stays two
 // triangles, each picked by its share of the power. By area, the pdf is the power share over the
 // area, times distance² over the cosine.
 TEST(Emitters, QuadsBecomeRectanglesAndThePdfIsOneOverTheirSolidAngle) {
@@ -247,14 +248,19 @@ TEST(Emitters, QuadsBecomeRectanglesAndThePdfIsOneOverTheirSolidAngle) {
   EXPECT_NEAR(parallelogram.pdf(glm::vec3(x), 0, 0, 1.0f, 0.5f, LightSampling::solid_angle) *
                   girard(x, slanted[0], slanted[1], slanted[3]),
               0.5, 1e-5);
-  // From behind (above), solid angle sampling is not used: the area pdf.
+  // From far away, where cos θ' / d² varies by less than 2 x over the emitter, and from behind
+  // (above), solid angle sampling is not used: the area pdf.
+  EXPECT_NEAR(
+      rectangle.pdf(glm::vec3(0.5f, 0.5f, -10.0f), 0, 0, 2.0f, 0.5f, LightSampling::solid_angle),
+      4.0, 1e-6);
   EXPECT_NEAR(
       parallelogram.pdf(glm::vec3(0.2f, 0.3f, 1.0f), 0, 0, 1.0f, 0.5f, LightSampling::solid_angle),
       2.0, 1e-5);
 }
 
 // Every sample lies on the emitter, and its pdf is the one pdf() gives for the triangle it lies
-// on: what MIS relies on when a BSDF ray finds the emitter instead.
+// on: what MIS relies on when a BSDF ray finds the emitter instead. From the first point the
+// emitters are sampled by solid angle, from the second (far) by area.
 TEST(Emitters, SamplesAgreeWithThePdf) {
   const std::vector<dvec3> v = {{0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}, {3, 0, 0}, {3, 2, 0}};
   const std::vector<glm::uvec3> faces = {{0, 1, 3}, {1, 2, 3}, {3, 5, 4}};

@@ -16,8 +16,14 @@ using glm::vec3;
 
 // Below this solid angle the emitter's 1/d² varies by a few per cent over it, so area sampling
 // is as good and cheaper; above the upper bound x is within a thousandth of the emitter's size
-// of its plane, where the spherical angles lose their digits.
+// of its plane, where the spherical angles lose their digits. (The spread below decides first;
+// these bound what the spherical maps are asked to do.)
 constexpr double kMinSolidAngle = 1e-4, kMaxSolidAngle = 6.2;
+// Where area sampling's weight cos θ' / d² varies by less than this factor over the emitter,
+// sampling by solid angle lowers the variance too little to pay for its cost (docs/path-tracer.md,
+// "Light sampling": on the Cornell box a bound of 2 keeps two thirds of its gain at a third of
+// its cost; a square light beside the point, spread 2 to 3, keeps all of it).
+constexpr float kMinSpread = 2.0f;
 
 // The rectangle that triangles t and u form when they share a diagonal, both as right triangles
 // with the same orientation: its corner and edges.
@@ -57,10 +63,28 @@ struct SphericalView {
   double solidAngle = 0.0;
 };
 
+// How much area sampling's weight, cos θ' / d², varies over the emitter seen from x: its largest
+// over its smallest value at the corners and the centroid (a point behind the plane counts 0).
+float areaWeightSpread(const Emitter& e, vec3 x) {
+  const vec3 points[5] = {e.p0, e.p0 + e.e1, e.p0 + e.e2,
+                          e.rectangle ? e.p0 + e.e1 + e.e2 : e.p0 + 0.5f * (e.e1 + e.e2),
+                          e.p0 + (e.rectangle ? 0.5f : 1.0f / 3.0f) * (e.e1 + e.e2)};
+  float lo = INFINITY, hi = 0.0f;
+  for (const vec3& p : points) {
+    const vec3 d = x - p;
+    const float d2 = glm::dot(d, d);
+    const float w = std::max(0.0f, glm::dot(e.normal, d)) / (d2 * std::sqrt(d2));
+    lo = std::min(lo, w);
+    hi = std::max(hi, w);
+  }
+  return lo > 0.0f ? hi / lo : INFINITY;
+}
+
 SphericalView sphericalView(const Emitter& e, vec3 x, LightSampling how) {
   SphericalView view;
   // Behind its plane the emitter lights nothing, however it is sampled: area sampling is cheaper.
   if (how != LightSampling::solid_angle || glm::dot(e.normal, x - e.p0) <= 0.0f) return view;
+  if (areaWeightSpread(e, x) < kMinSpread) return view;
   const dvec3 xd(x);
   if (e.rectangle)
     view.rectangle = SphericalRectangle::make(xd, dvec3(e.p0), dvec3(e.e1), dvec3(e.e2));

@@ -22,8 +22,8 @@ std::optional<dvec3> unit(const dvec3& v) {
   return v / len;
 }
 
-// Van Oosterom and Strackee's formula for the solid angle of the triangle of unit directions a, b,
-// c: no cancellation for small triangles, unlike the sum of the spherical angles minus pi.
+// [Van Oosterom & Strackee 1983]'s formula for the solid angle of the triangle of unit directions
+// a, b, c: no cancellation for small triangles, unlike the sum of the spherical angles minus pi.
 double solidAngleOf(const dvec3& a, const dvec3& b, const dvec3& c) {
   const double triple = std::abs(glm::dot(a, glm::cross(b, c)));
   return 2.0 * std::atan2(triple, 1.0 + glm::dot(a, b) + glm::dot(b, c) + glm::dot(c, a));
@@ -48,7 +48,7 @@ std::optional<SphericalTriangle> SphericalTriangle::make(const dvec3& x, const d
 }
 
 dvec3 SphericalTriangle::sample(glm::dvec2 u) const {
-  // Arvo 1995: the first coordinate fixes the area of the sub-triangle (a, b, c'), which places
+  // [Arvo 1995b]: the first coordinate fixes the area of the sub-triangle (a, b, c'), which places
   // c' on the arc from a to c; the second places the point on the arc from b to c' so that the
   // area up to it grows linearly.
   const double area = u.x * solidAngle_;
@@ -85,21 +85,29 @@ std::optional<SphericalRectangle> SphericalRectangle::make(const dvec3& x, const
   if (!(r.z0_ < 0.0)) return std::nullopt;
   r.x1_ = r.x0_ + width;
   r.y1_ = r.y0_ + height;
-  // Urena et al. 2013: the planes through x and each edge have the normals n0 = (0, z0, -y0),
-  // n1 = (-z0, 0, x1), n2 = (0, -z0, y1) and n3 = (z0, 0, -x0) (unnormalised), and the
-  // polygon's interior angles are the angles between neighbouring planes; the solid angle is
-  // their sum minus 2 pi. It cancels to about 1e-15 absolute, 1e-11 of the smallest solid angle
-  // the emitters sample this way.
-  // (Not std::hypot: its care against overflow is not needed at scene coordinates, and costs.)
-  const auto length = [&](double a) { return std::sqrt(r.z0_ * r.z0_ + a * a); };
-  const double l0 = length(r.y0_), l1 = length(r.x1_), l2 = length(r.y1_), l3 = length(r.x0_);
-  const auto interior = [](double cosine) { return std::acos(std::clamp(cosine, -1.0, 1.0)); };
-  const double g0 = interior(r.y0_ * r.x1_ / (l0 * l1)), g1 = interior(-r.x1_ * r.y1_ / (l1 * l2)),
-               g2 = interior(r.y1_ * r.x0_ / (l2 * l3)), g3 = interior(-r.x0_ * r.y0_ / (l3 * l0));
-  r.b0_ = -r.y0_ / l0;
-  r.b1_ = r.y1_ / l2;
-  r.k_ = 2.0 * kPi - g2 - g3;
-  r.solidAngle_ = g0 + g1 - r.k_;
+  // [Urena 2013]: the planes through x and each edge have the normals n0 = (0, z0, -y0),
+  // n1 = (-z0, 0, x1), n2 = (0, -z0, y1) and n3 = (z0, 0, -x0), and the polygon's interior
+  // angles are the angles between neighbouring planes. Between n0 and n1, say, the cosine is
+  // y0 x1 and the sine |z0| |v10| over the same product of lengths, so each angle is the
+  // argument of a complex number with no square roots of the normals, and each pair's sum the
+  // argument of their product: two atan2 where the four angles would take four acos. The
+  // solid angle is the sum of all four minus 2 pi; it cancels to about 1e-15 absolute, 1e-11 of
+  // the smallest solid angle the emitters sample this way.
+  const double z = std::abs(r.z0_), z2 = r.z0_ * r.z0_;
+  const auto radius = [&](double a, double b) { return std::sqrt(a * a + b * b + z2); };
+  const double d00 = radius(r.x0_, r.y0_), d10 = radius(r.x1_, r.y0_), d11 = radius(r.x1_, r.y1_),
+               d01 = radius(r.x0_, r.y1_);
+  // The argument of (a + i b)(c + i e) in [0, 2 pi): a sum of two angles in [0, pi].
+  const auto sumOfAngles = [](double a, double b, double c, double e) {
+    const double angle = std::atan2(a * e + b * c, a * c - b * e);
+    return angle < 0.0 ? angle + 2.0 * kPi : angle;
+  };
+  const double g01 = sumOfAngles(r.y0_ * r.x1_, z * d10, -r.x1_ * r.y1_, z * d11);
+  const double g23 = sumOfAngles(r.x0_ * r.y1_, z * d01, -r.x0_ * r.y0_, z * d00);
+  r.b0_ = -r.y0_ / std::sqrt(z2 + r.y0_ * r.y0_);
+  r.b1_ = r.y1_ / std::sqrt(z2 + r.y1_ * r.y1_);
+  r.k_ = 2.0 * kPi - g23;
+  r.solidAngle_ = g01 - r.k_;
   if (!(r.solidAngle_ > 0.0)) return std::nullopt;
   return r;
 }

@@ -1,4 +1,4 @@
-// Uniform sampling of the solid angle that a triangle [Arvo 1995] or a rectangle [Urena 2013]
+// Uniform sampling of the solid angle that a triangle [Arvo 1995b] or a rectangle [Urena 2013]
 // subtends at a point: the path tracer's light sampling (docs/path-tracer.md, "Light sampling").
 // Each maps [0, 1)² onto the spherical polygon measure-preservingly and continuously, so a
 // stratified 2D sample stays stratified in solid angle. Computed in double: the spherical
