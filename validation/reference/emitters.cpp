@@ -63,28 +63,29 @@ struct SphericalView {
   double solidAngle = 0.0;
 };
 
-// How much area sampling's weight, cos θ' / d², varies over the emitter seen from x: its largest
-// over its smallest value at the corners and the centroid (a point behind the plane counts 0).
-float areaWeightSpread(const Emitter& e, vec3 x) {
+// Whether area sampling's weight, cos θ' / d², varies by more than kMinSpread over the emitter
+// seen from x: its largest over its smallest value at the corners and the centroid (a point
+// behind the plane counts 0). Compared squared, cos² θ' d² / d⁶, which needs no square root.
+bool spreadsWide(const Emitter& e, vec3 x) {
   const vec3 points[5] = {e.p0, e.p0 + e.e1, e.p0 + e.e2,
                           e.rectangle ? e.p0 + e.e1 + e.e2 : e.p0 + 0.5f * (e.e1 + e.e2),
                           e.p0 + (e.rectangle ? 0.5f : 1.0f / 3.0f) * (e.e1 + e.e2)};
   float lo = INFINITY, hi = 0.0f;
   for (const vec3& p : points) {
     const vec3 d = x - p;
-    const float d2 = glm::dot(d, d);
-    const float w = std::max(0.0f, glm::dot(e.normal, d)) / (d2 * std::sqrt(d2));
-    lo = std::min(lo, w);
-    hi = std::max(hi, w);
+    const float d2 = glm::dot(d, d), c = std::max(0.0f, glm::dot(e.normal, d));
+    const float w2 = c * c / (d2 * d2 * d2);
+    lo = std::min(lo, w2);
+    hi = std::max(hi, w2);
   }
-  return lo > 0.0f ? hi / lo : INFINITY;
+  return !(hi <= kMinSpread * kMinSpread * lo);
 }
 
 SphericalView sphericalView(const Emitter& e, vec3 x, LightSampling how) {
   SphericalView view;
   // Behind its plane the emitter lights nothing, however it is sampled: area sampling is cheaper.
   if (how != LightSampling::solid_angle || glm::dot(e.normal, x - e.p0) <= 0.0f) return view;
-  if (areaWeightSpread(e, x) < kMinSpread) return view;
+  if (!spreadsWide(e, x)) return view;
   const dvec3 xd(x);
   if (e.rectangle)
     view.rectangle = SphericalRectangle::make(xd, dvec3(e.p0), dvec3(e.e1), dvec3(e.e2));
