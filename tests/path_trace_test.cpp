@@ -151,27 +151,21 @@ double logLogSlope(const std::vector<std::pair<double, double>>& points) {
   return (k * sxy - sx * sy) / (k * sxx - sx * sx);
 }
 
-// Convergence rate (docs/path-tracer.md, "Sampling"): a square light (two triangles, joined into
-// one rectangle) of radiance L over a diffuse plane, direct light only, seen by a narrow camera
-// looking straight down. Each pixel's exact value is albedo x L x the form factor, averaged over
-// the pixel's footprint (a 32 x 32 midpoint rule). The relative RMSE over 64 pixels, from 16 to
-// 4096 spp: plain Monte Carlo falls as N^-1/2 (slope -0.5 within 0.1, about 4 standard errors of
-// the fit), the Owen-scrambled Sobol' points faster than N^-0.7 (measured: -0.79 sampling the
-// light by area, -0.76 by solid angle), and sampling by solid angle gives the lower error at
-// every N (4.4 x lower at 16 spp, 3.5 x at 4096). The plane is 20 units wide: the ray offset of
-// 1e-7 of the scene's diagonal biases the irradiance by about 1e-4 of itself at a plane 2000
-// wide, which flattened the curve after 1024 spp.
-TEST(PathTrace, SobolErrorFallsFasterThanOneOverSqrtSpp) {
+// A light of radiance 5 (the convex `polygon`, as `triangles` wound to face down, -y) one unit
+// over a diffuse plane of albedo 0.5 (20 units wide: see below), seen by a narrow camera looking
+// straight down; and each pixel's exact value, albedo x L x the form factor averaged over the
+// pixel's footprint (a 32 x 32 midpoint rule of Lambert's formula).
+struct LitPlane {
+  Scene scene;
+  std::vector<double> exact;
+};
+LitPlane litPlane(const std::vector<glm::dvec3>& polygon, const std::vector<Triangle>& triangles) {
   Material plane;
   plane.albedo = glm::vec3(0.5f);
   Scene scene = makeScene(quad(1, 0.0, {-10, -10}, {10, 10}), unitGrid(8), plane);
-  const std::vector<glm::dvec3> square = {
-      {0.95, 1.0, -0.25}, {1.45, 1.0, -0.25}, {1.45, 1.0, 0.25}, {0.95, 1.0, 0.25}};
   Material light;
   light.emission = glm::vec3(5.0f);
-  // Wound to face down (-y): emitters light their front only.
-  const Scene lit = makeScene(
-      {{square[0], square[1], square[3]}, {square[1], square[2], square[3]}}, unitGrid(8), light);
+  const Scene lit = makeScene(triangles, unitGrid(8), light);
   Mesh mesh = lit.meshes[0];
   mesh.material = uint32_t(scene.materials.size());
   scene.materials.push_back(light);
@@ -192,11 +186,36 @@ TEST(PathTrace, SobolErrorFallsFasterThanOneOverSqrtSpp) {
           const double u = (i + 0.5) / kSub, v = (j + 0.5) / kSub;
           const glm::dvec3 p(-(2.0 * (x + u) / kSize - 1.0) * tanHalf, 0.0,
                              (1.0 - 2.0 * (y + v) / kSize) * tanHalf);
-          sum += polygonFormFactor(square, p, {0.0, 1.0, 0.0});
+          sum += polygonFormFactor(polygon, p, {0.0, 1.0, 0.0});
         }
       exact.push_back(0.5 * 5.0 * sum / (kSub * kSub));
     }
+  return {scene, exact};
+}
 
+// The relative RMSE of an image of a LitPlane against its exact values.
+double relativeRmse(const Image& image, const std::vector<double>& exact) {
+  double mse = 0.0;
+  for (size_t i = 0; i < exact.size(); ++i) {
+    const double d = double(image.pixels[i].x) - exact[i];
+    mse += d * d / (exact[i] * exact[i]);
+  }
+  return std::sqrt(mse / double(exact.size()));
+}
+
+// Convergence rate (docs/path-tracer.md, "Sampling"): a square light (two triangles, joined into
+// one rectangle) over a plane, direct light only. The relative RMSE over 64 pixels, from 16 to
+// 4096 spp: plain Monte Carlo falls as N^-1/2 (slope -0.5 within 0.1, about 4 standard errors of
+// the fit), the Owen-scrambled Sobol' points faster than N^-0.7 (measured: -0.79 sampling the
+// light by area, -0.76 by solid angle), and sampling by solid angle gives the lower error at
+// every N (4.4 x lower at 16 spp, 3.5 x at 4096). The plane is 20 units wide: the ray offset of
+// 1e-7 of the scene's diagonal biases the irradiance by about 1e-4 of itself at a plane 2000
+// wide, which flattened the curve after 1024 spp.
+TEST(PathTrace, SobolErrorFallsFasterThanOneOverSqrtSpp) {
+  const std::vector<glm::dvec3> square = {
+      {0.95, 1.0, -0.25}, {1.45, 1.0, -0.25}, {1.45, 1.0, 0.25}, {0.95, 1.0, 0.25}};
+  const auto [scene, exact] =
+      litPlane(square, {{square[0], square[1], square[3]}, {square[1], square[2], square[3]}});
   const std::pair<SamplerKind, LightSampling> variants[] = {
       {SamplerKind::independent, LightSampling::area},
       {SamplerKind::sobol, LightSampling::area},
@@ -210,13 +229,7 @@ TEST(PathTrace, SobolErrorFallsFasterThanOneOverSqrtSpp) {
       o.bounces = 0;
       o.sampler = sampler;
       o.lightSampling = lightSampling;
-      const auto r = pathTrace(scene, o);
-      double mse = 0.0;
-      for (size_t i = 0; i < exact.size(); ++i) {
-        const double d = double(r.image.pixels[i].x) - exact[i];
-        mse += d * d / (exact[i] * exact[i]);
-      }
-      errors.push_back({double(spp), std::sqrt(mse / double(exact.size()))});
+      errors.push_back({double(spp), relativeRmse(pathTrace(scene, o).image, exact)});
     }
     const double slope = logLogSlope(errors);
     std::ostringstream table;
@@ -232,6 +245,24 @@ TEST(PathTrace, SobolErrorFallsFasterThanOneOverSqrtSpp) {
     else
       areaErrors = errors;
   }
+}
+
+// A light that is one triangle is sampled by [Arvo 1995b]'s map where its spread is wide (all
+// of this one's pixels), and MIS weighs the BSDF samples that find it by the same pdf: the image
+// matches Lambert's formula to the Sobol' points' error, and by solid angle beats area (measured
+// relative RMSE at 256 spp: 0.000048 against 0.00023).
+TEST(PathTrace, TriangleLightMatchesLambertsFormula) {
+  const std::vector<glm::dvec3> triangle = {
+      {0.95, 1.0, -0.25}, {1.45, 1.0, -0.25}, {0.95, 1.0, 0.25}};
+  const auto [scene, exact] = litPlane(triangle, {{triangle[0], triangle[1], triangle[2]}});
+  PathTraceOptions o;
+  o.spp = 256;
+  o.bounces = 0;
+  const double solidAngle = relativeRmse(pathTrace(scene, o).image, exact);
+  o.lightSampling = LightSampling::area;
+  const double area = relativeRmse(pathTrace(scene, o).image, exact);
+  EXPECT_LT(solidAngle, 1.5e-4) << area;
+  EXPECT_LT(solidAngle, area);
 }
 
 TEST(PathTrace, BitIdenticalForAnyThreadCount) {
