@@ -72,7 +72,7 @@ void addBenchSvoOptions(CLI::App& cmd, BenchSvoOptions& options);
 int runBenchSvo(const BenchSvoOptions& options);
 
 struct BenchPathOptions {
-  std::vector<std::string> scenes{"scenes/cornell_box.json"};
+  std::vector<std::string> scenes{"scenes/cornell_box.json", "scenes/bunny.json"};
   int image = 128;
   int spp = 64;
   int referenceSpp = 4096;

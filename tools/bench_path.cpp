@@ -75,7 +75,8 @@ std::pair<double, double> meanSquaredError(const Image& image, const Image& refe
 }  // namespace
 
 void addBenchPathOptions(CLI::App& cmd, BenchPathOptions& o) {
-  cmd.add_option("--scenes", o.scenes, "scenes")->delimiter(',');
+  cmd.add_option("--scenes", o.scenes, "scenes (default: the shipped Cornell box and bunny)")
+      ->delimiter(',');
   cmd.add_option("--image", o.image, "image width in pixels (the height keeps the aspect)")
       ->check(CLI::Range(8, 4096));
   cmd.add_option("--spp", o.spp, "samples per pixel of the timed renders")
