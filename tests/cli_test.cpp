@@ -82,8 +82,10 @@ TEST(Cli, SampleWritesAPointCloudThatRenders) {
   CommandResult r = voxgi("sample " + sourcePath("scenes/cornell_box.json") +
                           " --points 20000 --noise 0.5 --density-gradient y:0.5 --out " + cloud);
   ASSERT_EQ(r.code, 0) << r.output;
-  r = voxgi("render " + cloud + " --technique path --spp 1 --sampler sobol --image 16 --out " +
-            testTempDir() + "box.exr");
+  r = voxgi(
+      "render " + cloud +
+      " --technique path --spp 1 --sampler independent --light-sampling area --image 16 --out " +
+      testTempDir() + "box.exr");
   EXPECT_EQ(r.code, 0) << r.output;
   // The octree renders it on either backend; it needs at least 4 leaves a side.
   for (const char* backend : {"cpu", "gpu"}) {
@@ -115,7 +117,8 @@ TEST(Cli, BadInputExitsTwoWithOneLine) {
            "dump " + scene + " --stage mip --out x --set voxel_shadow.kappa=99",
            "dump " + scene + " --stage mip --out x --set no.such.key=1",
            "dump " + scene + " --stage mip --out x --preset nobody2020",
-           "render " + scene + " --technique path --sampler halton --out x.exr"}) {
+           "render " + scene + " --technique path --sampler halton --out x.exr",
+           "render " + scene + " --technique path --light-sampling cosine --out x.exr"}) {
     const CommandResult r = voxgi(args);
     EXPECT_EQ(r.code, 2) << args << "\n" << r.output;
     EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << args << "\n" << r.output;
