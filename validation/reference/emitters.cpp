@@ -1,8 +1,8 @@
 #include "validation/reference/emitters.h"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <optional>
 
 #include "validation/reference/sampler.h"
@@ -64,8 +64,9 @@ struct SphericalView {
 };
 
 // Whether area sampling's weight, cos θ' / d², varies by more than kMinSpread over the emitter
-// seen from x: its largest over its smallest value at the corners and the centroid (a point
-// behind the plane counts 0). Compared squared, cos² θ' d² / d⁶, which needs no square root.
+// seen from x: its largest over its smallest value at the corners, the centroid and (for a
+// triangle) the middle of the edge opposite p0; a point behind the plane counts 0. Compared
+// squared, as cos² θ' d² / d⁶, which needs no square root.
 bool spreadsWide(const Emitter& e, vec3 x) {
   const vec3 points[5] = {e.p0, e.p0 + e.e1, e.p0 + e.e2,
                           e.rectangle ? e.p0 + e.e1 + e.e2 : e.p0 + 0.5f * (e.e1 + e.e2),
