@@ -3,7 +3,7 @@
 // `voxgi bench vct` per-stage times of the VCT pipeline, plus mip against a memcpy of its input;
 // `voxgi bench lpv` per-stage times of lpv and holpv, propagation against the bytes it moves;
 // `voxgi bench svo` the octree's build from a point cloud against OpenVDB's point rasterisation;
-// `voxgi bench path` the path tracer's efficiency per sampler against the independent one.
+// `voxgi bench path` the path tracer's efficiency per estimator against the former one.
 #pragma once
 
 #include <functional>

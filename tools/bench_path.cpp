@@ -6,7 +6,7 @@
 // the direct and the indirect light, and the efficiency 1 / (seconds x MSE) against the first's,
 // all in one run.
 #include <algorithm>
-#include <initializer_list>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <optional>
@@ -18,6 +18,7 @@
 #include "common/output_file.h"
 #include "common/scene_load.h"
 #include "tools/bench.h"
+#include "validation/reference/image_metrics.h"
 #include "validation/reference/path_trace.h"
 
 namespace voxgi::tools {
@@ -30,46 +31,34 @@ struct Transport {
 constexpr Transport kTransports[] = {{"direct", 0}, {"one bounce", 1}, {"full", -1}};
 
 struct Estimator {
-  const char* sampler;
-  const char* lightSampling;
-  reference::SamplerKind samplerKind;
-  reference::LightSampling lightSamplingKind;
+  reference::SamplerKind sampler;
+  reference::LightSampling lightSampling;
 };
 constexpr Estimator kEstimators[] = {
-    {"independent", "area", reference::SamplerKind::independent, reference::LightSampling::area},
-    {"sobol", "area", reference::SamplerKind::sobol, reference::LightSampling::area},
-    {"sobol", "solid_angle", reference::SamplerKind::sobol, reference::LightSampling::solid_angle}};
+    {reference::SamplerKind::independent, reference::LightSampling::area},
+    {reference::SamplerKind::sobol, reference::LightSampling::area},
+    {reference::SamplerKind::sobol, reference::LightSampling::solid_angle}};
 
-// Mean over pixels and channels of the squared difference between the sums of `terms` in two
-// term sets.
-double termsError(const TermImages& image, const TermImages& reference,
-                  std::initializer_list<LightTerm> terms) {
-  double sum = 0.0;
-  const size_t pixels = termImage(image, LightTerm::direct).pixels.size();
-  for (size_t i = 0; i < pixels; ++i)
-    for (int c = 0; c < 3; ++c) {
-      double d = 0.0;
-      for (const LightTerm t : terms)
-        d +=
-            double(termImage(image, t).pixels[i][c]) - double(termImage(reference, t).pixels[i][c]);
-      sum += d * d;
-    }
-  return sum / (3.0 * double(pixels));
+// The name a table of names (reference::kSamplerNames, kLightSamplingNames) gives `value`.
+template <class T, size_t N>
+const char* nameOf(const std::pair<const char*, T> (&names)[N], T value) {
+  for (const auto& [name, v] : names)
+    if (v == value) return name;
+  return "?";
 }
 
-// Mean over pixels and channels of the squared difference, and of the reference's own variance
-// (what its noise adds to that).
-std::pair<double, double> meanSquaredError(const Image& image, const Image& reference,
-                                           const Image& referenceVariance) {
-  double sum = 0.0, floor = 0.0;
-  for (size_t i = 0; i < image.pixels.size(); ++i)
-    for (int c = 0; c < 3; ++c) {
-      const double d = double(image.pixels[i][c]) - double(reference.pixels[i][c]);
-      sum += d * d;
-      floor += double(referenceVariance.pixels[i][c]);
-    }
-  const double n = 3.0 * double(image.pixels.size());
-  return {sum / n, floor / n};
+// An image's indirect light: the sum of its two lobes' terms.
+Image indirectLight(const TermImages& terms) {
+  Image sum = termImage(terms, LightTerm::indirect_diffuse);
+  const Image& specular = termImage(terms, LightTerm::indirect_specular);
+  for (size_t i = 0; i < sum.pixels.size(); ++i) sum.pixels[i] += specular.pixels[i];
+  return sum;
+}
+
+// Mean over pixels and channels of the squared difference (the square of compare's RMSE).
+double meanSquaredError(const Image& image, const Image& reference) {
+  const double rmse = reference::compareImages(image, reference).rmse;
+  return rmse * rmse;
 }
 
 }  // namespace
@@ -110,29 +99,34 @@ int runBenchPath(const BenchPathOptions& o) {
       converged.bounces = transport.bounces;
       converged.seed = 0x5eed5eedull;  // independent of the timed renders' seed 0
       const reference::PathTraceResult ref = reference::pathTrace(scene, converged);
+      // What the converged render's own noise adds to an MSE, by its variance estimate.
+      const double floor = std::pow(reference::noiseFloor(ref.image, ref.variance).rmse, 2);
+      const Image& refDirect = termImage(ref.terms, LightTerm::direct);
+      const Image refIndirect = indirectLight(ref.terms);
       double baseline = 0.0;  // the first estimator's efficiency
       for (const Estimator& estimator : kEstimators) {
         reference::PathTraceOptions options;
         options.spp = o.spp;
         options.bounces = transport.bounces;
-        options.sampler = estimator.samplerKind;
-        options.lightSampling = estimator.lightSamplingKind;
+        options.sampler = estimator.sampler;
+        options.lightSampling = estimator.lightSampling;
         reference::PathTraceResult result;
         const double seconds =
             medianSeconds(o.repeats, [&] { result = reference::pathTrace(scene, options); });
-        const auto [mse, floor] = meanSquaredError(result.image, ref.image, ref.variance);
-        const double direct = termsError(result.terms, ref.terms, {LightTerm::direct});
-        const double indirect = termsError(
-            result.terms, ref.terms, {LightTerm::indirect_diffuse, LightTerm::indirect_specular});
+        const double mse = meanSquaredError(result.image, ref.image);
+        const double direct =
+            meanSquaredError(termImage(result.terms, LightTerm::direct), refDirect);
+        const double indirect = meanSquaredError(indirectLight(result.terms), refIndirect);
         const double efficiency = 1.0 / (seconds * mse);
         if (baseline == 0.0) baseline = efficiency;
         const double samples = double(o.spp) * double(result.image.pixels.size());
-        std::cout << "| " << scene.file << " | " << transport.name << " | " << estimator.sampler
-                  << " | " << estimator.lightSampling << " | " << o.spp << " | "
-                  << std::setprecision(3) << seconds << " | " << samples / seconds << " | "
-                  << double(result.rays) / seconds << " | " << mse << " | " << direct << " | "
-                  << indirect << " | " << efficiency << " | " << std::setprecision(2)
-                  << efficiency / baseline << " |\n";
+        const char* sampler = nameOf(reference::kSamplerNames, estimator.sampler);
+        const char* lightSampling = nameOf(reference::kLightSamplingNames, estimator.lightSampling);
+        std::cout << "| " << scene.file << " | " << transport.name << " | " << sampler << " | "
+                  << lightSampling << " | " << o.spp << " | " << std::setprecision(3) << seconds
+                  << " | " << samples / seconds << " | " << double(result.rays) / seconds << " | "
+                  << mse << " | " << direct << " | " << indirect << " | " << efficiency << " | "
+                  << std::setprecision(2) << efficiency / baseline << " |\n";
         // Its Monte Carlo variance estimate overstates a scrambled Sobol' render's error: a
         // warning to check with a larger --reference-spp, not a floor.
         if (floor > 0.1 * mse)
@@ -140,8 +134,8 @@ int runBenchPath(const BenchPathOptions& o) {
                     << ", exceeds a tenth of this MSE: check with a larger --reference-spp)\n";
         rows.push_back({{"scene", scene.file},
                         {"transport", transport.name},
-                        {"sampler", estimator.sampler},
-                        {"light_sampling", estimator.lightSampling},
+                        {"sampler", sampler},
+                        {"light_sampling", lightSampling},
                         {"spp", o.spp},
                         {"seconds", seconds},
                         {"samples_per_second", samples / seconds},

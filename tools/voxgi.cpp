@@ -527,7 +527,7 @@ int main(int argc, char** argv) {
   tools::BenchPathOptions benchPath;
   auto* benchPathCmd = benchCmd->add_subcommand(
       "path",
-      "the path tracer per transport: each sampler's time and error against a converged "
+      "the path tracer per transport: each estimator's time and error against a converged "
       "render, efficiency 1 / (seconds x MSE)");
   tools::addBenchPathOptions(*benchPathCmd, benchPath);
 
