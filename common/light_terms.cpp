@@ -51,6 +51,13 @@ std::string_view termMeaning(LightTerm term) {
   return "";
 }
 
+Image directOnly(const TermImages& terms) {
+  Image out = termImage(terms, LightTerm::emission);
+  const Image& direct = termImage(terms, LightTerm::direct);
+  for (size_t e = 0; e < out.pixels.size(); ++e) out.pixels[e] += direct.pixels[e];
+  return out;
+}
+
 std::string termPath(const std::string& image, LightTerm term) {
   const std::filesystem::path p(image);
   return (p.parent_path() /

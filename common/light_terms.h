@@ -40,6 +40,10 @@ inline const Image& termImage(const TermImages& images, LightTerm term) {
   return images[size_t(term)];
 }
 
+// The image without its indirect terms: emission + direct. Against the reference it is the
+// baseline that asks whether a technique's indirect light helps at all (docs/accuracy.md).
+Image directOnly(const TermImages& terms);
+
 // Where the image of `term` goes beside IMAGE.exr: IMAGE.<term>.exr.
 std::string termPath(const std::string& image, LightTerm term);
 

@@ -37,9 +37,24 @@ TEST(Cli, StudyWritesEveryCombinationAndThePlot) {
     rows.emplace_back();
     for (std::string f; std::getline(fields, f, ',');) rows.back().push_back(f);
   }
-  ASSERT_EQ(lines.size(), 5u);
+  // Four renders, then the trivial answers as rows of their own.
+  ASSERT_EQ(lines.size(), 7u);
   EXPECT_EQ(lines[0].rfind("technique,backend,resolution,spp,bounces,label,seconds,", 0), 0u)
       << lines[0];
+  EXPECT_EQ(lines[5].rfind("baseline_black,,,,,black,,", 0), 0u) << lines[5];
+  EXPECT_EQ(lines[6].rfind("baseline_constant,,,,,constant,,", 0), 0u) << lines[6];
+  const auto column = [&](const std::string& name) {
+    const auto at = std::find(rows[0].begin(), rows[0].end(), name) - rows[0].begin();
+    EXPECT_LT(size_t(at), rows[0].size()) << name;
+    return size_t(at);
+  };
+  // Black carries no light, the reference's mean all of it; each render's image without its
+  // indirect light is its row's twin (the reference has a bounce, so it scores an error).
+  EXPECT_EQ(std::stod(rows[5][column("energy_g")]), 0.0);
+  EXPECT_NEAR(std::stod(rows[6][column("energy_g")]), 1.0, 1e-5);
+  EXPECT_GT(std::stod(rows[1][column("direct_only_rel_mse")]), 0.0);
+  EXPECT_GT(std::stod(rows[3][column("direct_only_rel_mse")]), 0.0);
+  EXPECT_EQ(rows[5][column("direct_only_rel_mse")], "");
   EXPECT_EQ(lines[1].rfind("vct,cpu,16,,,backend=cpu resolution=16,", 0), 0u) << lines[1];
   EXPECT_EQ(lines[2].rfind("vct,gpu,16,,,backend=gpu resolution=16,", 0), 0u) << lines[2];
   EXPECT_EQ(lines[4].rfind("path,,,2,1,spp=2 bounces=1,", 0), 0u) << lines[4];
@@ -48,7 +63,7 @@ TEST(Cli, StudyWritesEveryCombinationAndThePlot) {
   EXPECT_GT(std::stod(rows[1][size_t(rmse)]), 0.0);
   EXPECT_NEAR(std::stod(rows[1][size_t(rmse)]), std::stod(rows[2][size_t(rmse)]), 1e-6);
   int front = 0;
-  for (size_t k = 1; k < lines.size(); ++k) front += lines[k].back() == '1';
+  for (size_t k = 1; k < 5; ++k) front += lines[k].back() == '1';
   EXPECT_GE(front, 2);  // pareto_technique, the last column: each technique has a front
   // The plot is a PNG that matplotlib drew.
   std::ifstream png(dir + "s.png", std::ios::binary);
@@ -98,7 +113,9 @@ TEST(Cli, StudySweepsThePathTracersEstimatorsAndReportsEfficiency) {
     for (size_t k = 0; k < cells.size() && k < header.size(); ++k)
       rows.back()[header[k]] = cells[k];
   }
-  ASSERT_EQ(rows.size(), 4u);
+  ASSERT_EQ(rows.size(), 6u);  // four renders, then the black and the constant baseline
+  EXPECT_EQ(rows[4]["technique"], "baseline_black");
+  rows.resize(4);
   EXPECT_EQ(rows[0]["label"], "spp=4 bounces=0 sampler=independent light_sampling=area");
   EXPECT_EQ(rows[3]["label"], "spp=4 bounces=0 sampler=sobol light_sampling=solid_angle");
   for (auto& row : rows) {

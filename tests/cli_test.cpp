@@ -177,6 +177,24 @@ TEST(Cli, CompareReportsMetricsNoiseFloorAndAnErrorMap) {
   EXPECT_NEAR(c["rmse"].get<double>(), 0.1, 1e-6);
   EXPECT_NEAR(c["noise_floor"]["rmse"].get<double>(), 0.02, 1e-6);
   EXPECT_EQ(c["pixels"].get<int>(), 128);
+  // In units of the reference's mean (0.5), beside the trivial answers: black scores
+  // 1 / (1 + 0.01), the reference's mean is the reference here.
+  EXPECT_NEAR(c["rel_mse"].get<double>(), 0.04 / (1.0 + 0.01), 1e-5);
+  EXPECT_NEAR(c["energy"][1].get<double>(), 1.2, 1e-5);
+  EXPECT_NEAR(c["baselines"]["black"]["rel_mse"].get<double>(), 1.0 / 1.01, 1e-6);
+  EXPECT_EQ(c["baselines"]["black"]["energy"][0].get<double>(), 0.0);
+  EXPECT_EQ(c["baselines"]["constant"]["rel_mse"].get<double>(), 0.0);
+  EXPECT_NE(r.output.find("black"), std::string::npos) << r.output;
+  const CommandResult absolute = voxgi("compare " + dir + "t.exr " + dir +
+                                       "r.exr --units absolute" + " --json " + dir + "a.json");
+  ASSERT_EQ(absolute.code, 0) << absolute.output;
+  const nlohmann::json a = nlohmann::json::parse(std::ifstream(dir + "a.json"));
+  EXPECT_NEAR(a["rel_mse"].get<double>(), 0.01 / (0.25 + 0.01), 1e-6);
+  EXPECT_EQ(voxgi("compare " + dir + "t.exr " + dir + "r.exr --units metres").code, 2);
+  // --skip-emitters reads the reference's emission term (render --terms).
+  const CommandResult noTerm = voxgi("compare " + dir + "t.exr " + dir + "r.exr --skip-emitters");
+  EXPECT_EQ(noTerm.code, 2) << noTerm.output;
+  EXPECT_NE(noTerm.output.find("r.emission.exr: missing"), std::string::npos) << noTerm.output;
   EXPECT_GT(std::filesystem::file_size(dir + "t.error.png"), 0u);
   const CommandResult bad = voxgi("compare " + dir + "small.exr " + dir + "r.exr");
   EXPECT_EQ(bad.code, 2) << bad.output;

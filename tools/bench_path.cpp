@@ -100,7 +100,8 @@ int runBenchPath(const BenchPathOptions& o) {
       converged.seed = 0x5eed5eedull;  // independent of the timed renders' seed 0
       const reference::PathTraceResult ref = reference::pathTrace(scene, converged);
       // What the converged render's own noise adds to an MSE, by its variance estimate.
-      const double floor = std::pow(reference::noiseFloor(ref.image, ref.variance).rmse, 2);
+      const double floor = std::pow(
+          reference::noiseFloor(ref.image, ref.variance, {}, reference::MetricScale{}).rmse, 2);
       const Image& refDirect = termImage(ref.terms, LightTerm::direct);
       const Image refIndirect = indirectLight(ref.terms);
       double baseline = 0.0;  // the first estimator's efficiency

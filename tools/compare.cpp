@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <map>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +26,44 @@ bool finite(glm::vec3 p) {
 
 }  // namespace
 
+void addUnitsOptions(CLI::App& cmd, reference::MetricUnits& units, bool& skipEmitters) {
+  std::map<std::string, reference::MetricUnits> names;
+  for (const auto& [name, value] : reference::kMetricUnitsNames) names.emplace(name, value);
+  cmd.add_option("--units", units,
+                 "mean: relative metrics and SSIM in units of the reference's mean per channel, "
+                 "the same for the scene in any units (default); absolute: eps = 0.01 in the "
+                 "images' own units, as published figures")
+      ->transform(CLI::CheckedTransformer(names, CLI::ignore_case));
+  cmd.add_flag("--skip-emitters", skipEmitters,
+               "leave out the pixels where the reference sees an emitter or the background "
+               "(REFERENCE.emission.exr, from render --terms, non-zero): reflected light only");
+}
+
+std::vector<uint8_t> withoutEmitters(bool skip, const std::string& referencePath,
+                                     const Image& reference, std::vector<uint8_t> mask) {
+  if (!skip) return mask;
+  const std::string path = termPath(referencePath, LightTerm::emission);
+  if (!std::filesystem::exists(path))
+    throw InputError(path, "", "missing: --skip-emitters reads it (voxgi render --terms)");
+  const Image emission = readExr(path);
+  checkSameSize(emission.width, emission.height, path, reference);
+  if (mask.empty()) mask.assign(reference.pixels.size(), 1);
+  for (size_t e = 0; e < mask.size(); ++e)
+    if (emission.pixels[e] != glm::vec3(0.0f)) mask[e] = 0;
+  if (std::find(mask.begin(), mask.end(), 1) == mask.end())
+    throw InputError(path, "", "--skip-emitters leaves no pixel: the reference sees only emission");
+  return mask;
+}
+
+nlohmann::json metricsJson(const reference::ImageMetrics& m) {
+  const auto value = [](double v) { return std::isnan(v) ? nlohmann::json() : nlohmann::json(v); };
+  return {{"rmse", value(m.rmse)},
+          {"rel_mse", value(m.relMse)},
+          {"mare", value(m.mare)},
+          {"ssim", value(m.ssim)},
+          {"energy", {value(m.energy.r), value(m.energy.g), value(m.energy.b)}}};
+}
+
 void addCompareOptions(CLI::App& cmd, CompareOptions& o) {
   cmd.add_option("test", o.test, "image to measure (.exr, or .png as sRGB)")->required();
   cmd.add_option("reference", o.reference, "reference image, e.g. a path-traced .exr")->required();
@@ -38,7 +78,10 @@ void addCompareOptions(CLI::App& cmd, CompareOptions& o) {
   cmd.add_flag("--terms", o.terms,
                "also measure each light term (voxgi render --terms wrote TEST.<term>.exr and "
                "REFERENCE.<term>.exr), with an error map per term");
+  addUnitsOptions(cmd, o.units, o.skipEmitters);
 }
+
+namespace {
 
 // The error map of `image`: --error-png's name, else IMAGE's name + .error.png.
 std::string errorMapPath(const std::string& image, const std::string& given) {
@@ -53,36 +96,67 @@ std::string termErrorMapPath(const CompareOptions& o, LightTerm term) {
   return o.errorPng.empty() ? errorMapPath(termPath(o.test, term), "") : termPath(o.errorPng, term);
 }
 
+// One row of the metrics table; NaN prints as "-".
+void printRow(const std::string& name, const reference::ImageMetrics& m) {
+  const auto cell = [](double v, int width) {
+    std::ostringstream out;
+    if (std::isnan(v))
+      out << "-";
+    else
+      out << std::setprecision(4) << v;
+    return std::string(std::max(0, width - int(out.str().size())), ' ') + out.str();
+  };
+  std::cout << "  " << std::left << std::setw(14) << name << std::right << cell(m.rmse, 11)
+            << cell(m.relMse, 11) << cell(m.mare, 11) << cell(m.ssim, 9) << cell(m.energy.r, 11)
+            << cell(m.energy.g, 11) << cell(m.energy.b, 11) << "\n";
+}
+
 nlohmann::json printTermBudget(const CompareOptions& o, const Image& reference,
-                               const std::vector<uint8_t>& mask) {
-  const std::string &testPath = o.test, &referencePath = o.reference;
-  const TermImages test = readTermImages(testPath), expected = readTermImages(referencePath);
+                               const TermImages& test, const std::vector<uint8_t>& mask,
+                               const reference::MetricScale& scale) {
+  const TermImages expected = readTermImages(o.reference);
   for (const LightTerm term : kLightTerms)
-    checkSameSize(termImage(test, term).width, termImage(test, term).height,
-                  termPath(testPath, term), termImage(expected, term));
-  std::cout << "  per term: relMSE against the reference's term; share: what its error alone adds "
-               "to the image's relMSE; brightness against the reference's\n"
-            << "    term                relMSE      share       brightness\n";
+    checkSameSize(termImage(expected, term).width, termImage(expected, term).height,
+                  termPath(o.reference, term), reference);
+  std::cout << "  per term, in the whole reference's units: relMSE against the reference's term; "
+               "share: what its error alone adds to the image's relMSE; brightness against the "
+               "reference's; the shares of a black and of a constant term\n"
+            << "    term                relMSE      share       brightness  black share "
+               "constant share\n";
   nlohmann::json out;
   for (const LightTerm term : kLightTerms) {
+    const Image& r = termImage(expected, term);
     const reference::TermMetrics m =
-        reference::compareTerm(termImage(test, term), termImage(expected, term), reference, mask);
+        reference::compareTerm(termImage(test, term), r, reference, mask, scale);
+    const reference::TermMetrics black =
+        reference::compareTerm(Image(r.width, r.height), r, reference, mask, scale);
+    const reference::TermMetrics constant =
+        reference::compareTerm(reference::meanImage(r, mask), r, reference, mask, scale);
     const std::string name(termName(term));
     std::cout << "    " << std::left << std::setw(20) << name << std::setw(12) << m.own.relMse
-              << std::setw(12) << m.share << m.meanRatio << std::right << "\n";
+              << std::setw(12) << m.share << std::setw(12) << m.meanRatio << std::setw(12)
+              << black.share << constant.share << std::right << "\n";
     const std::string png = termErrorMapPath(o, term);
     writeRgb8Png(png, reference.width, reference.height,
-                 reference::errorColours(termImage(test, term), termImage(expected, term), mask));
+                 reference::errorColours(termImage(test, term), r, mask, scale));
     // JSON has no NaN: a term black in the reference has no brightness ratio.
-    out[name] = {
-        {"rel_mse", m.own.relMse},
-        {"rmse", m.own.rmse},
-        {"share", m.share},
-        {"brightness", std::isnan(m.meanRatio) ? nlohmann::json() : nlohmann::json(m.meanRatio)},
-        {"error_png", png}};
+    const auto value = [](double v) {
+      return std::isnan(v) ? nlohmann::json() : nlohmann::json(v);
+    };
+    out[name] = {{"rel_mse", value(m.own.relMse)},
+                 {"rmse", m.own.rmse},
+                 {"share", value(m.share)},
+                 {"brightness", value(m.meanRatio)},
+                 {"baselines",
+                  {{"black", {{"rel_mse", value(black.own.relMse)}, {"share", value(black.share)}}},
+                   {"constant",
+                    {{"rel_mse", value(constant.own.relMse)}, {"share", value(constant.share)}}}}},
+                 {"error_png", png}};
   }
   return out;
 }
+
+}  // namespace
 
 void checkSameSize(int width, int height, const std::string& name, const Image& reference) {
   if (width != reference.width || height != reference.height)
@@ -94,12 +168,13 @@ void checkSameSize(int width, int height, const std::string& name, const Image& 
 
 std::optional<reference::ImageMetrics> referenceNoiseFloor(const std::string& referencePath,
                                                            const Image& reference,
-                                                           const std::vector<uint8_t>& mask) {
+                                                           const std::vector<uint8_t>& mask,
+                                                           const reference::MetricScale& scale) {
   const std::string variance = reference::variancePath(referencePath);
   if (!std::filesystem::exists(variance)) return std::nullopt;
   const Image v = readExr(variance);
   checkSameSize(v.width, v.height, variance, reference);
-  return reference::noiseFloor(reference, v, mask);
+  return reference::noiseFloor(reference, v, mask, scale);
 }
 
 std::vector<uint8_t> readMask(const std::string& path, const Image& reference) {
@@ -132,36 +207,73 @@ int runCompare(const CompareOptions& o) {
   const Image reference = readReference(o.reference);
   const Image test = readImage(o.test);
   checkSameSize(test.width, test.height, o.test, reference);
-  const std::vector<uint8_t> mask = readMask(o.mask, reference);
+  const std::vector<uint8_t> mask =
+      withoutEmitters(o.skipEmitters, o.reference, reference, readMask(o.mask, reference));
   if (o.scanline >= reference.height)
     throw InputError("--scanline", "",
                      "row " + std::to_string(o.scanline) + " is outside the " +
                          std::to_string(reference.height) + "-row images");
-  const reference::ImageMetrics m = reference::compareImages(test, reference, mask);
+  // The test's light terms: required by --terms, else used when they lie beside it.
+  std::optional<TermImages> terms;
+  if (o.terms || std::filesystem::exists(termPath(o.test, LightTerm::direct))) {
+    terms = readTermImages(o.test);
+    for (const LightTerm term : kLightTerms)
+      checkSameSize(termImage(*terms, term).width, termImage(*terms, term).height,
+                    termPath(o.test, term), reference);
+  }
+  const reference::MetricScale scale = reference::metricScale(reference, mask, o.units);
+  const reference::ImageMetrics m = reference::compareImages(test, reference, mask, scale);
+  const reference::Baselines baselines = reference::trivialBaselines(reference, mask, scale);
   std::cout << "compare " << o.test << " against " << o.reference << " (" << reference.width << "x"
-            << reference.height << ", " << m.pixels << " pixels)\n"
-            << "  RMSE    " << m.rmse << "\n"
-            << "  relMSE  " << m.relMse << "\n"
-            << "  MARE    " << m.mare << "\n"
-            << "  SSIM    " << m.ssim << "\n";
+            << reference.height << ", " << m.pixels << " pixels)\n";
+  if (!scale.defined)
+    std::cout << "  the reference is black: relative metrics are undefined (-)\n";
+  else if (o.units == reference::MetricUnits::reference_mean)
+    std::cout << "  relMSE, MARE and SSIM in units of the reference's mean per channel ("
+              << scale.unit.r << ", " << scale.unit.g << ", " << scale.unit.b
+              << "); --units absolute for the images' own\n";
+  else
+    std::cout << "  relMSE, MARE and SSIM in the images' own units (--units absolute)\n";
+  std::cout << "                       RMSE     relMSE       MARE     SSIM   energy r   energy g   "
+               "energy b\n";
+  printRow("image", m);
+  std::cout << "  baselines on the same reference and mask:\n";
+  printRow("black", baselines.black);
+  printRow("constant", baselines.constant);
+  nlohmann::json out = metricsJson(m);
+  out["test"] = o.test;
+  out["reference"] = o.reference;
+  out["pixels"] = m.pixels;
+  out["units"] = o.units == reference::MetricUnits::reference_mean ? "mean" : "absolute";
+  out["unit"] = {scale.unit.r, scale.unit.g, scale.unit.b};
+  out["baselines"] = {{"black", metricsJson(baselines.black)},
+                      {"constant", metricsJson(baselines.constant)}};
+  if (terms) {
+    const reference::ImageMetrics direct =
+        reference::compareImages(directOnly(*terms), reference, mask, scale);
+    printRow("direct only", direct);
+    std::cout << "  (constant: the reference's mean per channel; direct only: the image's emission "
+                 "and direct terms, without its indirect light)\n";
+    out["baselines"]["direct_only"] = metricsJson(direct);
+  } else {
+    std::cout << "  (constant: the reference's mean per channel; render --terms also gives the "
+                 "image's direct light alone)\n";
+  }
   // NaN or Inf in the image under test is a finding, not bad input: the metrics show it too.
   const size_t nonFinite = size_t(std::count_if(test.pixels.begin(), test.pixels.end(),
                                                 [](glm::vec3 p) { return !finite(p); }));
   if (nonFinite > 0) std::cout << "  non-finite pixels in " << o.test << ": " << nonFinite << "\n";
-  nlohmann::json out{{"test", o.test}, {"reference", o.reference}, {"pixels", m.pixels},
-                     {"rmse", m.rmse}, {"rel_mse", m.relMse},      {"mare", m.mare},
-                     {"ssim", m.ssim}};
   // The reference's own error: a perfect image would still measure this far from it.
-  if (const auto floor = referenceNoiseFloor(o.reference, reference, mask)) {
+  if (const auto floor = referenceNoiseFloor(o.reference, reference, mask, scale)) {
     std::cout << "  noise floor of the reference (" << reference::variancePath(o.reference)
               << "): RMSE " << floor->rmse << ", relMSE " << floor->relMse << "\n";
     out["noise_floor"] = {{"rmse", floor->rmse}, {"rel_mse", floor->relMse}};
   }
   writeRgb8Png(errorPng, reference.width, reference.height,
-               reference::errorColours(test, reference, mask));
-  std::cout << "  error map (|t - r| / (|r| + 0.01), log scale 1e-3 black .. 1 white) -> "
+               reference::errorColours(test, reference, mask, scale));
+  std::cout << "  error map (|t - r| / (|r| + 0.01 u), log scale 1e-3 black .. 1 white) -> "
             << errorPng << "\n";
-  if (o.terms) out["terms"] = printTermBudget(o, reference, mask);
+  if (o.terms) out["terms"] = printTermBudget(o, reference, *terms, mask, scale);
   if (o.scanline >= 0) {
     // Rec. 709 luminance of the linear images.
     const auto row = [&](const Image& image) {

@@ -1,5 +1,6 @@
-// `voxgi compare TEST REFERENCE`: error metrics of an image against a reference, with the
-// reference's own noise floor when its variance image lies beside it, and a false-colour map.
+// `voxgi compare TEST REFERENCE`: error metrics of an image against a reference beside what
+// trivial answers score on it, with the reference's own noise floor when its variance image lies
+// beside it, and a false-colour map.
 #pragma once
 
 #include <optional>
@@ -7,6 +8,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "common/image_io.h"
 #include "validation/reference/image_metrics.h"
@@ -15,9 +17,17 @@ namespace voxgi::tools {
 
 struct CompareOptions {
   std::string test, reference, mask, errorPng, json;
-  int scanline = -1;   // a row whose luminance both images give in the JSON (-1: none)
-  bool terms = false;  // also each light term, from the TEST.<term>.exr beside each image
+  int scanline = -1;          // a row whose luminance both images give in the JSON (-1: none)
+  bool terms = false;         // also each light term, from the TEST.<term>.exr beside each image
+  bool skipEmitters = false;  // leave out the pixels where the reference sees emission
+  reference::MetricUnits units = reference::MetricUnits::reference_mean;
 };
+
+// --units mean|absolute (reference::kMetricUnitsNames) and --skip-emitters, for compare and study.
+void addUnitsOptions(CLI::App& cmd, reference::MetricUnits& units, bool& skipEmitters);
+
+// The metrics as JSON; NaN (undefined) as null.
+nlohmann::json metricsJson(const reference::ImageMetrics& m);
 
 void addCompareOptions(CLI::App& cmd, CompareOptions& options);
 int runCompare(const CompareOptions& options);
@@ -25,6 +35,13 @@ int runCompare(const CompareOptions& options);
 // The pixels a mask image keeps (non-zero in any channel), checked against the reference's size
 // and to keep at least one; empty when `path` is empty.
 std::vector<uint8_t> readMask(const std::string& path, const Image& reference);
+
+// With `skip`, `mask` (empty: every pixel) without the pixels where REFERENCE.emission.exr (voxgi
+// render --terms) is non-zero: what the camera sees of emitters and the background, which every
+// technique copies, so that the metrics and the energy measure reflected light only. Throws
+// InputError when the term is missing or the mask keeps nothing.
+std::vector<uint8_t> withoutEmitters(bool skip, const std::string& referencePath,
+                                     const Image& reference, std::vector<uint8_t> mask);
 
 // An image every pixel of which is finite; throws InputError naming the first pixel that is not.
 Image readReference(const std::string& path);
@@ -36,6 +53,7 @@ void checkSameSize(int width, int height, const std::string& name, const Image& 
 // beside it, if there is one.
 std::optional<reference::ImageMetrics> referenceNoiseFloor(const std::string& referencePath,
                                                            const Image& reference,
-                                                           const std::vector<uint8_t>& mask);
+                                                           const std::vector<uint8_t>& mask,
+                                                           const reference::MetricScale& scale);
 
 }  // namespace voxgi::tools

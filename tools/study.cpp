@@ -268,6 +268,26 @@ void plot(const std::string& csv, const std::string& png, const std::string& met
   writeFileAtomically(png, bytes);
 }
 
+// The error columns of a CSV row: rmse, rel_mse, mare, ssim, ssim_loss.
+std::string errorCells(const reference::ImageMetrics& m) {
+  std::ostringstream out;
+  out.precision(6);
+  out << m.rmse << "," << m.relMse << "," << m.mare << "," << m.ssim << "," << 1.0 - m.ssim;
+  return out.str();
+}
+
+// The error columns, then energy_r, energy_g, energy_b (empty where undefined).
+std::string metricCells(const reference::ImageMetrics& m) {
+  std::ostringstream out;
+  out.precision(6);
+  out << errorCells(m);
+  for (int c = 0; c < 3; ++c) {
+    out << ",";
+    if (!std::isnan(m.energy[c])) out << m.energy[c];
+  }
+  return out.str();
+}
+
 }  // namespace
 
 void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
@@ -297,6 +317,7 @@ void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
                "writes them): relMSE, share of the image's relMSE and brightness per term");
   cmd.add_option("--gl", o.gl, "GL platform for backend=gpu")
       ->check(CLI::IsMember({"egl", "osmesa"}));
+  addUnitsOptions(cmd, o.units, o.skipEmitters);
 }
 
 int runStudy(const StudyOptions& o) {
@@ -305,7 +326,8 @@ int runStudy(const StudyOptions& o) {
   std::vector<Sweep> sweeps;
   for (const std::string& s : o.sweeps) sweeps.push_back(parseSweep(s));
   const Image reference = readReference(o.reference);
-  const std::vector<uint8_t> mask = readMask(o.mask, reference);
+  const std::vector<uint8_t> mask =
+      withoutEmitters(o.skipEmitters, o.reference, reference, readMask(o.mask, reference));
   const std::vector<Job> jobs = makeJobs(o, sweeps);
   std::optional<TermImages> referenceTerms;
   if (o.terms) {
@@ -317,8 +339,11 @@ int runStudy(const StudyOptions& o) {
   checkSameSize(jobs.front().scene.camera.width, jobs.front().scene.camera.height,
                 o.scene + " camera.resolution (or --image)", reference);
   std::unique_ptr<gpu::GlContext> context;
+  const reference::MetricScale scale = reference::metricScale(reference, mask, o.units);
   std::vector<Result> results;
   std::vector<reference::ImageMetrics> metrics;
+  // Per job, its image without the indirect terms (nullopt for a technique without terms).
+  std::vector<std::optional<reference::ImageMetrics>> directOnlyMetrics;
   // Per job, per term (empty without --terms or for a technique without terms).
   std::vector<std::vector<reference::TermMetrics>> termMetrics(jobs.size());
   for (size_t k = 0; k < jobs.size(); ++k) {
@@ -326,16 +351,26 @@ int runStudy(const StudyOptions& o) {
     if (job.gpu && context == nullptr) context = gpu::GlContext::create(gpu::parseGlPlatform(o.gl));
     results.push_back(job.technique == "path" ? runPath(job, o.repeats)
                                               : runTechnique(job, o.repeats, context.get()));
-    metrics.push_back(reference::compareImages(results.back().image, reference, mask));
+    metrics.push_back(reference::compareImages(results.back().image, reference, mask, scale));
+    directOnlyMetrics.push_back(std::nullopt);
+    if (results.back().terms)
+      directOnlyMetrics.back() =
+          reference::compareImages(directOnly(*results.back().terms), reference, mask, scale);
     if (referenceTerms && results.back().terms)
       for (const LightTerm term : kLightTerms)
         termMetrics[k].push_back(reference::compareTerm(termImage(*results.back().terms, term),
                                                         termImage(*referenceTerms, term), reference,
-                                                        mask));
+                                                        mask, scale));
     std::cout << "[" << k + 1 << "/" << jobs.size() << "] " << job.technique << " " << job.label()
               << ": " << results.back().seconds << " s, RMSE " << metrics.back().rmse << ", relMSE "
-              << metrics.back().relMse << ", SSIM " << metrics.back().ssim << std::endl;
+              << metrics.back().relMse << ", SSIM " << metrics.back().ssim << ", energy "
+              << metrics.back().energy.r << " / " << metrics.back().energy.g << " / "
+              << metrics.back().energy.b << std::endl;
   }
+  const reference::Baselines baselines = reference::trivialBaselines(reference, mask, scale);
+  std::cout << "baselines: black relMSE " << baselines.black.relMse << ", SSIM "
+            << baselines.black.ssim << "; constant relMSE " << baselines.constant.relMse
+            << ", SSIM " << baselines.constant.ssim << std::endl;
   const auto errorOf = [&](const reference::ImageMetrics& m) {
     return o.metric == "rmse"      ? m.rmse
            : o.metric == "rel_mse" ? m.relMse
@@ -376,7 +411,9 @@ int runStudy(const StudyOptions& o) {
   for (const Sweep& s : sweeps) csv << "," << s.key;
   csv << ",label,seconds";
   for (const std::string& s : stages) csv << "," << s << "_seconds";
-  csv << ",rmse,rel_mse,mare,ssim,ssim_loss,efficiency,pareto,pareto_technique";
+  csv << ",rmse,rel_mse,mare,ssim,ssim_loss,energy_r,energy_g,energy_b,direct_only_rmse,"
+         "direct_only_rel_mse,direct_only_mare,direct_only_ssim,direct_only_ssim_loss,efficiency,"
+         "pareto,pareto_technique";
   if (referenceTerms)
     for (const LightTerm term : kLightTerms)
       csv << ",rel_mse_" << termName(term) << ",share_" << termName(term) << ",brightness_"
@@ -399,8 +436,11 @@ int runStudy(const StudyOptions& o) {
     const reference::ImageMetrics& m = metrics[k];
     // What a unit of error costs in time: 1 / (seconds x MSE), as voxgi bench path reports it.
     const double efficiency = 1.0 / (results[k].seconds * m.rmse * m.rmse);
-    csv << "," << m.rmse << "," << m.relMse << "," << m.mare << "," << m.ssim << "," << 1.0 - m.ssim
-        << ",";
+    csv << "," << metricCells(m) << ",";
+    if (directOnlyMetrics[k])
+      csv << errorCells(*directOnlyMetrics[k]) << ",";
+    else
+      csv << ",,,,,";
     if (std::isfinite(efficiency)) csv << efficiency;
     csv << "," << (front[k] ? 1 : 0) << "," << (techniqueFront[k] ? 1 : 0);
     if (referenceTerms) {
@@ -417,12 +457,21 @@ int runStudy(const StudyOptions& o) {
     }
     csv << "\n";
   }
+  // The trivial answers as rows of their own: no time, no front.
+  for (const auto& [name, b] :
+       {std::pair{"black", &baselines.black}, std::pair{"constant", &baselines.constant}}) {
+    csv << "baseline_" << name << std::string(sweeps.size(), ',') << "," << name << ",";
+    for (size_t s = 0; s < stages.size(); ++s) csv << ",";
+    csv << "," << metricCells(*b) << ",,,,,,,0,0";
+    if (referenceTerms) csv << std::string(3 * kLightTerms.size(), ',');
+    csv << "\n";
+  }
   writeFileAtomically(o.csv, csv.str());
   std::cout << "wrote " << o.csv << " (" << jobs.size() << " rows)\n";
   if (o.plot.empty()) return kExitOk;
 
   std::string noiseFloor;
-  const auto floor = referenceNoiseFloor(o.reference, reference, mask);
+  const auto floor = referenceNoiseFloor(o.reference, reference, mask, scale);
   if (floor && (o.metric == "rmse" || o.metric == "rel_mse"))
     noiseFloor = std::to_string(o.metric == "rmse" ? floor->rmse : floor->relMse);
   const std::string title = std::filesystem::path(o.scene).filename().string() + " against " +

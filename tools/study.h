@@ -1,12 +1,15 @@
 // `voxgi study`: every combination of the swept parameters, rendered and timed (median of
-// repeats, per stage), measured against a reference image, written as CSV with the Pareto front
-// of error against time, and plotted by tools/plot_study.py (docs/accuracy.md).
+// repeats, per stage), measured against a reference image beside what trivial answers score on
+// it, written as CSV with the Pareto front of error against time, and plotted by
+// tools/plot_study.py (docs/accuracy.md).
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "validation/reference/image_metrics.h"
 
 namespace voxgi::tools {
 
@@ -22,6 +25,8 @@ struct StudyOptions {
   int image = 0;                   // image width (height keeps the camera's aspect); 0: the scene's
   int repeats = 3;
   bool terms = false;  // also each light term against REFERENCE.<term>.exr (common/light_terms.h)
+  bool skipEmitters = false;  // leave out the pixels where the reference sees emission
+  reference::MetricUnits units = reference::MetricUnits::reference_mean;
 };
 
 void addStudyOptions(CLI::App& cmd, StudyOptions& options);

@@ -36,8 +36,10 @@
 #include "tools/backend.h"
 #include "tools/bench.h"
 #include "tools/compare.h"
+#include "tools/ledger.h"
 #include "tools/study.h"
 #include "validation/diff.h"
+#include "validation/lpv/ledger.h"
 #include "validation/reference/path_trace.h"
 #include "validation/report.h"
 
@@ -289,6 +291,27 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
   return kExitOk;
 }
 
+// voxgi ledger: a light propagation volume run up to propagate, with every step kept.
+int cmdLedger(const Common& c, const std::string& json) {
+  const Technique& technique = findTechnique(c.technique);
+  const auto& steps = technique.steps();
+  const StageSpec& propagate = stageSpec(StageId::lpv_propagate);
+  if (std::find(steps.begin(), steps.end(), &propagate) == steps.end())
+    throw InputError("--technique", "",
+                     c.technique + " has no propagation volume; the ledger is lpv's and holpv's");
+  if (!json.empty()) checkOutputPath(json);
+  const StageRun run = runStages(c, &propagate, true);
+  const VoxelTriangles triangles = prepareVoxelTriangles(run.scene, run.scene.grid);
+  const StageContext ctx{technique, run.scene, run.settings, triangles};
+  const validation::Ledger ledger = validation::lpvLedger(ctx, run.buffers);
+  std::cout << technique.name << " ledger of " << run.scene.file << " ("
+            << run.scene.grid.resolution << "^3, " << ledger.steps.size() << " steps, "
+            << run.backendName() << ")\n";
+  tools::printLedger(std::cout, ledger);
+  if (!json.empty()) writeFileAtomically(json, tools::ledgerJson(ledger).dump(2) + "\n");
+  return kExitOk;
+}
+
 // An image with a NaN or infinite pixel is not written: it would be garbage with exit 0. Input
 // checks are meant to make this unreachable; if it happens, it is voxgi's bug (exit 1).
 void requireFinite(const Image& image, const std::string& what) {
@@ -479,6 +502,14 @@ int main(int argc, char** argv) {
   std::string settingsHelp;
   for (const Technique& t : techniques()) settingsHelp += describeSettings(t);
   render->footer(settingsHelp);
+  auto* ledger = app.add_subcommand(
+      "ledger",
+      "light propagation volumes: per step the flux sent, removed by the geometry volume, lost at "
+      "the grid's border and read by shading, against the emitted flux");
+  addCommon(ledger, true);
+  ledger->add_option("--technique", c.technique, "lpv or holpv")
+      ->check(CLI::IsMember(techniqueList()));
+  ledger->add_option("--json", json, "also write the ledger as JSON");
   SampleOptions sample;
   auto* sampleCmd = app.add_subcommand(
       "sample", "a scene's meshes as a point-cloud PLY, with a scanner's noise and uneven density");
@@ -552,6 +583,7 @@ int main(int argc, char** argv) {
     if (*diff) return cmdDiff(c, stage, json, dumpDir);
     if (*dump) return cmdDump(c, stage, out);
     if (*plan) return cmdPlan(c);
+    if (*ledger) return cmdLedger(c, json);
     if (*sampleCmd) return cmdSample(sample);
     if (*compareCmd) return tools::runCompare(compare);
     if (*studyCmd) return tools::runStudy(study);
