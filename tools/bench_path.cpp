@@ -1,7 +1,8 @@
 // voxgi bench path (docs/benchmarks.md, docs/path-tracer.md): what a reference costs per unit of
 // error. Per scene and transport (direct light, one bounce, every bounce), each estimator's render
 // at the same spp (the independent sampler with area light sampling, as before the Sobol' points;
-// Sobol' with area; Sobol' with solid angle, the default), timed (median of the repeats) and
+// one Sobol' sequence with area, and with solid angle; the default, two Sobol' replicas with solid
+// angle, whose spread gives an honest variance image), timed (median of the repeats) and
 // measured against a converged render of the same transport: samples/s, rays/s, MSE, the MSE of
 // the direct and the indirect light, and the efficiency 1 / (seconds x MSE) against the first's,
 // all in one run.
@@ -33,11 +34,14 @@ constexpr Transport kTransports[] = {{"direct", 0}, {"one bounce", 1}, {"full", 
 struct Estimator {
   reference::SamplerKind sampler;
   reference::LightSampling lightSampling;
+  int replicas;  // PathTraceOptions::replicas
 };
 constexpr Estimator kEstimators[] = {
-    {reference::SamplerKind::independent, reference::LightSampling::area},
-    {reference::SamplerKind::sobol, reference::LightSampling::area},
-    {reference::SamplerKind::sobol, reference::LightSampling::solid_angle}};
+    {reference::SamplerKind::independent, reference::LightSampling::area, 1},
+    {reference::SamplerKind::sobol, reference::LightSampling::area, 1},
+    {reference::SamplerKind::sobol, reference::LightSampling::solid_angle, 1},
+    {reference::SamplerKind::sobol, reference::LightSampling::solid_angle,
+     reference::kDefaultReplicas}};
 
 // The name a table of names (reference::kSamplerNames, kLightSamplingNames) gives `value`.
 template <class T, size_t N>
@@ -85,9 +89,9 @@ int runBenchPath(const BenchPathOptions& o) {
   if (o.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, size_t(o.threads));
   nlohmann::json rows = nlohmann::json::array();
   std::cout
-      << "| scene | transport | sampler | light sampling | spp | seconds | samples/s | rays/s "
-         "| MSE | MSE direct | MSE indirect | efficiency 1/(s MSE) | × independent, area "
-         "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      << "| scene | transport | sampler | light sampling | replicas | spp | seconds | samples/s | "
+         "rays/s | MSE | MSE direct | MSE indirect | efficiency 1/(s MSE) | × independent, area "
+         "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const std::string& path : o.scenes) {
     Scene scene = loadScene(path);
     const double aspect = double(scene.camera.height) / double(scene.camera.width);
@@ -99,7 +103,7 @@ int runBenchPath(const BenchPathOptions& o) {
       converged.bounces = transport.bounces;
       converged.seed = 0x5eed5eedull;  // independent of the timed renders' seed 0
       const reference::PathTraceResult ref = reference::pathTrace(scene, converged);
-      // What the converged render's own noise adds to an MSE, by its variance estimate.
+      // What the converged render's own noise adds to an MSE, by its (honest) variance image.
       const double floor = std::pow(
           reference::noiseFloor(ref.image, ref.variance, {}, reference::MetricScale{}).rmse, 2);
       const Image& refDirect = termImage(ref.terms, LightTerm::direct);
@@ -111,6 +115,7 @@ int runBenchPath(const BenchPathOptions& o) {
         options.bounces = transport.bounces;
         options.sampler = estimator.sampler;
         options.lightSampling = estimator.lightSampling;
+        options.replicas = estimator.replicas;
         reference::PathTraceResult result;
         const double seconds =
             medianSeconds(o.repeats, [&] { result = reference::pathTrace(scene, options); });
@@ -124,12 +129,12 @@ int runBenchPath(const BenchPathOptions& o) {
         const char* sampler = nameOf(reference::kSamplerNames, estimator.sampler);
         const char* lightSampling = nameOf(reference::kLightSamplingNames, estimator.lightSampling);
         std::cout << "| " << scene.file << " | " << transport.name << " | " << sampler << " | "
-                  << lightSampling << " | " << o.spp << " | " << std::setprecision(3) << seconds
-                  << " | " << samples / seconds << " | " << double(result.rays) / seconds << " | "
-                  << mse << " | " << direct << " | " << indirect << " | " << efficiency << " | "
-                  << std::setprecision(2) << efficiency / baseline << " |\n";
-        // Its Monte Carlo variance estimate overstates a scrambled Sobol' render's error: a
-        // warning to check with a larger --reference-spp, not a floor.
+                  << lightSampling << " | " << estimator.replicas << " | " << o.spp << " | "
+                  << std::setprecision(3) << seconds << " | " << samples / seconds << " | "
+                  << double(result.rays) / seconds << " | " << mse << " | " << direct << " | "
+                  << indirect << " | " << efficiency << " | " << std::setprecision(2)
+                  << efficiency / baseline << " |\n";
+        // The converged render's noise should be far below the error measured against it.
         if (floor > 0.1 * mse)
           std::cout << "  (the converged render's variance estimate, " << floor
                     << ", exceeds a tenth of this MSE: check with a larger --reference-spp)\n";
@@ -137,6 +142,7 @@ int runBenchPath(const BenchPathOptions& o) {
                         {"transport", transport.name},
                         {"sampler", sampler},
                         {"light_sampling", lightSampling},
+                        {"replicas", estimator.replicas},
                         {"spp", o.spp},
                         {"seconds", seconds},
                         {"samples_per_second", samples / seconds},

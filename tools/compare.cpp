@@ -268,6 +268,17 @@ int runCompare(const CompareOptions& o) {
     std::cout << "  noise floor of the reference (" << reference::variancePath(o.reference)
               << "): RMSE " << floor->rmse << ", relMSE " << floor->relMse << "\n";
     out["noise_floor"] = {{"rmse", floor->rmse}, {"rel_mse", floor->relMse}};
+    // Both images path traced: does each variance image predict their difference?
+    const std::string testVariance = reference::variancePath(o.test);
+    if (std::filesystem::exists(testVariance)) {
+      const Image tv = readExr(testVariance), rv = readExr(reference::variancePath(o.reference));
+      checkSameSize(tv.width, tv.height, testVariance, reference);
+      const reference::ZSpread z = reference::zSpread(test, tv, reference, rv, mask);
+      std::cout << "  z = (t - r) / sqrt(both variances): mean " << z.mean
+                << ", standard deviation " << z.deviation << " over " << z.values
+                << " values (1: the variance images predict the error)\n";
+      out["z"] = {{"mean", z.mean}, {"deviation", z.deviation}, {"values", z.values}};
+    }
   }
   writeRgb8Png(errorPng, reference.width, reference.height,
                reference::errorColours(test, reference, mask, scale));

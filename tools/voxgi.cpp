@@ -492,6 +492,11 @@ int main(int argc, char** argv) {
           std::map<std::string, reference::LightSampling>(
               std::begin(reference::kLightSamplingNames), std::end(reference::kLightSamplingNames)),
           CLI::ignore_case));
+  render
+      ->add_option("--replicas", pathOptions.replicas,
+                   "path, sobol: independently scrambled replicas whose spread gives the variance "
+                   "image (docs/path-tracer.md, \"Variance\")")
+      ->check(CLI::Range(1, reference::kMaxReplicas));
   render->add_option("--out", out, "output EXR (linear); path also writes OUT.variance.exr")
       ->required();
   render->add_option("--png", png, "also write a tone-mapped sRGB preview");

@@ -200,6 +200,28 @@ ImageMetrics noiseFloor(const Image& reference, const Image& variance,
   return m;
 }
 
+ZSpread zSpread(const Image& test, const Image& testVariance, const Image& reference,
+                const Image& referenceVariance, const std::vector<uint8_t>& mask) {
+  ZSpread z;
+  double sum = 0.0, square = 0.0;
+  for (size_t e = 0; e < reference.pixels.size(); ++e) {
+    if (!kept(mask, e)) continue;
+    for (int c = 0; c < 3; ++c) {
+      const double v = double(testVariance.pixels[e][c]) + double(referenceVariance.pixels[e][c]);
+      if (!(v > 0.0)) continue;
+      const double value =
+          (double(test.pixels[e][c]) - double(reference.pixels[e][c])) / std::sqrt(v);
+      sum += value;
+      square += value * value;
+      ++z.values;
+    }
+  }
+  if (z.values == 0) return z;
+  z.mean = sum / double(z.values);
+  z.deviation = std::sqrt(std::max(square / double(z.values) - z.mean * z.mean, 0.0));
+  return z;
+}
+
 std::vector<unsigned char> errorColours(const Image& test, const Image& reference,
                                         const std::vector<uint8_t>& mask,
                                         const MetricScale& scale) {

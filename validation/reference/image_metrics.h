@@ -94,6 +94,16 @@ TermMetrics compareTerm(const Image& test, const Image& reference, const Image& 
 ImageMetrics noiseFloor(const Image& reference, const Image& variance,
                         const std::vector<uint8_t>& mask, const MetricScale& scale);
 
+// Whether two Monte Carlo images' variance images predict their difference: the mean and standard
+// deviation of z = (t - r) / sqrt(var_t + var_r) over the kept values whose variance is not zero
+// (1 and 0 when they do; below 1 when the variances overstate the error). `values` counts them.
+struct ZSpread {
+  double mean = 0.0, deviation = 0.0;
+  size_t values = 0;
+};
+ZSpread zSpread(const Image& test, const Image& testVariance, const Image& reference,
+                const Image& referenceVariance, const std::vector<uint8_t>& mask);
+
 // Per pixel |t - r| / (|r| + eps u) averaged over the channels, as sRGB colours on a logarithmic
 // scale from 1e-3 (black) through blue, red and yellow to 1 and above (white); pixels outside
 // the mask are mid grey. Row-major RGB, 3 bytes a pixel.

@@ -358,6 +358,48 @@ class Tracer {
   LightSampling lightSampling_;
 };
 
+// The seed of replica r: replica 0 keeps the image's seed.
+uint64_t replicaSeed(uint64_t seed, int replica) {
+  return replica == 0 ? seed : mix64(seed ^ mix64(uint64_t(replica) * 0xd1b54a32d192ed03ull));
+}
+
+// The variance of the image's mean from the spread of its K replicas' means m_r, each an
+// independent scrambled sequence [Owen 1997]: sum (m_r - mean)^2 / (K (K - 1)). Replica r holds
+// the samples s with s % K = r, spp / K of them (the first spp % K one more: close enough to
+// equal for the estimate).
+glm::dvec3 replicaVariance(const std::array<glm::dvec3, kMaxReplicas>& sums, int k, int spp) {
+  glm::dvec3 mean(0.0), square(0.0);
+  for (int r = 0; r < k; ++r) {
+    const int count = spp / k + (r < spp % k ? 1 : 0);
+    const glm::dvec3 m = sums[size_t(r)] / double(count);
+    mean += m;
+    square += m * m;
+  }
+  mean /= double(k);
+  return glm::max(square / double(k) - mean * mean, 0.0) * (double(k) / double(k - 1)) / double(k);
+}
+
+// Each pixel's mean over the (2 radius + 1)^2 pixels around it, clipped at the border. One
+// pixel's estimate from few samples (or from two replicas) is itself noisy, and zero where every
+// sample missed a rare contribution; the neighbours' share its variance closely enough that their
+// mean predicts the error far better (docs/path-tracer.md, "Variance").
+Image neighbourhoodMean(const Image& in, int radius) {
+  Image out(in.width, in.height);
+  parallelFor(0, in.height, [&](int y) {
+    for (int x = 0; x < in.width; ++x) {
+      glm::dvec3 sum(0.0);
+      int count = 0;
+      for (int qy = std::max(0, y - radius); qy <= std::min(in.height - 1, y + radius); ++qy)
+        for (int qx = std::max(0, x - radius); qx <= std::min(in.width - 1, x + radius); ++qx) {
+          sum += glm::dvec3(in.at(qx, qy));
+          ++count;
+        }
+      out.at(x, y) = vec3(sum / double(count));
+    }
+  });
+  return out;
+}
+
 }  // namespace
 
 PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
@@ -372,6 +414,7 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
   PathTraceResult result;
   result.image = Image(w, h);
   result.variance = Image(w, h);
+  Image pixelVariance(w, h);  // each pixel's own estimate, before the neighbourhood average
   for (Image& term : result.terms) term = Image(w, h);
   const vec3 forward = glm::normalize(vec3(cam.lookAt - cam.position));
   const vec3 right = glm::normalize(glm::cross(forward, vec3(cam.up)));
@@ -380,12 +423,15 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
   const float aspect = float(w) / float(h);
   std::atomic<uint64_t> rays{0};
   std::atomic<int> rowsDone{0};
+  const int replicas =
+      options.sampler == SamplerKind::sobol ? std::min(options.replicas, options.spp) : 1;
   parallelFor(0, h, [&](int y) {
     if (options.cancel && options.cancel->load()) return;
     Tracer tracer(scene, setup, options.bounces, options.lightSampling);
     for (int x = 0; x < w; ++x) {
       const uint64_t pixel = uint64_t(y) * uint64_t(w) + uint64_t(x);
       glm::dvec3 sum(0.0), sum2(0.0);
+      std::array<glm::dvec3, kMaxReplicas> replicaSum{};
       std::array<glm::dvec3, kLightTerms.size()> terms{};
       for (int s = 0; s < options.spp; ++s) {
         const auto trace = [&](auto rng) {
@@ -395,25 +441,32 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
           const vec3 dir = glm::normalize(forward + px * right + py * up);
           return tracer.radiance(setup.local(cam.position), dir, rng);
         };
+        // Sample s is sample s / K of replica s % K, each replica scrambled by a seed of its own.
+        const int replica = s % replicas;
         const PathSample path = options.sampler == SamplerKind::sobol
-                                    ? trace(SobolSampler(options.seed, pixel, uint32_t(s)))
+                                    ? trace(SobolSampler(replicaSeed(options.seed, replica), pixel,
+                                                         uint32_t(s / replicas)))
                                     : trace(IndependentSampler(options.seed, pixel, uint32_t(s)));
         const glm::dvec3 l(path.radiance);
         sum += l;
         sum2 += l * l;
+        replicaSum[size_t(replica)] += l;
         for (size_t t = 0; t < terms.size(); ++t) terms[t] += glm::dvec3(path.terms[t]);
       }
       const double n = options.spp;
       result.image.at(x, y) = vec3(sum / n);
       for (size_t t = 0; t < terms.size(); ++t) result.terms[t].at(x, y) = vec3(terms[t] / n);
-      result.variance.at(x, y) =
-          n > 1 ? vec3(glm::max(sum2 - sum * sum / n, 0.0) / (n - 1.0) / n) : vec3(0.0f);
+      pixelVariance.at(x, y) = replicas > 1
+                                   ? vec3(replicaVariance(replicaSum, replicas, options.spp))
+                               : n > 1 ? vec3(glm::max(sum2 - sum * sum / n, 0.0) / (n - 1.0) / n)
+                                       : vec3(0.0f);
     }
     rays += tracer.rays;
     const int done = ++rowsDone;
     if (options.progress) options.progress(double(done) / h);
   });
   if (options.cancel && options.cancel->load()) throw Cancelled();
+  result.variance = neighbourhoodMean(pixelVariance, kVarianceRadius);
   result.rays = rays;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
