@@ -57,8 +57,9 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 // Light propagation volumes, 16^3 and 6 steps (every step's volume compared), both forms and both
-// platforms: on the Martin-proportioned Cornell box (an area light), and on the bunny, whose
-// point light goes through the rsm stage (or a spot and a sun in its place: one frustum, one box).
+// platforms: on the Martin-proportioned Cornell box (its emitter as area lights through the rsm
+// stage, or as VPLs of its own), and on the bunny, whose point light goes through the rsm stage
+// (or a spot and a sun in its place: one frustum, one box).
 struct LpvCase {
   const char* technique;
   gpu::GlPlatform platform;
@@ -102,6 +103,7 @@ INSTANTIATE_TEST_SUITE_P(
     Scenes, GpuLpvStages,
     testing::Values(
         LpvCase{"lpv", gpu::GlPlatform::egl}, LpvCase{"holpv", gpu::GlPlatform::osmesa},
+        LpvCase{"holpv", gpu::GlPlatform::osmesa, {"emitters.mode=voxels"}},
         LpvCase{"holpv",
                 gpu::GlPlatform::egl,
                 {"propagate.clamp=on", "propagate.accumulate_injection=off", "inject.shift=on"}},

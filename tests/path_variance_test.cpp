@@ -28,8 +28,8 @@ double zSpread(const PathTraceResult& test, const PathTraceResult& converged) {
     for (int c = 0; c < 3; ++c) {
       const double v = double(test.variance.pixels[e][c]) + double(converged.variance.pixels[e][c]);
       if (!(v > 0.0)) continue;
-      const double z = (double(test.image.pixels[e][c]) - double(converged.image.pixels[e][c])) /
-                       std::sqrt(v);
+      const double z =
+          (double(test.image.pixels[e][c]) - double(converged.image.pixels[e][c])) / std::sqrt(v);
       sum += z;
       square += z * z;
       ++count;

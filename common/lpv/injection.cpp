@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/error.h"
+#include "common/lights.h"
 #include "common/lpv/rsm.h"
 #include "common/memory.h"
 #include "shaders/shared/lpv/inject_kernel.h"
@@ -39,9 +40,11 @@ Emitters emitters(const StageContext& ctx) {
   const double spacing = ctx.settings.lpv.emitterSpacing;  // in cells
   Emitters out;
   dvec3 total(0.0);
+  // Under emitters.mode=area_lights the emitters light the volume through their RSM texels.
+  const bool vpls = emittersFor(scene, ctx.settings.vct.emitters) == EmitterLighting::voxels;
   for (const Mesh& mesh : scene.meshes) {
     const Material& mat = scene.materials.at(mesh.material);
-    if (!mat.emissive()) continue;
+    if (!mat.emissive() || !vpls) continue;
     for (const glm::uvec3& t : mesh.triangles) {
       const dvec3 a = grid.toVoxel(mesh.positions[t.x]), b = grid.toVoxel(mesh.positions[t.y]),
                   c = grid.toVoxel(mesh.positions[t.z]);
@@ -58,7 +61,8 @@ Emitters emitters(const StageContext& ctx) {
       total += flux;
     }
   }
-  if (!scene.lights.empty()) total += rsmFluxBound(scene, prepareRsm(scene, ctx.settings.lpv));
+  const RsmSetup rsm = prepareRsm(scene, ctx.settings);
+  if (!rsm.views.empty()) total += rsmFluxBound(scene, rsm);
   out.scale =
       glm::vec4(fixedPointScale(total.x), fixedPointScale(total.y), fixedPointScale(total.z), 0.0f);
   return out;

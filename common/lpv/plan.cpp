@@ -1,6 +1,7 @@
 // Light propagation volumes' effect planner (docs/effect-plan.md).
 #include <sstream>
 
+#include "common/lights.h"
 #include "common/lpv/rsm.h"
 #include "common/lpv/sh_buffers.h"
 #include "common/technique.h"
@@ -18,21 +19,26 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
     if (m.triangles.empty() || !mat.emissive()) continue;
     emitters += (emitters.empty() ? "'" : ", '") + mat.name + "'";
   }
+  // Emissive triangles as area lights (emitters.mode): direct light per pixel, their RSMs' texels
+  // the VPLs of their first bounce; else VPLs of their own, as [Martin 2012] injects them.
+  const size_t areaLights = areaLightCount(scene, settings.vct.emitters);
   p.stage(StageId::common_voxelize, true,
           s.occlusion == LpvOcclusion::on
               ? "surface area and normals per voxel -> the geometry volume"
               : "propagate.occlusion=off, but the voxel volumes are the scene's grid for every "
                 "technique");
-  const int views = rsmViewCount(scene);
+  const int views = rsmViewCount(scene, settings);
   std::ostringstream rsm;
   if (views == 0)
-    rsm << "no analytic lights";
+    rsm << "no analytic lights" << (emitters.empty() ? "" : " and emitters.mode=voxels");
   else
-    rsm << scene.lights.size() << " analytic light(s): " << views << " view(s) of "
+    rsm << scene.lights.size() << " analytic light(s) and " << areaLights
+        << " emissive triangle(s) as area lights (emitters.mode): " << views << " view(s) of "
         << s.rsmResolution << "^2 texels (rsm.resolution)";
   p.stage(StageId::lpv_rsm, views > 0, rsm.str());
   p.maps = glm::ivec2(s.rsmResolution, views);
-  std::string sources = emitters.empty() ? "" : "VPLs on emissive material " + emitters;
+  std::string sources =
+      emitters.empty() || areaLights > 0 ? "" : "VPLs on emissive material " + emitters;
   if (views > 0) sources += std::string(sources.empty() ? "" : " and ") + "a VPL per RSM texel";
   p.stage(StageId::lpv_inject_lpv, true,
           sources.empty() ? "no emissive material and no analytic light: the volume stays dark"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/lights.h"
 #include "common/lpv/propagation_faces.h"
 #include "common/lpv/sh_buffers.h"
 #include "shaders/shared/lpv/storage.h"
@@ -80,7 +81,9 @@ void prepareStorage(const LpvSettings& s, shared::PropagateParams& params,
 shared::ShadeParams shadeParams(const StageContext& ctx) {
   const double s = ctx.scene.grid.voxelSize();
   shared::ShadeParams p{};
-  const int lights = ctx.plan.runs(StageId::lpv_rsm) ? int(ctx.scene.lights.size()) : 0;
+  const int lights = ctx.plan.runs(StageId::lpv_rsm)
+                         ? int(sceneLights(ctx.scene, ctx.settings.vct.emitters).size())
+                         : 0;
   p.shape = glm::ivec4(ctx.scene.grid.resolution, ctx.settings.lpv.coefficients(), lights, 0);
   p.scale = glm::vec4(float(1.0 / (s * s)), ctx.settings.lpv.shadeOffset, 0.0f, 0.0f);
   p.camera = glm::vec4(glm::vec3(ctx.scene.grid.toVoxel(ctx.scene.camera.position)), 0.0f);

@@ -1,9 +1,11 @@
 #include "common/lpv/rsm.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "common/camera_geometry.h"
+#include "common/lights.h"
 
 namespace voxgi::lpv {
 namespace {
@@ -13,10 +15,23 @@ using glm::dvec3;
 // A spot wider than this (full angle) gets the six faces of a point light: one frustum's texels
 // would grow without bound toward 180 degrees.
 constexpr double kSingleViewSpotDeg = 120.0;
+// How far an emissive triangle's views start in front of it, in cells: five times the GPU's near
+// plane (rsmViewProjection).
+constexpr double kTriangleViewLift = 0.05;
 
-bool cubeMapped(const Light& l) {
+// Whether light i of `lights` (sceneLights: the scene's analytic lights, then its emissive
+// triangles) gets six cube faces.
+bool cubeMapped(const Scene& scene, const std::vector<shared::LightData>& lights, size_t i) {
+  if (lights[i].info.x == shared::kLightTriangle) return true;
+  const Light& l = scene.lights[i];
   return l.type == Light::Type::point ||
          (l.type == Light::Type::spot && l.spotAngleDeg > kSingleViewSpotDeg);
+}
+
+// A triangle light's corners (shaders/shared/lighting.h keeps them in position, direction and
+// falloff), voxel-local.
+std::array<dvec3, 3> triangleCorners(const shared::LightData& l) {
+  return {dvec3(glm::vec3(l.position)), dvec3(glm::vec3(l.direction)), dvec3(glm::vec3(l.falloff))};
 }
 
 shared::RsmView view(dvec3 origin, bool perspective, dvec3 forward, double extent, int light,
@@ -57,44 +72,54 @@ double viewSolidAngle(double tanHalf, int resolution) {
 
 }  // namespace
 
-int rsmViewCount(const Scene& scene) {
+int rsmViewCount(const Scene& scene, const Settings& s) {
+  const std::vector<shared::LightData> lights = sceneLights(scene, s.vct.emitters);
   int count = 0;
-  for (const Light& l : scene.lights) count += cubeMapped(l) ? 6 : 1;
+  for (size_t i = 0; i < lights.size(); ++i) count += cubeMapped(scene, lights, i) ? 6 : 1;
   return count;
 }
 
-RsmSetup prepareRsm(const Scene& scene, const LpvSettings& s) {
+RsmSetup prepareRsm(const Scene& scene, const Settings& s) {
   const GridSpec& grid = scene.grid;
   const double n = grid.resolution;
   RsmSetup out;
+  out.lights = sceneLights(scene, s.vct.emitters);
   // The directional views start behind everything: the farthest vertex or corner from the centre.
   const dvec3 centre(0.5 * n);
   double reach = 0.5 * std::sqrt(3.0) * n;
   for (const Mesh& m : scene.meshes)
     for (const glm::dvec3& p : m.positions)
       reach = std::max(reach, glm::length(grid.toVoxel(p) - centre));
-  for (size_t i = 0; i < scene.lights.size(); ++i) {
-    const Light& l = scene.lights[i];
+  for (size_t i = 0; i < out.lights.size(); ++i) {
+    const shared::LightData& l = out.lights[i];
     const int light = static_cast<int>(i), first = static_cast<int>(out.views.size());
-    const dvec3 at = grid.toVoxel(l.position);
-    if (cubeMapped(l)) {
+    dvec3 at(glm::vec3(l.position));
+    if (l.info.x == shared::kLightTriangle) {
+      // The centroid, moved kTriangleViewLift cells off the emitting side: a view starting on the
+      // triangle would meet it and its neighbours at depth 0, where the rasterizer's near plane
+      // (1e-2 cells) and a ray cast disagree.
+      const std::array<dvec3, 3> c = triangleCorners(l);
+      at = (c[0] + c[1] + c[2]) / 3.0 +
+           kTriangleViewLift * glm::normalize(glm::cross(c[1] - c[0], c[2] - c[0]));
+    }
+    if (cubeMapped(scene, out.lights, i)) {
       for (int f = 0; f < 6; ++f) {
         dvec3 axis(0.0);
         axis[f / 2] = f % 2 == 0 ? 1.0 : -1.0;
         out.views.push_back(view(at, true, axis, 1.0, light, first, 6));
       }
-    } else if (l.type == Light::Type::spot) {
-      const double tanHalf = std::tan(0.5 * l.spotAngleDeg * M_PI / 180.0);
-      out.views.push_back(view(at, true, l.direction, tanHalf, light, first, 1));
+    } else if (l.info.x == shared::kLightSpot) {
+      const double tanHalf = std::tan(0.5 * scene.lights[i].spotAngleDeg * M_PI / 180.0);
+      out.views.push_back(view(at, true, scene.lights[i].direction, tanHalf, light, first, 1));
     } else {
-      const dvec3 d = glm::normalize(l.direction);
+      const dvec3 d = glm::normalize(scene.lights[i].direction);
       out.views.push_back(
           view(centre - d * (reach + 1.0), false, d, 0.5 * std::sqrt(3.0) * n, light, first, 1));
     }
   }
   out.params.shape =
-      glm::ivec4(s.rsmResolution, int(out.views.size()), int(scene.lights.size()), 0);
-  out.params.scale = glm::vec4(static_cast<float>(grid.voxelSize()), s.rsmBias, 0.0f, 0.0f);
+      glm::ivec4(s.lpv.rsmResolution, int(out.views.size()), int(out.lights.size()), 0);
+  out.params.scale = glm::vec4(static_cast<float>(grid.voxelSize()), s.lpv.rsmBias, 0.0f, 0.0f);
   return out;
 }
 
@@ -130,7 +155,14 @@ glm::dvec3 rsmFluxBound(const Scene& scene, const RsmSetup& rsm) {
   const double s = grid.voxelSize();
   dvec3 total(0.0);
   double tanHalf = -1.0, solidAngle = 0.0;  // the last perspective view's (cube faces share it)
+  for (const shared::LightData& l : rsm.lights) {
+    if (l.info.x != shared::kLightTriangle) continue;
+    const std::array<dvec3, 3> c = triangleCorners(l);
+    const double area = 0.5 * glm::length(glm::cross(c[1] - c[0], c[2] - c[0])) * s * s;
+    total += M_PI * dvec3(glm::vec3(l.intensity)) * area;
+  }
   for (const shared::RsmView& v : rsm.views) {
+    if (rsm.lights[size_t(v.info.x)].info.x == shared::kLightTriangle) continue;
     const Light& l = scene.lights[size_t(v.info.x)];
     if (v.origin.w == 0.0f) {  // the box's whole cross-section at the light's irradiance
       const double side = 2.0 * double(v.forward.w) * s;

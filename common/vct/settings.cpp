@@ -7,9 +7,10 @@ const std::vector<Param>& params() {
   constexpr auto vct = &Settings::vct;
   static const std::vector<Param> table{
       choice<vct>("emitters.mode", &VctSettings::emitters, {"voxels", "area_lights", "auto"},
-                  "emissive surfaces: emission in the voxels, gathered by the cones; or each "
-                  "emissive triangle an area light, exact unoccluded with a shadow cone, its "
-                  "voxels dark (at most 64 triangles); auto: area lights up to 64 triangles"),
+                  "emissive surfaces: emission in the voxels (gathered by the cones; lpv: VPLs "
+                  "in the volume); or each emissive triangle an area light, exact unoccluded "
+                  "with a shadow cone (lpv: its reflective shadow map), its first bounce through "
+                  "the voxels (at most 64 triangles); auto: area lights up to 64 triangles"),
       choice<vct>("light.attenuation", &VctSettings::attenuation, {"cosine", "normal_weighted"},
                   "per-voxel direct light: max(n.l, 0), or Villegas' per-face weighting"),
       choice<vct>("voxel_shadow.mode", &VctSettings::voxelShadow, {"none", "hard", "soft"},

@@ -33,7 +33,7 @@ struct SurfaceVolumes {
 // The RSM texels' blockers: per light a scatter into `scratch`, then per cell the larger area.
 Buffer rsmBlockers(const StageContext& ctx, const BufferSet& buffers) {
   const int n = ctx.scene.grid.resolution;
-  const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings.lpv);
+  const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings);
   Buffer sums(BufferId::lpv_inject_geometry_blocker_sum, glm::ivec3(n));
   if (!ctx.plan.runs(StageId::lpv_rsm)) return sums;
   const Buffer &depth = buffers.at(BufferId::lpv_rsm_depth),

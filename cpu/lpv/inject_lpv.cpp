@@ -40,7 +40,7 @@ void lpv::inject_lpv(const StageContext& ctx, BufferSet& buffers) {
     for (size_t v = range.begin(); v != range.end(); ++v) add(vpls[v]);
   });
   if (ctx.plan.runs(StageId::lpv_rsm)) {
-    const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings.lpv);
+    const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings);
     const Buffer &flux = buffers.at(BufferId::lpv_rsm_flux),
                  &normal = buffers.at(BufferId::lpv_rsm_normal),
                  &depth = buffers.at(BufferId::lpv_rsm_depth);

@@ -2,7 +2,6 @@
 // casts its pixel rays); the nearest hit's flux, facing normal, depth and triangle go to the maps.
 // Rows of all views are independent tasks.
 #include "common/camera_geometry.h"
-#include "common/lights.h"
 #include "common/lpv/rsm.h"
 #include "common/parallel.h"
 #include "common/ray_scene.h"
@@ -13,8 +12,8 @@ namespace voxgi::cpu {
 
 void lpv::rsm(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, StageId::lpv_rsm);
-  const voxgi::lpv::RsmSetup setup = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings.lpv);
-  const std::vector<shared::LightData> lights = voxelLights(ctx.scene);
+  const voxgi::lpv::RsmSetup setup = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings);
+  const std::vector<shared::LightData>& lights = setup.lights;
   const CameraGeometry g = prepareCameraGeometry(ctx.scene);
   RayScene rays;
   rays.addTriangleSoup(0, g.vertices);

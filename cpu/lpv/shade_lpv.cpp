@@ -4,7 +4,6 @@
 // light only).
 #include <tbb/blocked_range.h>
 
-#include "common/lights.h"
 #include "common/lpv/propagation.h"
 #include "common/lpv/rsm.h"
 #include "common/lpv/sh_buffers.h"
@@ -43,9 +42,8 @@ void lpv::shade_lpv(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, StageId::lpv_shade_lpv);
   using enum BufferId;
   const voxgi::lpv::ShBuffers sh = voxgi::lpv::shBuffers(ctx.settings.lpv);
-  const std::vector<shared::LightData> lights = voxelLights(ctx.scene);
-  const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings.lpv);
-  const ShadeVolumes volumes{buffers.at(sh.accumulated), ctx.scene.grid, lights, rsm,
+  const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings);
+  const ShadeVolumes volumes{buffers.at(sh.accumulated), ctx.scene.grid, rsm.lights, rsm,
                              buffers.find(lpv_rsm_depth)};
   const shared::ShadeParams params = voxgi::lpv::shadeParams(ctx);
   const Buffer& objectId = buffers.at(common_gbuffer_object_id);

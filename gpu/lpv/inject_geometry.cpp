@@ -47,7 +47,7 @@ void lpv::inject_geometry(GlContext& context, const StageContext& ctx, BufferSet
     bindCells();
     cellPass(gl, cells, n, 0);
   } else if (ctx.plan.runs(StageId::lpv_rsm)) {
-    const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings.lpv);
+    const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings);
     const Buffer& depth = buffers.at(BufferId::lpv_rsm_depth);
     GlBuffer views(gl, createBlock(gl, rsm.params, rsm.views));
     GlBuffer depthBlock(gl, uploadWords(gl, depth));

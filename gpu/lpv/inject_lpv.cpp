@@ -34,7 +34,7 @@ void lpv::inject_lpv(GlContext& context, const StageContext& ctx, BufferSet& buf
   dispatchLinear(gl, injection.vpls.size());
   gl.check("inject_lpv: emitters");
   if (ctx.plan.runs(StageId::lpv_rsm)) {
-    const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings.lpv);
+    const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings);
     const Buffer& flux = buffers.at(BufferId::lpv_rsm_flux);
     requireStorageBlock(gl, ctx, flux.words.size() * 4, "the RSM flux");
     GlBuffer views(gl, createBlock(gl, rsm.params, rsm.views));

@@ -8,7 +8,6 @@
 
 #include "common/camera_geometry.h"
 #include "common/error.h"
-#include "common/lights.h"
 #include "common/lpv/rsm.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
@@ -44,11 +43,11 @@ void requireMapSize(const Gl& gl, const StageContext& ctx, int resolution, int v
 
 void lpv::rsm(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   const Gl& gl = beginStage(context, ctx, StageId::lpv_rsm);
-  const voxgi::lpv::RsmSetup setup = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings.lpv);
+  const voxgi::lpv::RsmSetup setup = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings);
   const int r = setup.params.shape.x, views = setup.params.shape.y;
   requireMapSize(gl, ctx, r, views);
   const CameraGeometry g = prepareCameraGeometry(ctx.scene);
-  const std::vector<shared::LightData> lights = voxelLights(ctx.scene);
+  const std::vector<shared::LightData>& lights = setup.lights;
   SurfaceRaster raster(gl, ctx.scene, g, kTargets, {r, r}, views);
   GlBuffer viewBlock(gl, createBlock(gl, setup.params, setup.views));
   GlBuffer lightBlock(gl,

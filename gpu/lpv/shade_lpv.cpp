@@ -1,8 +1,7 @@
 // GPU shade_lpv stage: shaders/lpv/shade_lpv.comp per pixel on the accumulated volume, the
-// gbuffer's surfaces (packed per pixel on the host) and, with analytic lights, the RSM depth.
+// gbuffer's surfaces (packed per pixel on the host) and, with lights, the RSM depth.
 #include <vector>
 
-#include "common/lights.h"
 #include "common/lpv/propagation.h"
 #include "common/lpv/rsm.h"
 #include "common/lpv/sh_buffers.h"
@@ -33,8 +32,8 @@ void lpv::shade_lpv(GlContext& context, const StageContext& ctx, BufferSet& buff
           surfaces[16 * e + size_t(3 * f + c)] = fields[f]->get<float>(e, c);
 
   // Lights, views and depth: a record each when the rsm stage did not run (never read then).
-  std::vector<shared::LightData> lights = voxelLights(ctx.scene);
-  voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings.lpv);
+  voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings);
+  std::vector<shared::LightData> lights = rsm.lights;
   lights.resize(std::max<size_t>(lights.size(), 1));
   rsm.views.resize(std::max<size_t>(rsm.views.size(), 1));
   const Buffer* depth = buffers.find(lpv_rsm_depth);

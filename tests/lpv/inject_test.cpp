@@ -1,6 +1,8 @@
 // inject_lpv, inject_geometry and the planner of light propagation volumes: the emitters' flux
 // reaches the volume (T14: sum c0 = total flux x K0), VPLs land in their cells, the fixed-point
-// scale cannot overflow, and the geometry volume's lobe of a surfel (T13).
+// scale cannot overflow, and the geometry volume's lobe of a surfel (T13). The emitters' own VPLs
+// are the thesis's form (emitters.mode=voxels); by default an emissive triangle is an area light
+// whose RSM texels are the VPLs (tests/lpv/rsm_test.cpp).
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -20,6 +22,13 @@ const Technique& lpvTechnique() {
   return findTechnique("lpv");
 }
 
+// Emitters as VPLs of their own [Martin 2012]: emitters.mode=voxels.
+Settings emitterVpls() {
+  Settings settings;
+  settings.vct.emitters = EmitterLighting::voxels;
+  return settings;
+}
+
 // An emissive quad of emission (2, 1, 0.5) facing -y at y = 0.6, 0.3 x 0.4, in a unit 16^3 grid.
 Scene emitterScene() {
   Material light;
@@ -32,7 +41,7 @@ Scene emitterScene() {
 TEST(InjectLpv, TotalFluxReachesTheVolume) {
   const Scene scene = emitterScene();
   for (int bands : {2, 3}) {
-    Settings settings;
+    Settings settings = emitterVpls();
     settings.lpv.bands = bands;
     const BufferSet out = runCpuUntil(lpvTechnique(), scene, settings, "inject_lpv");
     const lpv::ShBuffers sh = lpv::shBuffers(settings.lpv);
@@ -58,7 +67,7 @@ TEST(InjectLpv, TotalFluxReachesTheVolume) {
 
 TEST(InjectLpv, VplsLandInTheirCellsAndShiftAlongTheirNormal) {
   const Scene scene = emitterScene();
-  Settings settings;
+  Settings settings = emitterVpls();
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
   const lpv::Injection plain =
       lpv::prepareInjection(StageContext{lpvTechnique(), scene, settings, tris});
@@ -83,7 +92,7 @@ TEST(InjectLpv, VplsLandInTheirCellsAndShiftAlongTheirNormal) {
 TEST(InjectLpv, FixedPointScaleCannotOverflow) {
   Scene scene = emitterScene();
   scene.materials[0].emission = {1e30f, 1e-30f, 0.0f};
-  Settings settings;
+  Settings settings = emitterVpls();
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
   const lpv::Injection in =
       lpv::prepareInjection(StageContext{lpvTechnique(), scene, settings, tris});
@@ -95,6 +104,7 @@ TEST(InjectLpv, FixedPointScaleCannotOverflow) {
     EXPECT_EQ(std::frexp(double(in.params.scale[c]), &exponent), 0.5) << "a power of two";
     EXPECT_LE(total[c] * in.params.scale[c], std::ldexp(1.0, 30) * (1 + 1e-6));
   }
+  EXPECT_EQ(in.vpls.size(), 2u * 32u * 32u);
   EXPECT_EQ(in.params.scale[2], 1.0f) << "no light: unit scale";
   double largest = 0.0;
   for (int i = 0; i < 9; ++i)

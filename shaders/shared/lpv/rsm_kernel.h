@@ -9,7 +9,7 @@
 //
 #ifndef VOXGI_LPV_RSM_KERNEL_H
 #define VOXGI_LPV_RSM_KERNEL_H
-#include "../lighting.h"
+#include "../area_light.h"
 #include "lpv_types.h"
 
 VOXGI_NAMESPACE_BEGIN
@@ -48,12 +48,39 @@ VOXGI_FN float rsmFootprint(RsmView v, vec3 dir, float depth, int resolution, fl
   return side * side;
 }
 
+// How far in front of an emissive triangle's plane (cells) a point must lie to receive its light
+// in the RSM. Lambert's formula gives 0 in the plane and grows with the distance from it; a hit
+// in the plane itself (the emitter's other triangle, a surface flush with it) sums edge terms
+// that cancel only in exact arithmetic, and a ray hit and a rasterized fragment round them
+// differently.
+const float kTrianglePlaneMargin = 1e-3f;
+
+// The irradiance an emissive triangle (kLightTriangle) of radiance L delivers at p to a plane
+// facing its centroid: pi L F by Lambert's formula (shaders/shared/area_light.h), the E_perp of
+// its reflective shadow map, whose views start at the centroid.
+VOXGI_FN vec3 triangleFacingIrradiance(LightData l, vec3 p) {
+  precise vec3 normal =
+      cross3(vec3(l.direction) - vec3(l.position), vec3(l.falloff) - vec3(l.position));
+  precise float height = dot3(normal, p - vec3(l.position));
+  if (!(height > kTrianglePlaneMargin * length3(normal))) return vec3(0.0f);
+  precise vec3 centre = ((vec3(l.position) + vec3(l.direction)) + vec3(l.falloff)) / 3.0f;
+  precise vec3 toCentre = centre - p;
+  float d = length3(toCentre);
+  if (d == 0.0f) return vec3(0.0f);
+  vec3 toLight;
+  float distance;
+  float f = triangleFormFactor(l, p, toCentre / d, toLight, distance);
+  precise vec3 e = vec3(l.intensity) * (kPi * f);
+  return e;
+}
+
 // The flux the texel's surface at p (albedo rho) reflects: rho E_perp(p) A_perp. Zero outside a
-// spot's cone.
+// spot's cone and behind an emissive triangle.
 VOXGI_FN vec3 rsmFlux(LightData l, vec3 p, vec3 albedo, float footprint, float voxelSize) {
   vec3 toLight;
   float distance;
-  vec3 e = lightIrradiance(l, p, voxelSize, toLight, distance);
+  vec3 e = l.info.x == kLightTriangle ? triangleFacingIrradiance(l, p)
+                                      : lightIrradiance(l, p, voxelSize, toLight, distance);
   precise vec3 flux = albedo * (e * footprint);
   return flux;
 }

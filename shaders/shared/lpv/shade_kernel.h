@@ -84,9 +84,12 @@ VOLUME_FN float rsmVisibility(VOLUMES_IN RsmParams rp, int light, vec3 p, float 
   return at.z <= depth + bias ? 1.0f : 0.0f;
 }
 
-// Direct light at p (normal n facing the camera) from the p.shape.z analytic lights, as trace_cones
-// computes it but with the shadow map's visibility instead of a shadow cone: diffuse gets the sum
-// of E cos V / pi, specular the sum of E cos V times the Phong lobe about the mirror direction.
+// Direct light at p (normal n facing the camera) from the p.shape.z lights of the RSM (analytic
+// lights and emissive triangles), as trace_cones computes it but with the shadow map's visibility
+// instead of a shadow cone: diffuse gets the sum of E cos V / pi, specular the sum of E cos V
+// times the Phong lobe about the mirror direction. A triangle's E cos is pi L F by Lambert's
+// formula, its direction toward the part above the horizon, its shadow map the one from its
+// centroid.
 VOLUME_FN void lpvDirect(VOLUMES_IN vec3 position, vec3 normal, float shininess, ShadeParams p,
                          RsmParams rp, OUT(vec3) diffuse, OUT(vec3) specular) {
   diffuse = vec3(0.0f);
@@ -97,13 +100,25 @@ VOLUME_FN void lpvDirect(VOLUMES_IN vec3 position, vec3 normal, float shininess,
     LightData l = FETCH(lightAt)(i);
     vec3 toLight;
     float distance;
-    vec3 e = lightIrradiance(l, position, rp.scale.x, toLight, distance);
+    // The irradiance on a plane facing the light, and the surface's cosine to it; a triangle's
+    // cosines are in its form factor already.
+    vec3 e;
+    float cosine, weight;
+    if (l.info.x == kLightTriangle) {
+      float f = triangleFormFactor(l, position, normal, toLight, distance);
+      e = vec3(l.intensity) * (kPi * f);
+      cosine = dot3(normal, toLight);
+      weight = 1.0f;
+    } else {
+      e = lightIrradiance(l, position, rp.scale.x, toLight, distance);
+      cosine = dot3(normal, toLight);
+      weight = cosine;
+    }
     if (e == vec3(0.0f)) continue;
-    float cosine = dot3(normal, toLight);
     if (cosine <= 0.0f) continue;
     float visibility = l.info.y == 1u ? rsmVisibility(VOLUMES rp, i, position, cosine) : 1.0f;
     if (visibility == 0.0f) continue;
-    precise vec3 arriving = e * (cosine * visibility);
+    precise vec3 arriving = e * (weight * visibility);
     diffuse = diffuse + arriving * kInvPi;
     specular = specular + arriving * phongLobe(dot3(mirror, toLight), shininess);
   }
