@@ -57,7 +57,10 @@ const std::vector<Param>& params() {
 }
 
 const std::vector<Preset>& presets() {
-  static const std::vector<Preset> table{{"default", {}}};
+  // martin2012: the thesis's form, the emitters' own VPLs carrying their direct light through the
+  // volume [Martin 2012, §3.2.1]; its per-scene steps and occlusion are set per scene
+  // (docs/lpv.md).
+  static const std::vector<Preset> table{{"default", {}}, {"martin2012", {"emitters.mode=voxels"}}};
   return table;
 }
 

@@ -82,10 +82,11 @@ TEST(LpvLedger, AClosedBoxAccountsForTheEmittedFlux) {
         // and 5 % for holpv in 12 steps; the thesis's weights lose most before it gets there).
         EXPECT_GT(removed, (keep == 1.0 ? 0.02 : 0.002) * emitted) << what;
         const double lostToWeights = (1.0 - keep) * (l.injected[c] + [&] {
-          double held = 0.0;
-          for (size_t k = 0; k + 1 < l.steps.size(); ++k) held += l.steps[k].volume[c];
-          return held;
-        }());
+                                       double held = 0.0;
+                                       for (size_t k = 0; k + 1 < l.steps.size(); ++k)
+                                         held += l.steps[k].volume[c];
+                                       return held;
+                                     }());
         EXPECT_NEAR(removed + left + lostToWeights + previous, l.injected[c], 1e-4 * emitted)
             << what;
         // Shading is linear in the volume: the steps' readings add up to the accumulated one's.
