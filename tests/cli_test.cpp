@@ -217,6 +217,24 @@ TEST(Cli, CompareReportsMetricsNoiseFloorAndAnErrorMap) {
       << nanTest.output;
 }
 
+// voxgi ledger: the emitters' VPLs of the thesis's form land in the volume and every step's flux
+// is in the JSON; a technique without a propagation volume is one line and exit 2.
+TEST(Cli, LedgerAccountsForAVolumesLight) {
+  const std::string dir = testTempDir(), scene = sourcePath("scenes/cornell_box_lpv.json");
+  const CommandResult r = voxgi("ledger " + scene + " --technique holpv --resolution 16" +
+                                " --preset martin2012 --backend cpu --json " + dir + "l.json");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("read by shading"), std::string::npos) << r.output;
+  const nlohmann::json l = nlohmann::json::parse(std::ifstream(dir + "l.json"));
+  EXPECT_EQ(l["steps"].size(), 16u);  // the scene's propagate.steps
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(l["injected"][c].get<double>(), l["emitted"][c].get<double>(),
+                1e-5 * l["emitted"][c].get<double>());
+  const CommandResult vct = voxgi("ledger " + scene + " --technique vct");
+  EXPECT_EQ(vct.code, 2) << vct.output;
+  EXPECT_EQ(std::count(vct.output.begin(), vct.output.end(), '\n'), 1) << vct.output;
+}
+
 TEST(Cli, PlanSaysWhatRunsAndWhy) {
   // The box's light is two emissive triangles: area lights with a shadow cone each by default.
   const CommandResult r = voxgi("plan " + sourcePath("scenes/cornell_box.json"));
