@@ -44,7 +44,8 @@ namespace {
 
 // Keys only the path tracer takes; every other key is a staged technique's (a --set key,
 // `resolution` or `backend`).
-const std::set<std::string> kPathKeys{"spp", "bounces", "seed", "sampler", "light_sampling"};
+const std::set<std::string> kPathKeys{"spp",     "bounces",        "seed",
+                                      "sampler", "light_sampling", "replicas"};
 
 // A path key to the path tracer; to a staged technique `resolution`, `backend`, a shared key or
 // one of its own (a sweep of propagate.steps leaves vct alone).
@@ -217,6 +218,8 @@ std::vector<Job> makeJobs(const StudyOptions& o, const std::vector<Sweep>& sweep
           job.options.sampler = named(reference::kSamplerNames, s->key, value);
         else if (s->key == "light_sampling")
           job.options.lightSampling = named(reference::kLightSamplingNames, s->key, value);
+        else if (s->key == "replicas")
+          job.options.replicas = std::clamp(parseInt(s->key, value), 1, reference::kMaxReplicas);
         else
           applySetting(job.settings, s->key + "=" + value, "--sweep");
       }
@@ -300,7 +303,7 @@ void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
   cmd.add_option(
       "--sweep", o.sweeps,
       "key=v1,v2,... (repeatable): a --set key, resolution or backend (staged techniques); spp, "
-      "bounces, seed, sampler or light_sampling (path)");
+      "bounces, seed, sampler, light_sampling or replicas (path)");
   cmd.add_option("--preset", o.preset, "parameter preset, before --set and the sweeps");
   cmd.add_option("--set", o.sets, "fixed parameter key=value (repeatable)");
   cmd.add_option("--reference", o.reference, "reference image (.exr)")->required();

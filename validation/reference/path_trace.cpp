@@ -423,8 +423,10 @@ PathTraceResult pathTrace(const Scene& scene, const PathTraceOptions& options) {
   const float aspect = float(w) / float(h);
   std::atomic<uint64_t> rays{0};
   std::atomic<int> rowsDone{0};
-  const int replicas =
-      options.sampler == SamplerKind::sobol ? std::min(options.replicas, options.spp) : 1;
+  // At most one replica per sample, and no more than the per-pixel sums hold.
+  const int replicas = options.sampler == SamplerKind::sobol
+                           ? std::clamp(std::min(options.replicas, options.spp), 1, kMaxReplicas)
+                           : 1;
   parallelFor(0, h, [&](int y) {
     if (options.cancel && options.cancel->load()) return;
     Tracer tracer(scene, setup, options.bounces, options.lightSampling);
