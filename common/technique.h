@@ -4,6 +4,7 @@
 // a technique without one of them does not link.
 #pragma once
 
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <string_view>
@@ -56,5 +57,12 @@ std::string techniqueNames();
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
 #include "common/stages.inc"
+
+namespace vct {
+// Voxel cone tracing's keys that start with one of `prefixes`: those another technique's stages
+// read from Settings::vct too (the octree's cone and light keys, light propagation volumes'
+// emitters.mode), so a key means one thing for every technique that takes it.
+std::vector<Param> paramsWithPrefix(std::initializer_list<std::string_view> prefixes);
+}  // namespace vct
 
 }  // namespace voxgi

@@ -2,8 +2,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <limits>
 #include <set>
 #include <sstream>
@@ -258,6 +260,44 @@ TEST(Cli, RenderHelpListsEveryParameterWithItsDefault) {
   for (const char* key : {"voxel_shadow.kappa = 1", "voxel_shadow.mode = hard",
                           "mip.mode = anisotropic", "kahl2019:", "villegas2017:"})
     EXPECT_NE(r.output.find(key), std::string::npos) << key << "\n" << r.output;
+}
+
+// dump --checksums fingerprints each buffer's words with FNV-1a: the same figure as hashing the
+// floats of the EXR it writes, and the same at one thread as at four.
+TEST(Cli, DumpChecksumsFingerprintTheBuffersWords) {
+  const std::string dir = testTempDir() + "checksums";
+  const std::string args = "dump " + sourcePath("scenes/cornell_box.json") +
+                           " --stage gbuffer --resolution 16 --image 48 --backend cpu --checksums";
+  const CommandResult four = voxgi("--threads 4 " + args + " --out " + dir);
+  ASSERT_EQ(four.code, 0) << four.output;
+  const CommandResult one = voxgi("--threads 1 " + args);
+  ASSERT_EQ(one.code, 0) << one.output;
+  const auto checksumLines = [](const std::string& output) {
+    std::istringstream in(output);
+    std::vector<std::string> lines;
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind("checksum ", 0) == 0) lines.push_back(line);
+    return lines;
+  };
+  EXPECT_EQ(checksumLines(four.output), checksumLines(one.output));
+  ASSERT_EQ(checksumLines(one.output).size(), 7u) << one.output;
+
+  const Image albedo = readExr(dir + "/gbuffer.pixel_albedo.exr");
+  uint64_t h = 0xcbf29ce484222325ull;
+  for (const glm::vec3& p : albedo.pixels)
+    for (int c = 0; c < 3; ++c) {
+      unsigned char bytes[4];
+      std::memcpy(bytes, &p[c], 4);  // little-endian, as the words are hashed
+      for (const unsigned char b : bytes) h = (h ^ b) * 0x100000001b3ull;
+    }
+  std::ostringstream expected;
+  expected << "checksum gbuffer.pixel_albedo " << albedo.pixels.size() * 3 << " " << std::hex
+           << std::setw(16) << std::setfill('0') << h;
+  const std::vector<std::string> lines = checksumLines(one.output);
+  EXPECT_NE(std::find(lines.begin(), lines.end(), expected.str()), lines.end())
+      << expected.str() << "\n"
+      << one.output;
+  EXPECT_EQ(voxgi(args.substr(0, args.find(" --checksums"))).code, 2);  // neither --out nor it
 }
 
 TEST(Cli, DumpWritesPyramidsAsVdbAndImagesAsExr) {

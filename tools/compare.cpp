@@ -24,6 +24,11 @@ bool finite(glm::vec3 p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
 }
 
+// JSON has no NaN: an undefined metric (a black reference, a term black in it) is null.
+nlohmann::json numberOrNull(double v) {
+  return std::isnan(v) ? nlohmann::json() : nlohmann::json(v);
+}
+
 }  // namespace
 
 void addUnitsOptions(CLI::App& cmd, reference::MetricUnits& units, bool& skipEmitters) {
@@ -56,12 +61,12 @@ std::vector<uint8_t> withoutEmitters(bool skip, const std::string& referencePath
 }
 
 nlohmann::json metricsJson(const reference::ImageMetrics& m) {
-  const auto value = [](double v) { return std::isnan(v) ? nlohmann::json() : nlohmann::json(v); };
-  return {{"rmse", value(m.rmse)},
-          {"rel_mse", value(m.relMse)},
-          {"mare", value(m.mare)},
-          {"ssim", value(m.ssim)},
-          {"energy", {value(m.energy.r), value(m.energy.g), value(m.energy.b)}}};
+  return {
+      {"rmse", numberOrNull(m.rmse)},
+      {"rel_mse", numberOrNull(m.relMse)},
+      {"mare", numberOrNull(m.mare)},
+      {"ssim", numberOrNull(m.ssim)},
+      {"energy", {numberOrNull(m.energy.r), numberOrNull(m.energy.g), numberOrNull(m.energy.b)}}};
 }
 
 void addCompareOptions(CLI::App& cmd, CompareOptions& o) {
@@ -139,19 +144,18 @@ nlohmann::json printTermBudget(const CompareOptions& o, const Image& reference,
     const std::string png = termErrorMapPath(o, term);
     writeRgb8Png(png, reference.width, reference.height,
                  reference::errorColours(termImage(test, term), r, mask, scale));
-    // JSON has no NaN: a term black in the reference has no brightness ratio.
-    const auto value = [](double v) {
-      return std::isnan(v) ? nlohmann::json() : nlohmann::json(v);
-    };
-    out[name] = {{"rel_mse", value(m.own.relMse)},
-                 {"rmse", m.own.rmse},
-                 {"share", value(m.share)},
-                 {"brightness", value(m.meanRatio)},
-                 {"baselines",
-                  {{"black", {{"rel_mse", value(black.own.relMse)}, {"share", value(black.share)}}},
-                   {"constant",
-                    {{"rel_mse", value(constant.own.relMse)}, {"share", value(constant.share)}}}}},
-                 {"error_png", png}};
+    out[name] = {
+        {"rel_mse", numberOrNull(m.own.relMse)},
+        {"rmse", m.own.rmse},
+        {"share", numberOrNull(m.share)},
+        {"brightness", numberOrNull(m.meanRatio)},
+        {"baselines",
+         {{"black",
+           {{"rel_mse", numberOrNull(black.own.relMse)}, {"share", numberOrNull(black.share)}}},
+          {"constant",
+           {{"rel_mse", numberOrNull(constant.own.relMse)},
+            {"share", numberOrNull(constant.share)}}}}},
+        {"error_png", png}};
   }
   return out;
 }
@@ -166,15 +170,12 @@ void checkSameSize(int width, int height, const std::string& name, const Image& 
                          std::to_string(reference.height));
 }
 
-std::optional<reference::ImageMetrics> referenceNoiseFloor(const std::string& referencePath,
-                                                           const Image& reference,
-                                                           const std::vector<uint8_t>& mask,
-                                                           const reference::MetricScale& scale) {
-  const std::string variance = reference::variancePath(referencePath);
-  if (!std::filesystem::exists(variance)) return std::nullopt;
-  const Image v = readExr(variance);
-  checkSameSize(v.width, v.height, variance, reference);
-  return reference::noiseFloor(reference, v, mask, scale);
+std::optional<Image> readVarianceImage(const std::string& imagePath, const Image& reference) {
+  const std::string path = reference::variancePath(imagePath);
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  Image variance = readExr(path);
+  checkSameSize(variance.width, variance.height, path, reference);
+  return variance;
 }
 
 std::vector<uint8_t> readMask(const std::string& path, const Image& reference) {
@@ -264,16 +265,14 @@ int runCompare(const CompareOptions& o) {
                                                 [](glm::vec3 p) { return !finite(p); }));
   if (nonFinite > 0) std::cout << "  non-finite pixels in " << o.test << ": " << nonFinite << "\n";
   // The reference's own error: a perfect image would still measure this far from it.
-  if (const auto floor = referenceNoiseFloor(o.reference, reference, mask, scale)) {
+  if (const std::optional<Image> rv = readVarianceImage(o.reference, reference)) {
+    const reference::ImageMetrics floor = reference::noiseFloor(reference, *rv, mask, scale);
     std::cout << "  noise floor of the reference (" << reference::variancePath(o.reference)
-              << "): RMSE " << floor->rmse << ", relMSE " << floor->relMse << "\n";
-    out["noise_floor"] = {{"rmse", floor->rmse}, {"rel_mse", floor->relMse}};
+              << "): RMSE " << floor.rmse << ", relMSE " << floor.relMse << "\n";
+    out["noise_floor"] = {{"rmse", floor.rmse}, {"rel_mse", floor.relMse}};
     // Both images path traced: does each variance image predict their difference?
-    const std::string testVariance = reference::variancePath(o.test);
-    if (std::filesystem::exists(testVariance)) {
-      const Image tv = readExr(testVariance), rv = readExr(reference::variancePath(o.reference));
-      checkSameSize(tv.width, tv.height, testVariance, reference);
-      const reference::ZSpread z = reference::zSpread(test, tv, reference, rv, mask);
+    if (const std::optional<Image> tv = readVarianceImage(o.test, reference)) {
+      const reference::ZSpread z = reference::zSpread(test, *tv, reference, *rv, mask);
       std::cout << "  z = (t - r) / sqrt(both variances): mean " << z.mean
                 << ", standard deviation " << z.deviation << " over " << z.values
                 << " values (1: the variance images predict the error)\n";

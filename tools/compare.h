@@ -49,11 +49,8 @@ Image readReference(const std::string& path);
 // Throws InputError naming `name` when width x height is not the reference's size.
 void checkSameSize(int width, int height, const std::string& name, const Image& reference);
 
-// The noise floor of a path-traced reference (reference::noiseFloor) from the variance image
-// beside it, if there is one.
-std::optional<reference::ImageMetrics> referenceNoiseFloor(const std::string& referencePath,
-                                                           const Image& reference,
-                                                           const std::vector<uint8_t>& mask,
-                                                           const reference::MetricScale& scale);
+// The variance image beside a path-traced image (reference::variancePath), checked to be the
+// reference's size; nothing when there is none.
+std::optional<Image> readVarianceImage(const std::string& imagePath, const Image& reference);
 
 }  // namespace voxgi::tools

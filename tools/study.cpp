@@ -474,9 +474,11 @@ int runStudy(const StudyOptions& o) {
   if (o.plot.empty()) return kExitOk;
 
   std::string noiseFloor;
-  const auto floor = referenceNoiseFloor(o.reference, reference, mask, scale);
-  if (floor && (o.metric == "rmse" || o.metric == "rel_mse"))
-    noiseFloor = std::to_string(o.metric == "rmse" ? floor->rmse : floor->relMse);
+  const std::optional<Image> variance = readVarianceImage(o.reference, reference);
+  if (variance && (o.metric == "rmse" || o.metric == "rel_mse")) {
+    const reference::ImageMetrics floor = reference::noiseFloor(reference, *variance, mask, scale);
+    noiseFloor = std::to_string(o.metric == "rmse" ? floor.rmse : floor.relMse);
+  }
   const std::string title = std::filesystem::path(o.scene).filename().string() + " against " +
                             std::filesystem::path(o.reference).filename().string();
   plot(o.csv, o.plot, o.metric, title, noiseFloor);

@@ -266,7 +266,21 @@ int cmdPlan(const Common& c) {
   return kExitOk;
 }
 
-int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
+// FNV-1a over a buffer's words, little-endian bytes: a fingerprint of its contents that does not
+// depend on the file formats (a .vdb file carries a random UUID).
+uint64_t wordsChecksum(const Words& words) {
+  uint64_t h = 0xcbf29ce484222325ull;
+  for (const uint32_t w : words)
+    for (int byte = 0; byte < 4; ++byte) {
+      h ^= (w >> (8 * byte)) & 0xffu;
+      h *= 0x100000001b3ull;
+    }
+  return h;
+}
+
+int cmdDump(const Common& c, const std::string& stage, const std::string& dir, bool checksums) {
+  if (dir.empty() && !checksums)
+    throw InputError("--out", "", "dump needs an output folder (--out) or --checksums");
   const Technique& technique = findTechnique(c.technique);
   const std::vector<const StageSpec*> requested = requestedStages(technique, stage);
   if (stage != "all") {
@@ -279,10 +293,16 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir) {
                        "the plan skips " + s.qualifiedName() + " (" + plan.whySkipped(s.id) +
                            "), so it has no buffers to dump (voxgi plan shows why)");
   }
-  prepareOutputFolder(dir);
+  if (!dir.empty()) prepareOutputFolder(dir);
   const StageRun run = runStages(c, stage == "all" ? nullptr : requested.front(), true);
   for (const StageSpec* s : run.stages) {
     if (stage != "all" && s != requested.front()) continue;
+    if (checksums)
+      for (const Buffer* b : buffersOf(run.buffers, *s, true))
+        std::cout << "checksum " << b->spec->qualifiedName() << " " << b->words.size() << " "
+                  << std::hex << std::setw(16) << std::setfill('0') << wordsChecksum(b->words)
+                  << std::dec << std::setfill(' ') << "\n";
+    if (dir.empty()) continue;
     for (const std::string& path :
          writeBuffers(dir + "/" + std::string(s->name), buffersOf(run.buffers, *s, true),
                       run.scene.grid, {}, svo::levelLayouts(run.buffers, run.scene.grid)))
@@ -455,7 +475,11 @@ int main(int argc, char** argv) {
   addCommon(dump, true);
   addTechnique(dump);
   dump->add_option("--stage", stage, stageHelp + " or all")->required();
-  dump->add_option("--out", out, "output folder")->required();
+  dump->add_option("--out", out, "output folder");
+  bool checksums = false;
+  dump->add_flag("--checksums", checksums,
+                 "print each buffer's word count and FNV-1a checksum (a run's fingerprint, to "
+                 "check that a change or another machine reproduces it bit for bit)");
   auto* plan = app.add_subcommand(
       "plan", "print the stages and cones a scene needs, and why each is in or out");
   addCommon(plan, false);
@@ -586,7 +610,7 @@ int main(int argc, char** argv) {
       return c.technique == "path" ? cmdRenderPath(c, pathOptions, out, png, terms)
                                    : cmdRenderTechnique(c, out, png, terms);
     if (*diff) return cmdDiff(c, stage, json, dumpDir);
-    if (*dump) return cmdDump(c, stage, out);
+    if (*dump) return cmdDump(c, stage, out, checksums);
     if (*plan) return cmdPlan(c);
     if (*ledger) return cmdLedger(c, json);
     if (*sampleCmd) return cmdSample(sample);

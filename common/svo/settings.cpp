@@ -1,8 +1,6 @@
 // The sparse voxel octree's --set keys and presets. The cone and light keys are voxel cone
 // tracing's own (the same fields, Settings::vct): the octree traces with the shared cone kernel,
 // so a cone set or shadow model means the same thing for both techniques.
-#include <algorithm>
-
 #include "common/technique.h"
 
 namespace voxgi::svo {
@@ -29,12 +27,9 @@ const std::vector<Param>& params() {
                     "B-spline over 4^3 leaves (smoother, 8 trilinear samples)"),
     };
     // Voxel cone tracing's keys that the octree's stages read.
-    static const char* const kShared[] = {"emitters.", "cones.", "shadow.",
-                                          "specular.", "light.", "voxel_shadow."};
-    for (const Param& p : vct::params())
-      if (std::any_of(std::begin(kShared), std::end(kShared),
-                      [&](const char* prefix) { return p.key.rfind(prefix, 0) == 0; }))
-        out.push_back(p);
+    for (Param& p : vct::paramsWithPrefix(
+             {"emitters.", "cones.", "shadow.", "specular.", "light.", "voxel_shadow."}))
+      out.push_back(std::move(p));
     return out;
   }();
   return table;

@@ -57,6 +57,17 @@ const std::vector<Param>& params() {
   return table;
 }
 
+std::vector<Param> paramsWithPrefix(std::initializer_list<std::string_view> prefixes) {
+  std::vector<Param> out;
+  for (const Param& p : params())
+    for (const std::string_view prefix : prefixes)
+      if (p.key.rfind(prefix, 0) == 0) {
+        out.push_back(p);
+        break;
+      }
+  return out;
+}
+
 const std::vector<Preset>& presets() {
   static const std::vector<Preset> table{
       {"default", {}},
