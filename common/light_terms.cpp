@@ -4,7 +4,7 @@
 
 #include "common/error.h"
 #include "common/technique.h"
-#include "shaders/shared/compose_kernel.h"
+#include "shaders/shared/vct/compose_kernel.h"
 
 namespace voxgi {
 namespace {

@@ -55,7 +55,7 @@ TermImages readTermImages(const std::string& image);
 // A staged technique's terms from the buffers its run left: the gbuffer's materials times the
 // light buffers of its shading stage (direct_diffuse, direct_specular, indirect_diffuse,
 // indirect_specular), put together by the kernel that composes its image
-// (shaders/shared/compose_kernel.h), so the terms add up to the image up to float rounding.
+// (shaders/shared/vct/compose_kernel.h), so the terms add up to the image up to float rounding.
 // nullopt when the technique has no such buffers.
 std::optional<TermImages> techniqueTerms(const Technique& technique, const BufferSet& buffers,
                                          const Settings& settings, const Scene& scene);

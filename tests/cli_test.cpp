@@ -50,14 +50,14 @@ TEST(Cli, SvoLevelsDumpAsAlignedGrids) {
             " --technique svo --stage all --resolution 16 --image 16 --out " + dir);
   ASSERT_EQ(r.code, 0) << r.output;
   openvdb::initialize();
-  openvdb::io::File build(dir + "/build_svo.vdb");
+  openvdb::io::File build(dir + "/build.vdb");
   build.open();
   const auto opacity = build.readGrid("leaf_sums_opacity");
   EXPECT_GT(opacity->activeVoxelCount(), 0u);
   EXPECT_NE(opacity->metaValue<std::string>("voxgi_svo_weight_scale"), "");
   const auto child = build.readGrid("nodes_child_L3");  // the root tile: tree level 1 of 4
   EXPECT_EQ(child->activeVoxelCount(), 8u);
-  openvdb::io::File mip(dir + "/mip_svo.vdb");
+  openvdb::io::File mip(dir + "/mip.vdb");
   mip.open();
   const double h = 562.0 / 16.0;
   for (const auto& [name, level] : {std::pair<std::string, int>{"node_faces_+x_L1", 1},
@@ -92,7 +92,8 @@ TEST(Cli, SampleWritesAPointCloudThatRenders) {
   // The octree renders it on either backend; it needs at least 4 leaves a side.
   for (const char* backend : {"cpu", "gpu"}) {
     r = voxgi("render " + cloud + " --technique svo --backend " + backend +
-              " --resolution 16 --image 16 --set svo.frames=2 --out " + testTempDir() + "svo.exr");
+              " --resolution 16 --image 16 --set propagate.frames=2 --out " + testTempDir() +
+              "svo.exr");
     EXPECT_EQ(r.code, 0) << r.output;
   }
   r = voxgi("render " + cloud + " --technique svo --resolution 2 --image 16 --out " +

@@ -109,7 +109,8 @@ INSTANTIATE_TEST_SUITE_P(
                 {"propagate.clamp=on", "propagate.accumulate_injection=off", "inject.shift=on"}},
         LpvCase{"holpv", gpu::GlPlatform::egl, {"lpv.storage=f16"}},
         LpvCase{"lpv", gpu::GlPlatform::egl, {}, "scenes/bunny.json"},
-        LpvCase{"lpv", gpu::GlPlatform::osmesa, {"inject.geometry=rsm"}, "scenes/bunny.json"},
+        LpvCase{
+            "lpv", gpu::GlPlatform::osmesa, {"inject_geometry.blockers=rsm"}, "scenes/bunny.json"},
         LpvCase{"holpv", gpu::GlPlatform::osmesa, {"inject.shift=on"}, "scenes/bunny.json", true}),
     [](const testing::TestParamInfo<LpvCase>& p) {
       std::string scene = std::string(p.param.scene).substr(7);
@@ -158,11 +159,12 @@ TEST_P(GpuSvoStages, AgreeWithCpu) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, GpuSvoStages,
-    testing::Values(SvoCase{"cornell_box", gpu::GlPlatform::egl, {"svo.frames=2"}},
+    testing::Values(SvoCase{"cornell_box", gpu::GlPlatform::egl, {"propagate.frames=2"}},
                     SvoCase{"bunny",
                             gpu::GlPlatform::osmesa,
-                            {"svo.first_step=ndf", "svo.clear_each_frame=on", "svo.frames=2"}},
-                    SvoCase{"cloud", gpu::GlPlatform::egl, {"svo.shade_filter=tricubic"}}),
+                            {"svo.first_step=ndf", "propagate.clear_each_frame=on",
+                             "propagate.frames=2"}},
+                    SvoCase{"cloud", gpu::GlPlatform::egl, {"shade.filter=tricubic"}}),
     [](const testing::TestParamInfo<SvoCase>& p) {
       return std::string(p.param.name) + "_" + gpu::glPlatformName(p.param.platform);
     });

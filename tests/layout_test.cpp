@@ -14,8 +14,8 @@
 #include "shaders/shared/gbuffer_kernel.h"
 #include "shaders/shared/lighting.h"
 #include "shaders/shared/lpv/lpv_types.h"
-#include "shaders/shared/svo/splat_kernel.h"
-#include "shaders/shared/compose_kernel.h"
+#include "shaders/shared/svo/build_kernel.h"
+#include "shaders/shared/vct/compose_kernel.h"
 #include "shaders/shared/vct/cone_types.h"
 #include "shaders/shared/vct/light_voxels_kernel.h"
 #include "shaders/shared/voxelize_layout.h"
@@ -39,18 +39,18 @@ std::vector<std::vector<const ShaderSource*>> stagePrograms() {
           {&vct_trace_cones_comp},
           {&vct_compose_comp},
           {&lpv_rsm_vert, &lpv_rsm_frag},
-          {&lpv_inject_lpv_comp},
+          {&lpv_inject_comp},
           {&lpv_inject_geometry_comp},
           {&lpv_inject_geometry_rsm_comp},
           {&lpv_propagate_comp},
-          {&lpv_shade_lpv_comp},
-          {&svo_build_svo_comp},
-          {&svo_inject_svo_comp},
-          {&svo_mip_svo_comp},
-          {&svo_gather_svo_comp},
+          {&lpv_shade_comp},
+          {&svo_build_comp},
+          {&svo_propagate_inject_comp},
+          {&svo_mip_comp},
+          {&svo_propagate_gather_comp},
           {&gbuffer_disc_vert, &gbuffer_disc_frag},
-          {&svo_brick_svo_comp},
-          {&svo_shade_svo_comp}};
+          {&svo_mip_brick_comp},
+          {&svo_shade_comp}};
 }
 
 struct Field {

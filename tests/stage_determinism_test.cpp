@@ -63,7 +63,7 @@ TEST(StageDeterminism, SvoBitIdenticalOn1_2_8Threads) {
     scene.camera.width = scene.camera.height = 48;
     const Technique& svo = findTechnique("svo");
     const Settings settings = resolveSettings(svo, scene.settings, scene.file, "default",
-                                              {"svo.frames=2", "svo.first_step=ndf"});
+                                              {"propagate.frames=2", "svo.first_step=ndf"});
     const std::string last = svo.steps().back()->qualifiedName();
     uint64_t reference = 0;
     for (int threads : {1, 2, 8}) {

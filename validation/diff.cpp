@@ -37,13 +37,13 @@ TieClassifier classifierFor(StageId stage, const StageContext& ctx, const Buffer
 
 // The relative tolerance of element e of a buffer under lpv.storage=f16 (specs T16): a rounding
 // that falls the other way on the two backends moves a value by one half ULP (2^-11), and each
-// step can carry that on, so the float buffers of propagate and shade_lpv allow 2^-10 per step up
+// step can carry that on, so the float buffers of propagate and shade allow 2^-10 per step up
 // to the element's (the accumulated volume and the image: every step).
 double halfStorageTolerance(const BufferSpec& spec, const EffectPlan& plan, const Buffer& b,
                             size_t e, double tolerance) {
   const StageId stage = spec.stageSpec().id;
   if (!plan.on(Effect::f16) || spec.type != ScalarType::f32 ||
-      (stage != StageId::lpv_propagate && stage != StageId::lpv_shade_lpv))
+      (stage != StageId::lpv_propagate && stage != StageId::lpv_shade))
     return tolerance;
   const size_t volume = size_t(b.extent.x) * size_t(b.extent.x) * size_t(b.extent.x);
   const double steps =

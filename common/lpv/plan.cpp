@@ -40,16 +40,16 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   std::string sources =
       emitters.empty() || areaLights > 0 ? "" : "VPLs on emissive material " + emitters;
   if (views > 0) sources += std::string(sources.empty() ? "" : " and ") + "a VPL per RSM texel";
-  p.stage(StageId::lpv_inject_lpv, true,
+  p.stage(StageId::lpv_inject, true,
           sources.empty() ? "no emissive material and no analytic light: the volume stays dark"
                           : sources);
   const ShBuffers sh = shBuffers(s);
   p.set(sh.coefficients, true);
   const bool fromRsm = s.geometry == LpvGeometry::rsm;
-  const std::string source = !fromRsm ? "voxelize's surfaces"
-                             : views > 0
-                                 ? "the RSM texels' surfaces (inject.geometry=rsm)"
-                                 : "inject.geometry=rsm, but no analytic light: nothing blocks";
+  const std::string source =
+      !fromRsm    ? "voxelize's surfaces"
+      : views > 0 ? "the RSM texels' surfaces (inject_geometry.blockers=rsm)"
+                  : "inject_geometry.blockers=rsm, but no analytic light: nothing blocks";
   p.stage(StageId::lpv_inject_geometry, s.occlusion == LpvOcclusion::on || p.full,
           s.occlusion == LpvOcclusion::on
               ? "blockers for propagate (propagate.occlusion=on) from " + source
@@ -76,7 +76,7 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   p.effect("emission per pixel", Effect::emission, p.full || !emitters.empty(),
            emitters.empty() ? "no emissive material" : "emissive material " + emitters);
   p.set(Effect::direct_light, views > 0 || p.full);
-  p.stage(StageId::lpv_shade_lpv, true,
+  p.stage(StageId::lpv_shade, true,
           views > 0 ? "irradiance from the accumulated volume, direct light with the RSM depth as "
                       "shadow map, x albedo + emission"
                     : "irradiance from the accumulated volume x albedo + emission");

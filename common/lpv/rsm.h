@@ -1,5 +1,5 @@
-// The reflective shadow maps' views, prepared once on the host for the rsm stage, inject_lpv and
-// shade_lpv on both backends (docs/stages/lpv/rsm.md).
+// The reflective shadow maps' views, prepared once on the host for the rsm stage, inject and
+// shade on both backends (docs/stages/lpv/rsm.md).
 #pragma once
 
 #include <vector>
@@ -16,7 +16,7 @@ namespace voxgi::lpv {
 struct RsmSetup {
   shared::RsmParams params{};
   // The lights the maps are of: the analytic lights, then, under emitters.mode=area_lights, every
-  // emissive triangle (common/lights.h, sceneLights). shade_lpv's direct light loops over them.
+  // emissive triangle (common/lights.h, sceneLights). shade's direct light loops over them.
   std::vector<shared::LightData> lights;
   std::vector<shared::RsmView> views;  // grouped by light, in the lights' order
 };
@@ -39,7 +39,7 @@ float rsmFarPlane(const Scene& scene, const RsmSetup& rsm);
 // An upper bound of the flux per colour the RSM texels inside the grid can carry: the largest
 // albedo times, per analytic light, its irradiance at the grid's farthest corner times the views'
 // total cross-section there (exact for inverse-square falloff), and per emissive triangle the
-// flux it emits, pi x emission x area. inject_lpv's fixed-point scale uses it, so the scale does
+// flux it emits, pi x emission x area. inject's fixed-point scale uses it, so the scale does
 // not depend on what the maps saw.
 glm::dvec3 rsmFluxBound(const Scene& scene, const RsmSetup& rsm);
 

@@ -34,7 +34,7 @@ const std::vector<Param>& params() {
         choice<lpv>("inject.shift", &LpvSettings::vplShift, {"off", "on"},
                     "move each VPL half a cell along its normal before binning (self-lighting)"),
         choice<lpv>(
-            "inject.geometry", &LpvSettings::geometry, {"voxels", "rsm"},
+            "inject_geometry.blockers", &LpvSettings::geometry, {"voxels", "rsm"},
             "the geometry volume's blockers: voxelize's surface area and normals per voxel, "
             "or the surfaces the analytic lights' RSM texels see (the light seeing most of a "
             "cell wins)"),

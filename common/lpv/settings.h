@@ -30,7 +30,7 @@ struct LpvSettings {
   LpvToggle history = LpvToggle::off;             // keep every step's volume
   float emitterSpacing = 0.25f;         // emitter VPL spacing along a triangle's edges, in cells
   LpvToggle vplShift = LpvToggle::off;  // move each VPL half a cell along its normal before binning
-  float shadeOffset = 0.0f;             // cells along the normal where shade_lpv samples the volume
+  float shadeOffset = 0.0f;             // cells along the normal where shade samples the volume
   LpvGeometry geometry = LpvGeometry::voxels;  // inject_geometry's source
   int rsmResolution = 256;                     // texels per side of each reflective shadow map view
   float rsmBias = 1.5f;  // shadow-map depth bias, in texel footprints / cosine

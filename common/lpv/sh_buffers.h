@@ -8,7 +8,7 @@
 namespace voxgi::lpv {
 
 struct ShBuffers {
-  BufferId intensitySum;  // inject_lpv
+  BufferId intensitySum;  // inject
   BufferId steps;         // propagate, with propagate.history=on
   BufferId accumulated;   // propagate
   Effect coefficients;    // sh4 or sh9
@@ -18,9 +18,9 @@ struct ShBuffers {
 inline ShBuffers shBuffers(const LpvSettings& s) {
   using enum BufferId;
   if (s.bands == 2)
-    return {lpv_inject_lpv_intensity_sum_sh4, lpv_propagate_steps_sh4,
-            lpv_propagate_accumulated_sh4, Effect::sh4, Effect::sh4_steps};
-  return {lpv_inject_lpv_intensity_sum_sh9, lpv_propagate_steps_sh9, lpv_propagate_accumulated_sh9,
+    return {lpv_inject_intensity_sum_sh4, lpv_propagate_steps_sh4, lpv_propagate_accumulated_sh4,
+            Effect::sh4, Effect::sh4_steps};
+  return {lpv_inject_intensity_sum_sh9, lpv_propagate_steps_sh9, lpv_propagate_accumulated_sh9,
           Effect::sh9, Effect::sh9_steps};
 }
 

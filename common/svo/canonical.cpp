@@ -4,7 +4,7 @@
 #include <numeric>
 #include <vector>
 
-#include "shaders/shared/svo/splat_kernel.h"
+#include "shaders/shared/svo/build_kernel.h"
 #include "shaders/shared/svo/svo_layout.h"
 
 namespace voxgi::svo {

@@ -2,7 +2,7 @@
 
 #include <bit>
 
-#include "shaders/shared/svo/splat_kernel.h"
+#include "shaders/shared/svo/build_kernel.h"
 #include "shaders/shared/svo/svo_layout.h"
 
 namespace voxgi::svo {
@@ -62,8 +62,8 @@ SparseLayout brickLayout(const Words& leafTiles) {
 
 SparseLayouts levelLayouts(const BufferSet& run, const GridSpec& grid) {
   SparseLayouts out;
-  const Buffer* tiles = run.find(BufferId::svo_build_svo_tiles);
-  const Buffer* leafTiles = run.find(BufferId::svo_build_svo_leaf_tiles);
+  const Buffer* tiles = run.find(BufferId::svo_build_tiles);
+  const Buffer* leafTiles = run.find(BufferId::svo_build_leaf_tiles);
   if (tiles == nullptr || leafTiles == nullptr) return out;
   const int depth = std::countr_zero(unsigned(grid.resolution));
   const std::vector<Group> faces = {{0, 4, "_+x"},  {4, 4, "_-x"},  {8, 4, "_+y"},
@@ -80,24 +80,23 @@ SparseLayouts levelLayouts(const BufferSet& run, const GridSpec& grid) {
                                    {shared::kSumAlbedo, 3, "_albedo"},
                                    {shared::kSumNormal, 3, "_normal"},
                                    {shared::kSumEmission, 3, "_emission"}};
-  out[BufferId::svo_build_svo_nodes] = childLayout(tiles->words, depth, node);
-  out[BufferId::svo_build_svo_tiles] = tileLayout(tiles->words, depth);
-  out[BufferId::svo_build_svo_leaf_tiles] = tileLayout(leafTiles->words, depth);
+  out[BufferId::svo_build_nodes] = childLayout(tiles->words, depth, node);
+  out[BufferId::svo_build_tiles] = tileLayout(tiles->words, depth);
+  out[BufferId::svo_build_leaf_tiles] = tileLayout(leafTiles->words, depth);
   const SparseLayout leaves = childLayout(leafTiles->words, depth, {{0, 4, ""}});
   SparseLayout leafSums = leaves;
   leafSums.groups = sums;
   // The sums' scales are no voxel: metadata of the sums' grids.
-  if (const Buffer* s = run.find(BufferId::svo_build_svo_scales))
+  if (const Buffer* s = run.find(BufferId::svo_build_scales))
     leafSums.metadata = {{"voxgi_svo_weight_scale", std::to_string(s->get<float>(0, 0))},
                          {"voxgi_svo_emission_scale", std::to_string(s->get<float>(0, 1))}};
-  out[BufferId::svo_build_svo_leaf_sums] = leafSums;
-  for (const BufferId id :
-       {BufferId::svo_propagate_svo_direct, BufferId::svo_propagate_svo_radiance,
-        BufferId::svo_propagate_svo_gathered})
+  out[BufferId::svo_build_leaf_sums] = leafSums;
+  for (const BufferId id : {BufferId::svo_propagate_direct, BufferId::svo_propagate_radiance,
+                            BufferId::svo_propagate_gathered})
     out[id] = leaves;
-  out[BufferId::svo_mip_svo_node_faces] = childLayout(tiles->words, depth, faces);
-  out[BufferId::svo_mip_svo_gathered_bricks] = brickLayout(leafTiles->words);
-  out[BufferId::svo_build_svo_scales] = {{-1}, {glm::ivec3(0)}, {}, {}};  // in leaf_sums' metadata
+  out[BufferId::svo_mip_node_faces] = childLayout(tiles->words, depth, faces);
+  out[BufferId::svo_mip_gathered_bricks] = brickLayout(leafTiles->words);
+  out[BufferId::svo_build_scales] = {{-1}, {glm::ivec3(0)}, {}, {}};  // in leaf_sums' metadata
   return out;
 }
 

@@ -10,7 +10,7 @@
 namespace voxgi::svo {
 
 // The layout of every sparse buffer in `run` (a run of the svo technique over `grid`; none if
-// build_svo's buffers are not in it).
+// build's buffers are not in it).
 SparseLayouts levelLayouts(const BufferSet& run, const GridSpec& grid);
 
 }  // namespace voxgi::svo

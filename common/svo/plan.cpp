@@ -42,28 +42,28 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
         << points << " point(s)";
   if (triangles > 0)
     build << ", " << triangles << " triangle(s) sampled at " << s.meshDensity
-          << " points per leaf face (svo.mesh_density)";
-  p.stage(StageId::svo_build_svo, true, build.str());
+          << " points per leaf face (build.mesh_density)";
+  p.stage(StageId::svo_build, true, build.str());
   std::ostringstream frames;
   const size_t areaLights = areaLightCount(scene, settings.vct.emitters);
   frames << scene.lights.size() << " analytic light(s)";
   if (areaLights > 0)
     frames << " and " << areaLights << " emissive triangle(s) as area lights (emitters.mode)";
   frames << " injected with " << settingValue(settings, "voxel_shadow.mode") << " voxel shadows; "
-         << s.frames << " frame(s) (svo.frames)"
+         << s.frames << " frame(s) (propagate.frames)"
          << (s.clearEachFrame == SvoToggle::on ? " each gathering from the direct light alone"
                                                : ", one more bounce each");
-  p.stage(StageId::svo_propagate_svo, true, frames.str());
-  p.stage(StageId::svo_mip_svo, true,
+  p.stage(StageId::svo_propagate, true, frames.str());
+  p.stage(StageId::svo_mip, true,
           "the last frame's radiance up the tree (svo.first_step=" +
               settingValue(settings, "svo.first_step") + "), the gathered light's leaf bricks");
   p.stage(StageId::common_gbuffer, true, "the surface each pixel sees (point clouds as discs)");
   const std::string emitters = materialsWith(scene, [](const Material& m) { return m.emissive(); });
   p.effect("emission per pixel", Effect::emission, p.full || !emitters.empty(),
            emitters.empty() ? "no emissive material" : "emissive material " + emitters);
-  p.stage(StageId::svo_shade_svo, true,
+  p.stage(StageId::svo_shade, true,
           "shadow cones and the specular cone through the tree, diffuse light from the leaves (" +
-              settingValue(settings, "svo.shade_filter") + ")");
+              settingValue(settings, "shade.filter") + ")");
   const std::string glossy = materialsWith(scene, [](const Material& m) { return m.glossy(); });
   p.effect("specular cone", Effect::specular, p.full || !glossy.empty(),
            !glossy.empty() ? "glossy material " + glossy

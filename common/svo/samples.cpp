@@ -63,7 +63,7 @@ SampleSet prepareSamples(const Scene& scene, int depth, double meshDensity, uint
   requireMemory(
       (set.cloudPoints + set.meshPoints) * sizeof(shared::SvoSample) + set.meshPoints * 52u,
       std::to_string(set.cloudPoints + set.meshPoints) + " svo samples", scene.file,
-      "svo.mesh_density");
+      "build.mesh_density");
   set.samples.reserve(set.cloudPoints + set.meshPoints);
   const bool meshEmission = emittersFor(scene, emitters) == EmitterLighting::voxels;
   for (const PointCloud& cloud : scene.pointClouds) appendCloud(scene, cloud, leaf, set.samples);

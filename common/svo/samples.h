@@ -9,7 +9,7 @@
 
 #include "common/scene.h"
 #include "common/settings.h"
-#include "shaders/shared/svo/splat_kernel.h"
+#include "shaders/shared/svo/build_kernel.h"
 
 namespace voxgi::svo {
 
@@ -24,12 +24,12 @@ struct SampleSet {
 };
 
 // Samples of the scene over the grid cube at 2^depth leaves per side. Meshes get `meshDensity`
-// points per leaf face of area (svo.mesh_density), per material, from `seed`. A point's RoI edge
+// points per leaf face of area (build.mesh_density), per material, from `seed`. A point's RoI edge
 // is the side of a square of its area (pi r^2 / 2, common/point_neighbours.h), in leaves, at most
 // 1; its opacity density is the reciprocal, so a surface's samples add opacity 1 per leaf face.
 // Under emitters.mode=area_lights the meshes' emissive triangles are area lights, so the points
 // sampled on them carry no emission; a point cloud's emission stays.
-// Throws InputError naming svo.mesh_density when the samples would not fit in memory.
+// Throws InputError naming build.mesh_density when the samples would not fit in memory.
 SampleSet prepareSamples(const Scene& scene, int depth, double meshDensity, uint64_t seed,
                          EmitterLighting emitters);
 

@@ -9,20 +9,20 @@ const std::vector<Param>& params() {
   constexpr auto svo = &Settings::svo;
   static const std::vector<Param> table = [] {
     std::vector<Param> out{
-        number<svo>("svo.mesh_density", &SvoSettings::meshDensity, 0.25f, 64.0f,
+        number<svo>("build.mesh_density", &SvoSettings::meshDensity, 0.25f, 64.0f,
                     "points sampled per leaf face of mesh area (meshes in an svo scene become "
                     "points, area-uniform)"),
-        number<svo>("svo.frames", &SvoSettings::frames, 0, 256,
+        number<svo>("propagate.frames", &SvoSettings::frames, 0, 256,
                     "progressive frames: each gathers one more diffuse bounce at every leaf from "
                     "the last (0: direct light only)"),
-        choice<svo>("svo.clear_each_frame", &SvoSettings::clearEachFrame, {"off", "on"},
+        choice<svo>("propagate.clear_each_frame", &SvoSettings::clearEachFrame, {"off", "on"},
                     "every frame gathers from the direct light alone: exactly one bounce"),
         choice<svo>("svo.first_step", &SvoSettings::firstStep, {"plain", "ndf"},
                     "the first mip step composites the leaves as the dense mip does, or weights "
                     "each by its normal distribution per face (Salm 2015, 4.4.2)"),
-        number<svo>("svo.seed", &SvoSettings::seed, 0, 1 << 30,
+        number<svo>("build.seed", &SvoSettings::seed, 0, 1 << 30,
                     "seed of the points sampled on meshes"),
-        choice<svo>("svo.shade_filter", &SvoSettings::shadeFilter, {"trilinear", "tricubic"},
+        choice<svo>("shade.filter", &SvoSettings::shadeFilter, {"trilinear", "tricubic"},
                     "how shading samples the leaves' gathered light: trilinearly, or with a cubic "
                     "B-spline over 4^3 leaves (smoother, 8 trilinear samples)"),
     };

@@ -4,7 +4,7 @@
 
 #include "common/parallel.h"
 #include "shaders/shared/svo/svo_layout.h"
-#include "shaders/shared/svo/splat_kernel.h"
+#include "shaders/shared/svo/build_kernel.h"
 
 namespace voxgi::svo {
 namespace {
@@ -26,22 +26,22 @@ void putTree(BufferSet& buffers, OctreeWords words, float weightScale, float emi
     b.words = std::move(w);
     buffers.put(std::move(b));
   };
-  put(BufferId::svo_build_svo_nodes, words.nodes);
-  put(BufferId::svo_build_svo_tiles, words.tiles);
-  put(BufferId::svo_build_svo_leaf_tiles, words.leafTiles);
-  put(BufferId::svo_build_svo_leaf_sums, words.sums);
-  Buffer scales(BufferId::svo_build_svo_scales, glm::ivec3(1));
+  put(BufferId::svo_build_nodes, words.nodes);
+  put(BufferId::svo_build_tiles, words.tiles);
+  put(BufferId::svo_build_leaf_tiles, words.leafTiles);
+  put(BufferId::svo_build_leaf_sums, words.sums);
+  Buffer scales(BufferId::svo_build_scales, glm::ivec3(1));
   scales.set(0, 0, weightScale);
   scales.set(0, 1, emissionScale);
   buffers.put(std::move(scales));
 }
 
 OctreeWords treeWords(const BufferSet& buffers, bool sums) {
-  OctreeWords w{buffers.at(BufferId::svo_build_svo_nodes).words,
-                buffers.at(BufferId::svo_build_svo_tiles).words,
-                buffers.at(BufferId::svo_build_svo_leaf_tiles).words,
+  OctreeWords w{buffers.at(BufferId::svo_build_nodes).words,
+                buffers.at(BufferId::svo_build_tiles).words,
+                buffers.at(BufferId::svo_build_leaf_tiles).words,
                 {}};
-  if (sums) w.sums = buffers.at(BufferId::svo_build_svo_leaf_sums).words;
+  if (sums) w.sums = buffers.at(BufferId::svo_build_leaf_sums).words;
   return w;
 }
 
@@ -65,8 +65,8 @@ Leaves resolveLeaves(const Words& sums, float weightScale, float emissionScale) 
 }
 
 Leaves treeLeaves(const BufferSet& buffers) {
-  const Buffer& scales = buffers.at(BufferId::svo_build_svo_scales);
-  return resolveLeaves(buffers.at(BufferId::svo_build_svo_leaf_sums).words, scales.get<float>(0, 0),
+  const Buffer& scales = buffers.at(BufferId::svo_build_scales);
+  return resolveLeaves(buffers.at(BufferId::svo_build_leaf_sums).words, scales.get<float>(0, 0),
                        scales.get<float>(0, 1));
 }
 
@@ -87,7 +87,7 @@ std::vector<glm::vec4> vec4Values(const Buffer& buffer) {
 Buffer nodeFacesBuffer(const NodeLevels& levels) {
   size_t nodes = 0;
   for (const auto& level : levels.levels) nodes += level.size() / kFaces;
-  Buffer b(BufferId::svo_mip_svo_node_faces, glm::ivec3(int(nodes), 1, 1));
+  Buffer b(BufferId::svo_mip_node_faces, glm::ivec3(int(nodes), 1, 1));
   size_t at = 0;
   for (const auto& level : levels.levels)
     for (const glm::vec4& v : level)

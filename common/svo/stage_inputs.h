@@ -1,5 +1,5 @@
 // What the octree's stages read, prepared the same way for both backends: the tree's words from
-// build_svo's buffers, the leaves decoded from their fixed-point sums, the per-leaf and per-node
+// build's buffers, the leaves decoded from their fixed-point sums, the per-leaf and per-node
 // values as buffers and back, and the cone parameters of a tree (common/svo/stages.inc).
 #pragma once
 
@@ -14,22 +14,22 @@
 
 namespace voxgi::svo {
 
-// Puts build_svo's buffers: the tree's words (moved in) and the scales of its sums.
+// Puts build's buffers: the tree's words (moved in) and the scales of its sums.
 void putTree(BufferSet& buffers, OctreeWords words, float weightScale, float emissionScale);
-// build_svo's words (copies): nodes, tiles, leaf tiles and, with `sums`, the leaf sums.
+// build's words (copies): nodes, tiles, leaf tiles and, with `sums`, the leaf sums.
 OctreeWords treeWords(const BufferSet& buffers, bool sums);
 
 // The leaf sums in floats: sums / weightScale (times emissionScale for the emission), one value
 // per leaf slot. Both factors are powers of two, so the decode is exact wherever a sum fits a
 // float's 24 bits, and the same on both backends.
 Leaves resolveLeaves(const Words& sums, float weightScale, float emissionScale);
-// The leaves from build_svo's leaf sums and scales.
+// The leaves from build's leaf sums and scales.
 Leaves treeLeaves(const BufferSet& buffers);
 
 // A per-leaf (or per-texel) RGBA buffer and back.
 Buffer vec4Buffer(BufferId id, const std::vector<glm::vec4>& values);
 std::vector<glm::vec4> vec4Values(const Buffer& buffer);
-// mip_svo's node_faces (six faces a node, nodes in canonical order) and back, for a tree whose
+// mip's node_faces (six faces a node, nodes in canonical order) and back, for a tree whose
 // node tiles are `tiles` (kTileWords each, level by level).
 Buffer nodeFacesBuffer(const NodeLevels& levels);
 NodeLevels nodeLevels(const Buffer& faces, const Words& tiles, int depth);

@@ -1,7 +1,7 @@
 // CPU inject_geometry stage: the shared kernel (shaders/shared/lpv/inject_geometry_kernel.h) per
 // geometry-volume cell, a gather over voxelize's sums: each cell is written by one task. With
-// inject.geometry=rsm, per light a scatter of its RSM texels' surfaces with integer atomics, the
-// light whose sum has the larger area kept per cell, then the same lobe per cell.
+// inject_geometry.blockers=rsm, per light a scatter of its RSM texels' surfaces with integer
+// atomics, the light whose sum has the larger area kept per cell, then the same lobe per cell.
 #include <atomic>
 
 #include <tbb/blocked_range.h>

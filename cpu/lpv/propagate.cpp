@@ -6,8 +6,8 @@
 
 #include <cstring>
 
-#include "common/lpv/injection.h"
-#include "common/lpv/propagation.h"
+#include "common/lpv/inject.h"
+#include "common/lpv/propagate.h"
 #include "common/lpv/sh_buffers.h"
 #include "common/parallel.h"
 #include "cpu/stages.h"

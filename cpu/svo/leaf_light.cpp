@@ -3,7 +3,7 @@
 #include <bit>
 
 #include "shaders/shared/vct/bounce_kernel.h"
-#include "shaders/shared/svo/mip_weights.h"
+#include "shaders/shared/svo/mip_kernel.h"
 #include "shaders/shared/vct/mip_kernel.h"
 
 namespace voxgi::cpu::svo {

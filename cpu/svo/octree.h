@@ -12,7 +12,7 @@
 
 #include "common/buffer.h"
 #include "common/svo/canonical.h"
-#include "shaders/shared/svo/splat_kernel.h"
+#include "shaders/shared/svo/build_kernel.h"
 
 namespace voxgi::cpu::svo {
 
@@ -69,7 +69,7 @@ Octree buildOctree(std::span<const shared::SvoSample> samples, int depth,
                    const std::string& source = "samples", SampleHomes* homes = nullptr);
 
 // The tree of `depth` whose words (canonical order, common/svo/canonical.h) are `words` (its sums
-// are not used): build_svo's buffers as the later stages read them.
+// are not used): build's buffers as the later stages read them.
 Octree octreeFromWords(voxgi::svo::OctreeWords words, int depth);
 
 // The fixed-point sums the samples add to the leaves (kSumWords per leaf voxel, 8 per leaf tile

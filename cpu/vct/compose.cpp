@@ -1,9 +1,9 @@
-// CPU compose stage: the shared kernel (shaders/shared/compose_kernel.h) per pixel.
+// CPU compose stage: the shared kernel (shaders/shared/vct/compose_kernel.h) per pixel.
 #include <tbb/blocked_range.h>
 
 #include "common/parallel.h"
 #include "cpu/stages.h"
-#include "shaders/shared/compose_kernel.h"
+#include "shaders/shared/vct/compose_kernel.h"
 
 namespace voxgi::cpu {
 void vct::compose(const StageContext& ctx, BufferSet& buffers) {

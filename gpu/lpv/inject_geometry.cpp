@@ -1,5 +1,5 @@
 // GPU inject_geometry stage: shaders/lpv/inject_geometry.comp per geometry-volume cell on
-// voxelize's sums uploaded as storage buffers; with inject.geometry=rsm, per light
+// voxelize's sums uploaded as storage buffers; with inject_geometry.blockers=rsm, per light
 // shaders/lpv/inject_geometry_rsm.comp scatters its texels' surfaces into a scratch volume that
 // inject_geometry.comp then merges, and finally turns into the blocking potential.
 #include <algorithm>

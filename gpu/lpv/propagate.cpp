@@ -1,10 +1,10 @@
-// GPU propagate stage: LPV_0 from the fixed-point sums on the host (common/lpv/injection.h, as
+// GPU propagate stage: LPV_0 from the fixed-point sums on the host (common/lpv/inject.h, as
 // the CPU's), then shaders/lpv/propagate.comp propagate.steps times between two storage buffers,
 // all on the GPU; each step is copied into the history buffer when the plan keeps it.
 #include <vector>
 
-#include "common/lpv/injection.h"
-#include "common/lpv/propagation.h"
+#include "common/lpv/inject.h"
+#include "common/lpv/propagate.h"
 #include "common/lpv/sh_buffers.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"

@@ -70,7 +70,7 @@ std::vector<uint32_t> levelStarts(const Tree& t) {
 
 // Fills v.nodeFaces from `first`'s leaves up to the root tile; returns them per level.
 NodeLevels mipInto(const Gl& gl, const Tree& t, const Volumes& v, voxgi::svo::FirstStep first) {
-  Program program(gl, {&shaders::svo_mip_svo_comp});
+  Program program(gl, {&shaders::svo_mip_comp});
   program.use();
   program.set("uDepth", t.depth);
   program.set("uNdfWeights", first == voxgi::svo::FirstStep::ndf ? 1 : 0);
@@ -87,7 +87,7 @@ NodeLevels mipInto(const Gl& gl, const Tree& t, const Volumes& v, voxgi::svo::Fi
     out.levels[size_t(level)] = download(gl, v.nodeFaces.get(), size_t(tiles) * 8 * 6,
                                          size_t(start[size_t(level)]) * 8 * 6);
   }
-  gl.check("mip_svo");
+  gl.check("mip");
   return out;
 }
 
@@ -115,8 +115,8 @@ LeafRadiance injectLeaves(GlContext& context, const Tree& tree, const voxgi::svo
   const Volumes v(gl, tree, leaves, nullptr);
   GlBuffer lightBlock(gl, createBlock(gl, params, lights));
   GlBuffer direct(gl, createBuffer(gl, v.slots * sizeof(glm::vec4), nullptr));
-  leafPass(gl, tree, v, shaders::svo_inject_svo_comp, {lightBlock.get(), direct.get()},
-           "inject_svo");
+  leafPass(gl, tree, v, shaders::svo_propagate_inject_comp, {lightBlock.get(), direct.get()},
+           "propagate_inject");
   return download(gl, direct.get(), v.slots);
 }
 
@@ -139,8 +139,8 @@ LeafRadiance bounceOnce(GlContext& context, const Tree& tree, const voxgi::svo::
   GlBuffer coneBlock(gl, createBlock(gl, params, cones));
   GlBuffer directBlock(gl, upload(gl, direct));
   GlBuffer frame(gl, createBuffer(gl, 2 * v.slots * sizeof(glm::vec4), nullptr));
-  leafPass(gl, tree, v, shaders::svo_gather_svo_comp,
-           {coneBlock.get(), directBlock.get(), frame.get()}, "gather_svo");
+  leafPass(gl, tree, v, shaders::svo_propagate_gather_comp,
+           {coneBlock.get(), directBlock.get(), frame.get()}, "propagate_gather");
   const std::vector<glm::vec4> both = download(gl, frame.get(), 2 * v.slots);
   LeafRadiance next(v.slots), gathered(v.slots);
   for (size_t s = 0; s < v.slots; ++s) {

@@ -1,5 +1,5 @@
-// Light in the sparse voxel octree on the GPU (shaders/svo/inject_svo.comp, mip_svo.comp,
-// gather_svo.comp): the twins of cpu/svo/leaf_light.h, running the same shared kernels on an
+// Light in the sparse voxel octree on the GPU (shaders/svo/propagate_inject.comp, mip.comp,
+// propagate_gather.comp): the twins of cpu/svo/leaf_light.h, running the same shared kernels on an
 // octree in the canonical form. On llvmpipe injection and the mipmap equal the CPU's bit for bit;
 // the gather differs by an ULP here and there (GLSL's division normalising the leaf normal), as
 // the dense bounce does.

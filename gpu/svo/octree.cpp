@@ -15,7 +15,7 @@ using shared::kNodeWords;
 using shared::kSvoNull;
 using shared::kTileWords;
 
-// The passes of build_svo.comp.
+// The passes of build.comp.
 enum Pass : int {
   kMark = 0,
   kCountLeafTiles = 1,
@@ -70,7 +70,7 @@ class Builder {
  public:
   Builder(const Gl& gl, std::span<const shared::SvoSample> samples, int depth, float scale)
       : gl_(gl),
-        program_(gl, {&shaders::svo_build_svo_comp}),
+        program_(gl, {&shaders::svo_build_comp}),
         depth_(depth),
         samples_(gl, createBuffer(gl, samples.size() * sizeof(shared::SvoSample), samples.data())),
         counters_(gl, false, 8),
@@ -128,7 +128,7 @@ class Builder {
           source, "grid.resolution",
           "a leaf's opacity passes 2^31 fixed-point units; raise grid.resolution or thin "
           "the point cloud");
-    gl_.check("build_svo");
+    gl_.check("build");
     voxgi::svo::OctreeWords out{nodes_.read(size_t(nodeTiles) * 8 * kNodeWords),
                                 tiles_.read(size_t(nodeTiles) * kTileWords),
                                 leafTiles_.read(size_t(leafTiles) * kTileWords),

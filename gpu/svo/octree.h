@@ -1,4 +1,4 @@
-// The sparse voxel octree's build on the GPU (shaders/svo/build_svo.comp): the structure
+// The sparse voxel octree's build on the GPU (shaders/svo/build.comp): the structure
 // allocated with atomics level by level, pools grown to the tiles actually allocated, the leaf
 // sums with integer atomics; read back in the canonical form (common/svo/canonical.h), which
 // equals the CPU build's (cpu/svo/octree.h) word for word.
@@ -9,7 +9,7 @@
 
 #include "common/svo/canonical.h"
 #include "gpu/context.h"
-#include "shaders/shared/svo/splat_kernel.h"
+#include "shaders/shared/svo/build_kernel.h"
 
 namespace voxgi::gpu::svo {
 

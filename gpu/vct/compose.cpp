@@ -5,7 +5,7 @@
 #include "gpu/program.h"
 #include "gpu/stages.h"
 #include "gpu/volumes.h"
-#include "shaders/shared/compose_kernel.h"
+#include "shaders/shared/vct/compose_kernel.h"
 
 namespace voxgi::gpu {
 

@@ -1,6 +1,6 @@
 #version 450 core
 // inject_geometry per geometry-volume cell (shaders/shared/lpv/inject_geometry_kernel.h). uMode
-// 0: the blocking potential from voxelize's weight and normal sums; with inject.geometry=rsm,
+// 0: the blocking potential from voxelize's weight and normal sums; with inject_geometry.blockers=rsm,
 // 1: keep the scattered light's sum (lpv/inject_geometry_rsm.comp) where its area is the larger,
 // 2: the blocking potential from the kept sums.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;

@@ -1,5 +1,5 @@
 #version 450 core
-// inject_geometry with inject.geometry=rsm: one invocation per texel of one light's views adds
+// inject_geometry with inject_geometry.blockers=rsm: one invocation per texel of one light's views adds
 // the surface it saw (shaders/shared/lpv/rsm_kernel.h) to its geometry-volume cell
 // with integer atomics, so the sums do not depend on the order invocations run in.
 layout(local_size_x = 64) in;

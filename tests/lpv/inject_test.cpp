@@ -1,4 +1,4 @@
-// inject_lpv, inject_geometry and the planner of light propagation volumes: the emitters' flux
+// inject, inject_geometry and the planner of light propagation volumes: the emitters' flux
 // reaches the volume (T14: sum c0 = total flux x K0), VPLs land in their cells, the fixed-point
 // scale cannot overflow, and the geometry volume's lobe of a surfel (T13). The emitters' own VPLs
 // are the thesis's form (emitters.mode=voxels); by default an emissive triangle is an area light
@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "common/lpv/injection.h"
+#include "common/lpv/inject.h"
 #include "common/lpv/sh_buffers.h"
 #include "common/voxel_triangles.h"
 #include "shaders/shared/lpv/inject_geometry_kernel.h"
@@ -43,7 +43,7 @@ TEST(InjectLpv, TotalFluxReachesTheVolume) {
   for (int bands : {2, 3}) {
     Settings settings = emitterVpls();
     settings.lpv.bands = bands;
-    const BufferSet out = runCpuUntil(lpvTechnique(), scene, settings, "inject_lpv");
+    const BufferSet out = runCpuUntil(lpvTechnique(), scene, settings, "inject");
     const lpv::ShBuffers sh = lpv::shBuffers(settings.lpv);
     const Buffer& sums = out.at(sh.intensitySum);
     const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);

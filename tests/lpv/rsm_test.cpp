@@ -1,4 +1,4 @@
-// The rsm stage and what inject_lpv and shade_lpv make of it (docs/stages/lpv/rsm.md): a texel's
+// The rsm stage and what inject and shade make of it (docs/stages/lpv/rsm.md): a texel's
 // flux carries the surface's cosine once (T14), a point light's six faces catch all its flux, a
 // spot's map its cone's, the RSM's VPLs reach the volume, depth is the distance along the view's
 // axis, and the depth as shadow map darkens exactly what an occluder hides.
@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "common/lpv/injection.h"
+#include "common/lpv/inject.h"
 #include "common/lpv/rsm.h"
 #include "common/lpv/sh_buffers.h"
 #include "common/voxel_triangles.h"
@@ -84,7 +84,7 @@ BufferSet shadeFloor(Scene scene) {
   Settings settings;
   settings.lpv.rsmResolution = 128;
   settings.lpv.steps = 1;
-  return runCpuUntil(lpvTechnique(), scene, settings, "shade_lpv");
+  return runCpuUntil(lpvTechnique(), scene, settings, "shade");
 }
 
 // T14, the tilt at which Martin's Φ = A_s I_s Ω_s (n_s·l)+ counts the cosine twice (specs A4):
@@ -127,7 +127,7 @@ TEST(Rsm, PointLightCubeMapCatchesAllItsFlux) {
   scene.lights.push_back(pointLight({0.43, 0.55, 0.61}, intensity));
   Settings settings;
   settings.lpv.rsmResolution = 64;
-  const BufferSet out = runCpuUntil(lpvTechnique(), scene, settings, "inject_lpv");
+  const BufferSet out = runCpuUntil(lpvTechnique(), scene, settings, "inject");
   const glm::dvec3 sum = fluxSum(out.at(BufferId::lpv_rsm_flux));
   for (int k = 0; k < 3; ++k) {
     const double expected = albedo[k] * 4.0 * M_PI * intensity[k];
@@ -191,7 +191,7 @@ TEST(Rsm, EmissiveTrianglesMapsCatchTheirFlux) {
   Settings settings;
   settings.lpv.rsmResolution = 64;
   EXPECT_EQ(lpv::rsmViewCount(scene, settings), 12) << "six faces per triangle";
-  const BufferSet out = runCpuUntil(lpvTechnique(), scene, settings, "inject_lpv");
+  const BufferSet out = runCpuUntil(lpvTechnique(), scene, settings, "inject");
   const glm::dvec3 sum = fluxSum(out.at(BufferId::lpv_rsm_flux));
   const double area = 0.1 * 0.1;
   for (int k = 0; k < 3; ++k) {
@@ -248,7 +248,7 @@ TEST(ShadeLpv, ShadowMapDarkensWhatAnOccluderHides) {
   const glm::dvec3 light(0.5, 0.9, 0.5);
   scene.lights.push_back(pointLight(light, glm::vec3(1.0f)));
   const BufferSet out = shadeFloor(scene);
-  const Buffer &direct = out.at(BufferId::lpv_shade_lpv_direct_diffuse),
+  const Buffer &direct = out.at(BufferId::lpv_shade_direct_diffuse),
                &position = out.at(BufferId::common_gbuffer_pixel_position),
                &primitive = out.at(BufferId::common_gbuffer_primitive_id);
   const double s = scene.grid.voxelSize();
@@ -275,9 +275,9 @@ TEST(ShadeLpv, ShadowMapDarkensWhatAnOccluderHides) {
   EXPECT_GT(lit, 1000);
 }
 
-// inject.geometry=rsm: the texels' surfaces as blockers. Inside a closed box every wall is seen by
-// a point light at its centre at cosines of at least 1/sqrt(3), so the blocker areas sum to the
-// walls' area (6 x 9.6^2 cells^2), up to the midpoint rule's 6e-5 at 64^2 per face; the area-
+// inject_geometry.blockers=rsm: the texels' surfaces as blockers. Inside a closed box every wall is
+// seen by a point light at its centre at cosines of at least 1/sqrt(3), so the blocker areas sum to
+// the walls' area (6 x 9.6^2 cells^2), up to the midpoint rule's 6e-5 at 64^2 per face; the area-
 // weighted normals, turned toward the light, cancel. A second light sees the same walls: each cell
 // keeps one light's surfaces, so the total stays near that area instead of doubling (above it by
 // what the larger of two samplings of a cell adds: measured +6.6 %).
@@ -315,7 +315,7 @@ TEST(ShadeLpv, AreaLightDirectLightIsLambertsFormulaOutsideTheShadow) {
   Scene scene = makeScene(tris, unitGrid(32), grey(glm::vec3(0.5f)));
   addEmitter(scene, downwardSquare(0.9, 0.4, 0.6), glm::vec3(1.0f));
   const BufferSet out = shadeFloor(scene);
-  const Buffer &direct = out.at(BufferId::lpv_shade_lpv_direct_diffuse),
+  const Buffer &direct = out.at(BufferId::lpv_shade_direct_diffuse),
                &position = out.at(BufferId::common_gbuffer_pixel_position),
                &primitive = out.at(BufferId::common_gbuffer_primitive_id);
   const double s = scene.grid.voxelSize();

@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-#include "common/lpv/propagation.h"
+#include "common/lpv/propagate.h"
 
 namespace voxgi::test {
 

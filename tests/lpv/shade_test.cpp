@@ -1,4 +1,4 @@
-// shade_lpv's irradiance (T4, T15 of docs/lpv.md): a constant volume, a single VPL's lobe seen
+// shade's irradiance (T4, T15 of docs/lpv.md): a constant volume, a single VPL's lobe seen
 // against its normal, linearity and the sign of band 1, trilinear weights at a cell centre.
 #include <cmath>
 

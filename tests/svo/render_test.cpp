@@ -15,8 +15,8 @@
 namespace voxgi::test {
 namespace {
 
-// The technique's image through the stage runner at the scene's grid resolution (svo.frames=1),
-// with the leaf slot count of its tree.
+// The technique's image through the stage runner at the scene's grid resolution
+// (propagate.frames=1), with the leaf slot count of its tree.
 struct SvoImage {
   Image image;
   size_t leaves = 0;
@@ -24,11 +24,11 @@ struct SvoImage {
 
 SvoImage renderSvo(const Scene& scene) {
   const Technique& svo = findTechnique("svo");
-  const BufferSet b = runCpuUntil(svo, scene, techniqueDefaults(svo), "shade_svo");
+  const BufferSet b = runCpuUntil(svo, scene, techniqueDefaults(svo), "shade");
   SvoImage out{Image(scene.camera.width, scene.camera.height),
-               b.at(BufferId::svo_build_svo_leaf_sums).elementCount()};
+               b.at(BufferId::svo_build_leaf_sums).elementCount()};
   for (size_t i = 0; i < out.image.pixels.size(); ++i)
-    out.image.pixels[i] = b.at(BufferId::svo_shade_svo_color).vec3At(i);
+    out.image.pixels[i] = b.at(BufferId::svo_shade_color).vec3At(i);
   return out;
 }
 
@@ -98,11 +98,11 @@ Gathered receiverGather(int wallLeaves) {
   const Technique& svo = findTechnique("svo");
   Settings svoSettings = techniqueDefaults(svo);
   svoSettings.vct.emitters = EmitterLighting::voxels;  // the square's light, gathered by cones
-  const BufferSet b = runCpuUntil(svo, scene, svoSettings, "propagate_svo");
+  const BufferSet b = runCpuUntil(svo, scene, svoSettings, "propagate");
   const cpu::svo::Octree o = cpu::svo::octreeFromWords(svo::treeWords(b, false), 6);
   const uint32_t tile = o.findTile(6, shared::mortonEncode(leaf >> 1u));
   EXPECT_NE(tile, shared::kSvoNull);
-  const Buffer& g = b.at(BufferId::svo_propagate_svo_gathered);
+  const Buffer& g = b.at(BufferId::svo_propagate_gathered);
   const size_t slot = size_t(tile) * 8 + shared::localId(leaf);
   Settings settings;
   settings.vct.emitters = EmitterLighting::voxels;

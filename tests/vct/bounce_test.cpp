@@ -99,15 +99,15 @@ TEST(Bounce, OctreeClosedBoxApproachesRadiosity) {
   for (int frames = 0; frames < 4; ++frames) {
     const Settings settings =
         resolveSettings(svo, {}, scene.file, "default",
-                        {"svo.frames=" + std::to_string(frames), "emitters.mode=voxels"});
-    const BufferSet b = runCpuUntil(svo, scene, settings, "propagate_svo");
+                        {"propagate.frames=" + std::to_string(frames), "emitters.mode=voxels"});
+    const BufferSet b = runCpuUntil(svo, scene, settings, "propagate");
     const cpu::svo::Octree o = cpu::svo::octreeFromWords(svo::treeWords(b, false), depth);
     const glm::uvec3 leaf(kN / 2, 2, kN / 2);
     const uint32_t tile = o.findTile(depth, shared::mortonEncode(leaf >> 1u));
     ASSERT_NE(tile, shared::kSvoNull);
     // Radiance per unit of the leaf's opacity: sampling puts 4 points per leaf face on average,
     // so a leaf's opacity varies about 1 with the points that fall in it.
-    const Buffer& r = b.at(BufferId::svo_propagate_svo_radiance);
+    const Buffer& r = b.at(BufferId::svo_propagate_radiance);
     const size_t slot = tile * 8 + shared::localId(leaf);
     l[frames] = r.get<float>(slot, 0) / r.get<float>(slot, 3);
   }

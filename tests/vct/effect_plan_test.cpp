@@ -113,13 +113,12 @@ TEST(EffectPlan, SvoFollowsTheSceneAndTheFullPlanChangesNothing) {
   const EffectPlan plan = svo.plan(scene, settings);
   EXPECT_TRUE(planned(plan, "emission per pixel"));
   EXPECT_FALSE(planned(plan, "specular cone"));
-  const BufferSet lean = runCpuUntil(svo, scene, settings, "shade_svo");
-  EXPECT_FALSE(lean.contains(BufferId::svo_shade_svo_indirect_specular));
+  const BufferSet lean = runCpuUntil(svo, scene, settings, "shade");
+  EXPECT_FALSE(lean.contains(BufferId::svo_shade_indirect_specular));
   settings.planMode = PlanMode::full;
-  const BufferSet full = runCpuUntil(svo, scene, settings, "shade_svo");
-  EXPECT_TRUE(full.contains(BufferId::svo_shade_svo_indirect_specular));
-  EXPECT_EQ(lean.at(BufferId::svo_shade_svo_color).words,
-            full.at(BufferId::svo_shade_svo_color).words);
+  const BufferSet full = runCpuUntil(svo, scene, settings, "shade");
+  EXPECT_TRUE(full.contains(BufferId::svo_shade_indirect_specular));
+  EXPECT_EQ(lean.at(BufferId::svo_shade_color).words, full.at(BufferId::svo_shade_color).words);
   Scene glossy = cornellBoxCloud(2000, true);
   EXPECT_TRUE(planned(svo.plan(glossy, techniqueDefaults(svo)), "specular cone"));
 }

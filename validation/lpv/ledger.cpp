@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "common/lpv/injection.h"
-#include "common/lpv/propagation.h"
+#include "common/lpv/inject.h"
+#include "common/lpv/propagate.h"
 #include "common/lpv/sh_buffers.h"
 #include "common/parallel.h"
 #include "shaders/shared/lpv/propagate_kernel.h"

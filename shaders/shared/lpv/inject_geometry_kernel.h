@@ -6,9 +6,9 @@
 // g is centred on the upper corner of LPV cell g, and overlaps an eighth of each of the 8 voxels
 // around that corner: each lends it an eighth of its surface.
 //
-// With inject.geometry=rsm the surfaces come from the RSM texels instead [Martin 2012, §3.2.2]:
-// each texel's true area and normal in fixed point, at the corner nearest its hit (rsmBlocker in
-// rsm_kernel.h).
+// With inject_geometry.blockers=rsm the surfaces come from the RSM texels instead [Martin 2012,
+// §3.2.2]: each texel's true area and normal in fixed point, at the corner nearest its hit
+// (rsmBlocker in rsm_kernel.h).
 #ifndef VOXGI_LPV_INJECT_GEOMETRY_KERNEL_H
 #define VOXGI_LPV_INJECT_GEOMETRY_KERNEL_H
 #include "../voxelize_layout.h"

@@ -1,4 +1,4 @@
-// inject_lpv's arithmetic: one VPL's clamped-cosine lobe as fixed-point SH coefficients, and the
+// inject's arithmetic: one VPL's clamped-cosine lobe as fixed-point SH coefficients, and the
 // cell it lands in [Martin 2012, §3.2.1; Kaplanyan & Dachsbacher 2010]. The lobe of a VPL of flux
 // F about n is (F / pi) A_l Y_lm(n), which emits exactly F (Martin writes F A_l Y_lm, a factor pi
 // too much: docs/lpv.md). Scatters add these integers, so the sums do not depend on order.

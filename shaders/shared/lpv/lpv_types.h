@@ -6,7 +6,7 @@
 
 VOXGI_NAMESPACE_BEGIN
 
-// A virtual point light (common/lpv/injection.cpp): a clamped-cosine emitter of flux `flux`
+// A virtual point light (common/lpv/inject.cpp): a clamped-cosine emitter of flux `flux`
 // about `normal`, binned into the cell that holds `position`. 48 bytes.
 struct Vpl {
   vec4 position;  // xyz: voxel-local position (after inject.shift); w: 0
@@ -14,14 +14,14 @@ struct Vpl {
   vec4 flux;      // rgb: flux (world units: radiance x area x pi); w: 0
 };
 
-// inject_lpv's block: the VPLs follow it.
+// inject's block: the VPLs follow it.
 struct InjectParams {
   ivec4 shape;  // x: grid resolution N; y: SH coefficients per colour C; z: VPL count; w: 1 to
                 // shift the RSM texels' VPLs (inject.shift; the emitters' are shifted on the host)
   vec4 scale;   // rgb: fixed-point units per unit of intensity (powers of two); w: 0
 };
 
-// One face entry of a propagation step (common/lpv/propagation.cpp), for a destination cell
+// One face entry of a propagation step (common/lpv/propagate.cpp), for a destination cell
 // whose source is the cell at -offset. 112 bytes.
 struct PropagationEntry {
   ivec4 offset;          // xyz: destination - source; w: 0
@@ -57,7 +57,7 @@ struct RsmParams {
   vec4 scale;   // x: voxel size (world units); y: rsm.bias in texels; zw: 0
 };
 
-// shade_lpv's uniforms.
+// shade's uniforms.
 struct ShadeParams {
   ivec4 shape;  // x: N; y: C; z: analytic light count (direct light from the RSM); w: 0
   vec4 scale;   // x: 1 / (cell size^2) (world units); y: shade.offset in cells; zw: 0

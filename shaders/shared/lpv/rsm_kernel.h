@@ -1,5 +1,5 @@
 // The reflective shadow map's arithmetic [Dachsbacher & Stamminger 2005; Martin 2012, §3.1],
-// shared by the rsm stage (CPU rays, GPU rasterizer), inject_lpv (a VPL per texel) and shade_lpv
+// shared by the rsm stage (CPU rays, GPU rasterizer), inject (a VPL per texel) and shade
 // (the depth as a shadow map) and inject_geometry (its surfaces as blockers): the ray of a
 // texel, the flux its surface reflects, where a point falls in a view, the texel's blocker.
 //

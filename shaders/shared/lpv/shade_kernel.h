@@ -1,4 +1,4 @@
-// shade_lpv's arithmetic: irradiance at a surface point from the accumulated volume
+// shade's arithmetic: irradiance at a surface point from the accumulated volume
 // [Martin 2012, §3.2.4; Kaplanyan & Dachsbacher 2010]: E = (1 / s^2) sum_i c_i(x) A_l Y_i(-n),
 // with c trilinear between cell centres. The lobe is about -n (light flowing into the surface;
 // Martin's Eq. 3.4 writes +n) and 1 / s^2 turns a cell's radiant intensity into radiance (Eq. 3.4

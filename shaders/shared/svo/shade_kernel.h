@@ -1,8 +1,8 @@
 // Indirect diffuse light at a pixel from the octree's leaves [Salm 2015, §4.6]: the light each
 // leaf gathered in its last frame (E / pi, premultiplied by the leaf's clamped opacity) sampled
-// through the leaf bricks, trilinearly or with a cubic B-spline (svo.shade_filter), and divided by
+// through the leaf bricks, trilinearly or with a cubic B-spline (shade.filter), and divided by
 // the opacity sampled the same way, so empty leaves around the surface do not darken it. Shared by
-// both backends' shade_svo.
+// both backends' shade.
 #ifndef VOXGI_SVO_SHADE_KERNEL_H
 #define VOXGI_SVO_SHADE_KERNEL_H
 #include "svo_sample.h"

@@ -1,4 +1,4 @@
-// CPU mip_svo stage: the last frame's leaf radiance up the tree (cpu/svo/leaf_light.h, mipTree)
+// CPU mip stage: the last frame's leaf radiance up the tree (cpu/svo/leaf_light.h, mipTree)
 // and the gathered light's leaf bricks (cpu/svo/octree.h, completeBricks).
 #include "common/svo/stage_inputs.h"
 #include "common/svo/tree_depth.h"
@@ -7,16 +7,16 @@
 
 namespace voxgi::cpu {
 
-void svo::mip_svo(const StageContext& ctx, BufferSet& buffers) {
+void svo::mip(const StageContext& ctx, BufferSet& buffers) {
   using namespace voxgi::svo;
   const int depth = treeDepth(ctx.scene);
   const Octree o = octreeFromWords(treeWords(buffers, false), depth);
   const Leaves leaves = treeLeaves(buffers);
   const FirstStep first = firstStep(ctx.settings);
-  const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_svo_radiance));
+  const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_radiance));
   buffers.put(nodeFacesBuffer(mipTree(o, leaves, radiance, first)));
-  const Buffer& gathered = buffers.at(BufferId::svo_propagate_svo_gathered);
-  Buffer bricks(BufferId::svo_mip_svo_gathered_bricks,
+  const Buffer& gathered = buffers.at(BufferId::svo_propagate_gathered);
+  Buffer bricks(BufferId::svo_mip_gathered_bricks,
                 glm::ivec3(int(o.leafTileCount()) * shared::kBrickTexels, 1, 1));
   bricks.words = completeBricks(o, depth, gathered.words, 4);
   buffers.put(std::move(bricks));

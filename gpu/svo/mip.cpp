@@ -1,5 +1,5 @@
-// GPU mip_svo stage: the last frame's radiance up the tree (gpu/svo/leaf_light.h, mipTree) and the
-// gathered light's leaf bricks (shaders/svo/brick_svo.comp).
+// GPU mip stage: the last frame's radiance up the tree (gpu/svo/leaf_light.h, mipTree) and the
+// gathered light's leaf bricks (shaders/svo/mip_brick.comp).
 #include "common/svo/stage_inputs.h"
 #include "common/svo/tree_depth.h"
 #include "gpu/program.h"
@@ -10,31 +10,31 @@
 
 namespace voxgi::gpu {
 
-void svo::mip_svo(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+void svo::mip(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   using namespace voxgi::svo;
-  const Gl& gl = beginStage(context, ctx, StageId::svo_mip_svo);
+  const Gl& gl = beginStage(context, ctx, StageId::svo_mip);
   const int depth = treeDepth(ctx.scene);
   const OctreeWords words = treeWords(buffers, false);
   const Tree tree{words, depth};
   const Leaves leaves = treeLeaves(buffers);
   const FirstStep first = firstStep(ctx.settings);
-  const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_svo_radiance));
+  const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_radiance));
   buffers.put(nodeFacesBuffer(mipTree(context, tree, leaves, radiance, first)));
 
-  const Buffer& gathered = buffers.at(BufferId::svo_propagate_svo_gathered);
+  const Buffer& gathered = buffers.at(BufferId::svo_propagate_gathered);
   const size_t texels = words.leafTiles.size() / shared::kTileWords * shared::kBrickTexels;
   GlBuffer nodes(gl, createBuffer(gl, words.nodes.size() * 4, words.nodes.data()));
   GlBuffer leafTiles(gl, createBuffer(gl, words.leafTiles.size() * 4, words.leafTiles.data()));
   GlBuffer interior(gl, uploadWords(gl, gathered));
   GlBuffer bricks(gl, createBuffer(gl, texels * 16, nullptr));
-  Program program(gl, {&shaders::svo_brick_svo_comp});
+  Program program(gl, {&shaders::svo_mip_brick_comp});
   program.use();
   program.set("uCount", unsigned(texels));
   const GLuint blocks[] = {nodes.get(), leafTiles.get(), interior.get(), bricks.get()};
   for (GLuint b = 0; b < 4; ++b) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, blocks[b]);
   dispatchLinear(gl, texels);
-  gl.check("mip_svo: bricks");
-  Buffer out(BufferId::svo_mip_svo_gathered_bricks, glm::ivec3(int(texels), 1, 1));
+  gl.check("mip: bricks");
+  Buffer out(BufferId::svo_mip_gathered_bricks, glm::ivec3(int(texels), 1, 1));
   readWords(gl, bricks.get(), out);
   buffers.put(std::move(out));
 }

@@ -1,48 +1,47 @@
-// CPU shade_svo stage: per pixel, trace_cones' direct light with a shadow cone per light and the
+// CPU shade stage: per pixel, trace_cones' direct light with a shadow cone per light and the
 // specular cone, read through the tree (no diffuse cones: the leaves hold the diffuse light), plus
 // the leaves' gathered light through their bricks (shaders/shared/svo/shade_kernel.h), composed as
-// the dense technique composes (compose_kernel.h). The twin of shaders/svo/shade_svo.comp.
+// the dense technique composes (compose_kernel.h). The twin of shaders/svo/shade.comp.
+#include "common/gbuffer.h"
 #include "common/parallel.h"
 #include "common/svo/stage_inputs.h"
 #include "common/svo/tree_depth.h"
 #include "cpu/stages.h"
 #include "cpu/svo/leaf_light.h"
-#include "shaders/shared/compose_kernel.h"
+#include "shaders/shared/vct/compose_kernel.h"
 #include "shaders/shared/svo/shade_kernel.h"
 #include "shaders/shared/vct/trace_cones_kernel.h"
 
 namespace voxgi::cpu {
 
-void svo::shade_svo(const StageContext& ctx, BufferSet& buffers) {
+void svo::shade(const StageContext& ctx, BufferSet& buffers) {
   using namespace voxgi::svo;
-  checkStageMemory(ctx, StageId::svo_shade_svo);
+  checkStageMemory(ctx, StageId::svo_shade);
   const int depth = treeDepth(ctx.scene);
   const Octree o = octreeFromWords(treeWords(buffers, false), depth);
   const Leaves leaves = treeLeaves(buffers);
-  const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_svo_radiance));
-  const NodeLevels mips = nodeLevels(buffers.at(BufferId::svo_mip_svo_node_faces), o.tiles, depth);
-  const Words& bricks = buffers.at(BufferId::svo_mip_svo_gathered_bricks).words;
+  const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_radiance));
+  const NodeLevels mips = nodeLevels(buffers.at(BufferId::svo_mip_node_faces), o.tiles, depth);
+  const Words& bricks = buffers.at(BufferId::svo_mip_gathered_bricks).words;
   const ConeTraceSetup trace = treeConeTrace(ctx, depth);
   const bool tricubic = ctx.settings.svo.shadeFilter == SvoShadeFilter::tricubic;
   const glm::vec3 background = ctx.scene.background;
 
-  const Buffer& position = buffers.at(BufferId::common_gbuffer_pixel_position);
-  const Buffer& normal = buffers.at(BufferId::common_gbuffer_pixel_normal);
-  const Buffer& albedo = buffers.at(BufferId::common_gbuffer_pixel_albedo);
-  const Buffer& specular = buffers.at(BufferId::common_gbuffer_pixel_specular);
-  const Buffer* emission = buffers.find(BufferId::common_gbuffer_pixel_emission);
-  const Buffer& object = buffers.at(BufferId::common_gbuffer_object_id);
+  const GbufferView gbuffer(buffers);
+  const Buffer &position = gbuffer.position, &normal = gbuffer.normal, &albedo = gbuffer.albedo,
+               &specular = gbuffer.specular, *emission = gbuffer.emission,
+               &object = gbuffer.objectId;
   const glm::ivec3 extent = position.extent;
   using Field = glm::vec3 shared::PixelLight::*;
   const std::pair<BufferId, Field> terms[] = {
-      {BufferId::svo_shade_svo_direct_diffuse, &shared::PixelLight::directDiffuse},
-      {BufferId::svo_shade_svo_direct_specular, &shared::PixelLight::directSpecular},
-      {BufferId::svo_shade_svo_indirect_diffuse, &shared::PixelLight::indirectDiffuse},
-      {BufferId::svo_shade_svo_indirect_specular, &shared::PixelLight::indirectSpecular}};
+      {BufferId::svo_shade_direct_diffuse, &shared::PixelLight::directDiffuse},
+      {BufferId::svo_shade_direct_specular, &shared::PixelLight::directSpecular},
+      {BufferId::svo_shade_indirect_diffuse, &shared::PixelLight::indirectDiffuse},
+      {BufferId::svo_shade_indirect_specular, &shared::PixelLight::indirectSpecular}};
   std::vector<std::pair<Buffer, Field>> out;  // the planned terms
   for (const auto& [id, field] : terms)
     if (bufferNeeded(bufferSpec(id), ctx.plan)) out.emplace_back(Buffer(id, extent), field);
-  Buffer color(BufferId::svo_shade_svo_color, extent);
+  Buffer color(BufferId::svo_shade_color, extent);
 
   parallelFor(size_t(0), position.elementCount(), [&](size_t i) {
     const uint32_t id = object.get<uint32_t>(i, 0);

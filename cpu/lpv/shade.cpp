@@ -1,15 +1,16 @@
-// CPU shade_lpv stage: per pixel, the accumulated volume's irradiance and the analytic lights'
+// CPU shade stage: per pixel, the accumulated volume's irradiance and the analytic lights'
 // direct light with the RSM depth as shadow map (shaders/shared/lpv/shade_kernel.h), then the
 // final colour with the shared compose kernel (no indirect specular: the volume carries diffuse
 // light only).
 #include <tbb/blocked_range.h>
 
-#include "common/lpv/propagation.h"
+#include "common/gbuffer.h"
+#include "common/lpv/propagate.h"
 #include "common/lpv/rsm.h"
 #include "common/lpv/sh_buffers.h"
 #include "common/parallel.h"
 #include "cpu/stages.h"
-#include "shaders/shared/compose_kernel.h"
+#include "shaders/shared/vct/compose_kernel.h"
 #include "shaders/shared/lpv/shade_kernel.h"
 
 namespace voxgi::cpu {
@@ -38,26 +39,22 @@ struct ShadeVolumes {
 
 }  // namespace
 
-void lpv::shade_lpv(const StageContext& ctx, BufferSet& buffers) {
-  checkStageMemory(ctx, StageId::lpv_shade_lpv);
+void lpv::shade(const StageContext& ctx, BufferSet& buffers) {
+  checkStageMemory(ctx, StageId::lpv_shade);
   using enum BufferId;
   const voxgi::lpv::ShBuffers sh = voxgi::lpv::shBuffers(ctx.settings.lpv);
   const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings);
   const ShadeVolumes volumes{buffers.at(sh.accumulated), ctx.scene.grid, rsm.lights, rsm,
                              buffers.find(lpv_rsm_depth)};
   const shared::ShadeParams params = voxgi::lpv::shadeParams(ctx);
-  const Buffer& objectId = buffers.at(common_gbuffer_object_id);
-  const Buffer &position = buffers.at(common_gbuffer_pixel_position),
-               &normal = buffers.at(common_gbuffer_pixel_normal),
-               &albedo = buffers.at(common_gbuffer_pixel_albedo),
-               &specular = buffers.at(common_gbuffer_pixel_specular),
-               *emission = buffers.find(common_gbuffer_pixel_emission);
+  const GbufferView gbuffer(buffers);
+  const Buffer &objectId = gbuffer.objectId, &position = gbuffer.position, &normal = gbuffer.normal,
+               &albedo = gbuffer.albedo, &specular = gbuffer.specular, *emission = gbuffer.emission;
   const bool direct = ctx.plan.on(Effect::direct_light);
-  Buffer directDiffuse = direct ? Buffer(lpv_shade_lpv_direct_diffuse, objectId.extent) : Buffer();
-  Buffer directSpecular =
-      direct ? Buffer(lpv_shade_lpv_direct_specular, objectId.extent) : Buffer();
-  Buffer indirect(lpv_shade_lpv_indirect_diffuse, objectId.extent);
-  Buffer color(lpv_shade_lpv_color, objectId.extent);
+  Buffer directDiffuse = direct ? Buffer(lpv_shade_direct_diffuse, objectId.extent) : Buffer();
+  Buffer directSpecular = direct ? Buffer(lpv_shade_direct_specular, objectId.extent) : Buffer();
+  Buffer indirect(lpv_shade_indirect_diffuse, objectId.extent);
+  Buffer color(lpv_shade_color, objectId.extent);
   const int width = objectId.extent.x;
   parallelFor(tbb::blocked_range<int>(0, objectId.extent.y), [&](const auto& rows) {
     for (int y = rows.begin(); y != rows.end(); ++y)

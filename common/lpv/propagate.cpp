@@ -1,4 +1,4 @@
-#include "common/lpv/propagation.h"
+#include "common/lpv/propagate.h"
 
 #include <algorithm>
 #include <cmath>

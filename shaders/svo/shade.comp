@@ -1,8 +1,8 @@
 #version 450 core
-// shade_svo: per pixel, the shared cone tracer's direct light (shadow cones) and specular cone
+// shade: per pixel, the shared cone tracer's direct light (shadow cones) and specular cone
 // through the octree (shaders/shared/vct/trace_cones_kernel.h, no diffuse cones), the leaves'
 // gathered light through their bricks (shaders/shared/svo/shade_kernel.h), composed as the dense
-// technique composes (shaders/shared/compose_kernel.h). The twin of cpu/svo/shade_svo.cpp.
+// technique composes (shaders/shared/vct/compose_kernel.h). The twin of cpu/svo/shade.cpp.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/lighting.h"
 #include "shared/vct/cone_types.h"
@@ -21,7 +21,7 @@ ConeData coneAt(int i) { return ConeData(vec4(0.0f), vec4(0.0f)); }  // no diffu
 
 #include "shared/vct/trace_cones_kernel.h"
 #include "shared/svo/shade_kernel.h"
-#include "shared/compose_kernel.h"
+#include "shared/vct/compose_kernel.h"
 
 layout(std430, binding = 4) readonly buffer Lights {
   ConeTraceParams params;
@@ -35,7 +35,7 @@ layout(std430, binding = 7) writeonly buffer Terms { vec4 terms[]; };
 layout(location = 1) uniform int uWidth;
 layout(location = 2) uniform int uHeight;
 uniform vec3 uBackground;
-uniform bool uTricubic;  // svo.shade_filter
+uniform bool uTricubic;  // shade.filter
 
 LightData lightAt(int i) { return lights[i]; }
 

@@ -1,10 +1,10 @@
-// GPU inject_lpv stage: shaders/lpv/inject_lpv.comp, one invocation per VPL (the emitters', then
+// GPU inject stage: shaders/lpv/inject.comp, one invocation per VPL (the emitters', then
 // the RSM texels'), adding fixed-point lobes with atomics into a storage buffer that is read back
 // as the sums.
 #include <algorithm>
 #include <vector>
 
-#include "common/lpv/injection.h"
+#include "common/lpv/inject.h"
 #include "common/lpv/rsm.h"
 #include "common/lpv/sh_buffers.h"
 #include "gpu/program.h"
@@ -12,8 +12,8 @@
 #include "gpu/volumes.h"
 
 namespace voxgi::gpu {
-void lpv::inject_lpv(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
-  const Gl& gl = beginStage(context, ctx, StageId::lpv_inject_lpv);
+void lpv::inject(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+  const Gl& gl = beginStage(context, ctx, StageId::lpv_inject);
   const voxgi::lpv::ShBuffers sh = voxgi::lpv::shBuffers(ctx.settings.lpv);
   const voxgi::lpv::Injection injection = voxgi::lpv::prepareInjection(ctx);
   const int n = ctx.scene.grid.resolution;
@@ -24,7 +24,7 @@ void lpv::inject_lpv(GlContext& context, const StageContext& ctx, BufferSet& buf
                       "the emitter VPLs");
   GlBuffer vplBlock(gl, createBlock(gl, injection.params, injection.vpls));
   GlBuffer sumBlock(gl, uploadWords(gl, sums));  // zeros
-  Program program(gl, {&shaders::lpv_inject_lpv_comp});
+  Program program(gl, {&shaders::lpv_inject_comp});
   program.use();
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, vplBlock.get());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, sumBlock.get());
@@ -32,7 +32,7 @@ void lpv::inject_lpv(GlContext& context, const StageContext& ctx, BufferSet& buf
   for (GLuint b = 2; b <= 5; ++b) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, vplBlock.get());
   program.set("uSource", 0);
   dispatchLinear(gl, injection.vpls.size());
-  gl.check("inject_lpv: emitters");
+  gl.check("inject: emitters");
   if (ctx.plan.runs(StageId::lpv_rsm)) {
     const voxgi::lpv::RsmSetup rsm = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings);
     const Buffer& flux = buffers.at(BufferId::lpv_rsm_flux);
@@ -47,10 +47,10 @@ void lpv::inject_lpv(GlContext& context, const StageContext& ctx, BufferSet& buf
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, depthBlock.get());
     program.set("uSource", 1);
     dispatchLinear(gl, flux.elementCount());
-    gl.check("inject_lpv: RSM texels");
+    gl.check("inject: RSM texels");
   }
   readWords(gl, sumBlock.get(), sums);
-  gl.check("inject_lpv: reading back");
+  gl.check("inject: reading back");
   buffers.put(std::move(sums));
 }
 

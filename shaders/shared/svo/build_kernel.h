@@ -1,5 +1,5 @@
 // Region-of-influence splatting of scene samples into the octree's leaves [Salm 2015, §4.3.4],
-// shared by build_svo on both backends. A sample's RoI is an axis-aligned cube of edge r <= 1 leaf
+// shared by build on both backends. A sample's RoI is an axis-aligned cube of edge r <= 1 leaf
 // cell about its position; it adds to each leaf its opacity density times the volume the cube
 // shares with the leaf's cell (at most 2 cells per axis, 8 leaves; for r = 1 the trilinear tent
 // weights), and the premultiplied albedo, normal and emission in the same proportion. Sums are in

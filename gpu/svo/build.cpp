@@ -1,4 +1,4 @@
-// GPU build_svo stage: the scene's samples (common/svo/samples.h, prepared on the host as for the
+// GPU build stage: the scene's samples (common/svo/samples.h, prepared on the host as for the
 // CPU) built with atomics (gpu/svo/octree.h), read back in the canonical form.
 #include "common/svo/samples.h"
 #include "common/svo/stage_inputs.h"
@@ -9,8 +9,8 @@
 
 namespace voxgi::gpu {
 
-void svo::build_svo(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
-  beginStage(context, ctx, StageId::svo_build_svo);
+void svo::build(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+  beginStage(context, ctx, StageId::svo_build);
   const int depth = voxgi::svo::treeDepth(ctx.scene);
   const SvoSettings& s = ctx.settings.svo;
   const voxgi::svo::SampleSet set = voxgi::svo::prepareSamples(

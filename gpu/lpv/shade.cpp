@@ -1,8 +1,8 @@
-// GPU shade_lpv stage: shaders/lpv/shade_lpv.comp per pixel on the accumulated volume, the
+// GPU shade stage: shaders/lpv/shade.comp per pixel on the accumulated volume, the
 // gbuffer's surfaces (packed per pixel on the host) and, with lights, the RSM depth.
 #include <vector>
 
-#include "common/lpv/propagation.h"
+#include "common/lpv/propagate.h"
 #include "common/lpv/rsm.h"
 #include "common/lpv/sh_buffers.h"
 #include "gpu/program.h"
@@ -11,8 +11,8 @@
 
 namespace voxgi::gpu {
 
-void lpv::shade_lpv(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
-  const Gl& gl = beginStage(context, ctx, StageId::lpv_shade_lpv);
+void lpv::shade(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+  const Gl& gl = beginStage(context, ctx, StageId::lpv_shade);
   using enum BufferId;
   const voxgi::lpv::ShBuffers sh = voxgi::lpv::shBuffers(ctx.settings.lpv);
   const shared::ShadeParams params = voxgi::lpv::shadeParams(ctx);
@@ -51,7 +51,7 @@ void lpv::shade_lpv(GlContext& context, const StageContext& ctx, BufferSet& buff
   GlBuffer depthBlock(gl, depth != nullptr ? uploadWords(gl, *depth) : createBuffer(gl, 4, &none));
   GlBuffer directDiffuse(gl, createBuffer(gl, pixels * 12, nullptr));
   GlBuffer directSpecular(gl, createBuffer(gl, pixels * 12, nullptr));
-  Program program(gl, {&shaders::lpv_shade_lpv_comp});
+  Program program(gl, {&shaders::lpv_shade_comp});
   program.set("uPixels", int(pixels));
   program.set("uBackground", ctx.scene.background);
   program.use();
@@ -62,20 +62,20 @@ void lpv::shade_lpv(GlContext& context, const StageContext& ctx, BufferSet& buff
   for (GLuint b = 0; b < 11; ++b) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, blocks[b]);
   gl.DispatchCompute(GLuint((pixels + 63) / 64), 1, 1);
   gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gl.check("shade_lpv: dispatch");
-  Buffer indirectOut(lpv_shade_lpv_indirect_diffuse, objectId.extent);
-  Buffer colorOut(lpv_shade_lpv_color, objectId.extent);
+  gl.check("shade: dispatch");
+  Buffer indirectOut(lpv_shade_indirect_diffuse, objectId.extent);
+  Buffer colorOut(lpv_shade_color, objectId.extent);
   readWords(gl, indirect.get(), indirectOut);
   readWords(gl, color.get(), colorOut);
   if (ctx.plan.on(Effect::direct_light)) {
-    Buffer diffuseOut(lpv_shade_lpv_direct_diffuse, objectId.extent);
-    Buffer specularOut(lpv_shade_lpv_direct_specular, objectId.extent);
+    Buffer diffuseOut(lpv_shade_direct_diffuse, objectId.extent);
+    Buffer specularOut(lpv_shade_direct_specular, objectId.extent);
     readWords(gl, directDiffuse.get(), diffuseOut);
     readWords(gl, directSpecular.get(), specularOut);
     buffers.put(std::move(diffuseOut));
     buffers.put(std::move(specularOut));
   }
-  gl.check("shade_lpv: reading back");
+  gl.check("shade: reading back");
   buffers.put(std::move(indirectOut));
   buffers.put(std::move(colorOut));
 }

@@ -1,11 +1,11 @@
 #version 450 core
-// build_svo on the GPU (docs/svo.md): the octree's structure allocated with atomics, level by
+// build on the GPU (docs/svo.md): the octree's structure allocated with atomics, level by
 // level, then the leaf sums. Each dispatch is one pass (uPass); the host reads a counter between
 // passes to size the next dispatch and grow the pools to the tiles actually allocated. Tiles come
 // out in whatever order the invocations run; the host puts them in the canonical order
 // (common/svo/canonical.h), which the diff compares.
 layout(local_size_x = 64) in;
-#include "shared/svo/splat_kernel.h"
+#include "shared/svo/build_kernel.h"
 
 const int kPassMark = 0;          // per sample: mark the leaves its RoI touches
 const int kPassCountLeafTiles = 1;  // per mark word: count marked leaf tiles

@@ -1,4 +1,4 @@
-// CPU build_svo stage: the scene's samples (common/svo/samples.h) into the canonical octree and
+// CPU build stage: the scene's samples (common/svo/samples.h) into the canonical octree and
 // its fixed-point leaf sums (cpu/svo/octree.h).
 #include "common/svo/samples.h"
 #include "common/svo/stage_inputs.h"
@@ -8,7 +8,7 @@
 
 namespace voxgi::cpu {
 
-void svo::build_svo(const StageContext& ctx, BufferSet& buffers) {
+void svo::build(const StageContext& ctx, BufferSet& buffers) {
   const int depth = voxgi::svo::treeDepth(ctx.scene);
   const SvoSettings& s = ctx.settings.svo;
   const voxgi::svo::SampleSet set = voxgi::svo::prepareSamples(

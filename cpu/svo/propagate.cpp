@@ -1,4 +1,4 @@
-// CPU propagate_svo stage: the leaves' injected light, then svo.frames progressive bounces
+// CPU propagate stage: the leaves' injected light, then propagate.frames progressive bounces
 // (cpu/svo/leaf_light.h).
 #include "common/lights.h"
 #include "common/svo/stage_inputs.h"
@@ -8,7 +8,7 @@
 
 namespace voxgi::cpu {
 
-void svo::propagate_svo(const StageContext& ctx, BufferSet& buffers) {
+void svo::propagate(const StageContext& ctx, BufferSet& buffers) {
   using namespace voxgi::svo;
   const int depth = treeDepth(ctx.scene);
   const SvoSettings& s = ctx.settings.svo;
@@ -25,9 +25,9 @@ void svo::propagate_svo(const StageContext& ctx, BufferSet& buffers) {
   const LeafRadiance radiance =
       propagateFrames(o, leaves, direct, bounce.cones, bounce.params, s.frames,
                       s.clearEachFrame == SvoToggle::on, firstStep(ctx.settings), &last);
-  buffers.put(vec4Buffer(BufferId::svo_propagate_svo_direct, direct));
-  buffers.put(vec4Buffer(BufferId::svo_propagate_svo_radiance, radiance));
-  buffers.put(vec4Buffer(BufferId::svo_propagate_svo_gathered, last.gathered));
+  buffers.put(vec4Buffer(BufferId::svo_propagate_direct, direct));
+  buffers.put(vec4Buffer(BufferId::svo_propagate_radiance, radiance));
+  buffers.put(vec4Buffer(BufferId::svo_propagate_gathered, last.gathered));
 }
 
 }  // namespace voxgi::cpu

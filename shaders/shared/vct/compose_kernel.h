@@ -6,7 +6,7 @@
 // occluders, so it is an artistic contact shadow, not part of the estimate.
 #ifndef VOXGI_COMPOSE_KERNEL_H
 #define VOXGI_COMPOSE_KERNEL_H
-#include "glsl_cpp.h"
+#include "../glsl_cpp.h"
 
 VOXGI_NAMESPACE_BEGIN
 

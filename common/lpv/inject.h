@@ -1,6 +1,6 @@
-// inject_lpv's input, prepared once on the host for both backends: the virtual point lights of
+// inject's input, prepared once on the host for both backends: the virtual point lights of
 // the scene's emissive triangles, and the fixed-point scale of all VPLs' sums, the RSM texels'
-// included (docs/stages/lpv/inject_lpv.md).
+// included (docs/stages/lpv/inject.md).
 #pragma once
 
 #include <vector>
@@ -26,7 +26,7 @@ struct Injection {
 Injection prepareInjection(const StageContext& ctx);
 // prepareInjection(ctx).params.scale without the VPLs.
 glm::vec4 injectionScale(const StageContext& ctx);
-// LPV_0, the volume propagate starts from: inject_lpv's fixed-point `sums` as floats (the same
+// LPV_0, the volume propagate starts from: inject's fixed-point `sums` as floats (the same
 // words for both backends, computed once on the host).
 std::vector<float> injectedVolume(const StageContext& ctx, const Buffer& sums);
 

@@ -32,7 +32,7 @@ inline bool occludedStep(const LpvSettings& s, int step) {
   return s.occlusion == LpvOcclusion::on && step >= 2;
 }
 
-// shade_lpv's parameters: 1 / s^2 from the grid's cell size (world units), the RSM's lights
+// shade's parameters: 1 / s^2 from the grid's cell size (world units), the RSM's lights
 // (analytic lights and area lights, common/lpv/rsm.h) when the rsm stage runs, the camera.
 shared::ShadeParams shadeParams(const StageContext& ctx);
 

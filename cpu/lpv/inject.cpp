@@ -1,11 +1,11 @@
-// CPU inject_lpv stage: every VPL's lobe (shaders/shared/lpv/inject_kernel.h), the emitters' and
+// CPU inject stage: every VPL's lobe (shaders/shared/lpv/inject_kernel.h), the emitters' and
 // one per RSM texel that saw a surface (shaders/shared/lpv/rsm_kernel.h), added to its cell with
 // integer atomics, so the sums are the same for any thread count and order.
 #include <atomic>
 
 #include <tbb/blocked_range.h>
 
-#include "common/lpv/injection.h"
+#include "common/lpv/inject.h"
 #include "common/lpv/rsm.h"
 #include "common/lpv/sh_buffers.h"
 #include "common/parallel.h"
@@ -15,9 +15,9 @@
 
 namespace voxgi::cpu {
 
-void lpv::inject_lpv(const StageContext& ctx, BufferSet& buffers) {
+void lpv::inject(const StageContext& ctx, BufferSet& buffers) {
   const voxgi::lpv::ShBuffers sh = voxgi::lpv::shBuffers(ctx.settings.lpv);
-  checkStageMemory(ctx, StageId::lpv_inject_lpv);
+  checkStageMemory(ctx, StageId::lpv_inject);
   const voxgi::lpv::Injection injection = voxgi::lpv::prepareInjection(ctx);
   const int n = ctx.scene.grid.resolution, coefficients = injection.params.shape.y;
   Buffer sums(sh.intensitySum, glm::ivec3(n));

@@ -1,5 +1,5 @@
 #version 450 core
-// inject_lpv: one invocation per VPL adds its lobe (shaders/shared/lpv/inject_kernel.h) to its
+// inject: one invocation per VPL adds its lobe (shaders/shared/lpv/inject_kernel.h) to its
 // cell with integer atomics, so the sums do not depend on the order invocations run in. uSource
 // 0: the emitters' VPLs; 1: a VPL per RSM texel that saw a surface (shaders/shared/lpv/rsm_kernel.h).
 layout(local_size_x = 64) in;

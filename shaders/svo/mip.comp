@@ -1,9 +1,9 @@
 #version 450 core
 // One node level of the octree's six-face mipmap (shaders/shared/vct/mip_kernel.h): each node's
 // faces from its child tile, the leaves' radiance (optionally weighted per face by their normals,
-// shaders/shared/svo/mip_weights.h) or the level below's faces. One invocation per node.
+// shaders/shared/svo/mip_kernel.h) or the level below's faces. One invocation per node.
 layout(local_size_x = 64) in;
-#include "shared/svo/mip_weights.h"
+#include "shared/svo/mip_kernel.h"
 #include "svo_volumes.glsl"
 
 uniform int uLevel;

@@ -1,7 +1,8 @@
-// GPU shade_svo stage: shaders/svo/shade_svo.comp lights the gbuffer's pixels from the tree; the
+// GPU shade stage: shaders/svo/shade.comp lights the gbuffer's pixels from the tree; the
 // light terms and the colour are read back.
 #include <bit>
 
+#include "common/gbuffer.h"
 #include "common/svo/stage_inputs.h"
 #include "common/svo/tree_depth.h"
 #include "gpu/program.h"
@@ -10,20 +11,18 @@
 
 namespace voxgi::gpu {
 
-void svo::shade_svo(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+void svo::shade(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   using namespace voxgi::svo;
-  const Gl& gl = beginStage(context, ctx, StageId::svo_shade_svo);
+  const Gl& gl = beginStage(context, ctx, StageId::svo_shade);
   const int depth = treeDepth(ctx.scene);
   const ConeTraceSetup trace = treeConeTrace(ctx, depth);
-  const Buffer& position = buffers.at(BufferId::common_gbuffer_pixel_position);
-  const Buffer& normal = buffers.at(BufferId::common_gbuffer_pixel_normal);
-  const Buffer& albedo = buffers.at(BufferId::common_gbuffer_pixel_albedo);
-  const Buffer& specular = buffers.at(BufferId::common_gbuffer_pixel_specular);
-  const Buffer* emission = buffers.find(BufferId::common_gbuffer_pixel_emission);
-  const Buffer& object = buffers.at(BufferId::common_gbuffer_object_id);
+  const GbufferView gbuffer(buffers);
+  const Buffer &position = gbuffer.position, &normal = gbuffer.normal, &albedo = gbuffer.albedo,
+               &specular = gbuffer.specular, *emission = gbuffer.emission,
+               &object = gbuffer.objectId;
   const glm::ivec3 extent = position.extent;
   const size_t pixels = position.elementCount();
-  // shade_svo.comp's five vec4 a pixel.
+  // shade.comp's five vec4 a pixel.
   std::vector<glm::vec4> packed(5 * pixels);
   for (size_t e = 0; e < pixels; ++e) {
     packed[5 * e] = glm::vec4(position.vec3At(e), std::bit_cast<float>(object.get<uint32_t>(e, 0)));
@@ -32,18 +31,18 @@ void svo::shade_svo(GlContext& context, const StageContext& ctx, BufferSet& buff
     packed[5 * e + 3] = glm::vec4(specular.vec3At(e), 0.0f);
     packed[5 * e + 4] = glm::vec4(emission ? emission->vec3At(e) : glm::vec3(0.0f), 0.0f);
   }
-  const Buffer& nodeWords = buffers.at(BufferId::svo_build_svo_nodes);
+  const Buffer& nodeWords = buffers.at(BufferId::svo_build_nodes);
   GlBuffer nodes(gl, uploadWords(gl, nodeWords));
-  GlBuffer source(gl, uploadWords(gl, buffers.at(BufferId::svo_propagate_svo_radiance)));
-  GlBuffer faces(gl, uploadWords(gl, buffers.at(BufferId::svo_mip_svo_node_faces)));
-  GlBuffer bricks(gl, uploadWords(gl, buffers.at(BufferId::svo_mip_svo_gathered_bricks)));
+  GlBuffer source(gl, uploadWords(gl, buffers.at(BufferId::svo_propagate_radiance)));
+  GlBuffer faces(gl, uploadWords(gl, buffers.at(BufferId::svo_mip_node_faces)));
+  GlBuffer bricks(gl, uploadWords(gl, buffers.at(BufferId::svo_mip_gathered_bricks)));
   GlBuffer lights(gl, createBlock(gl, trace.params, trace.lights));
   GlBuffer objects(
       gl, createBuffer(gl, trace.objects.size() * sizeof(trace.objects[0]), trace.objects.data()));
   GlBuffer pixelBlock(gl, createBuffer(gl, packed.size() * sizeof(glm::vec4), packed.data()));
   GlBuffer terms(gl, createBuffer(gl, packed.size() * sizeof(glm::vec4), nullptr));
 
-  Program program(gl, {&shaders::svo_shade_svo_comp});
+  Program program(gl, {&shaders::svo_shade_comp});
   program.set("uDepth", depth);
   program.set("uWidth", extent.x);
   program.set("uHeight", extent.y);
@@ -55,15 +54,14 @@ void svo::shade_svo(GlContext& context, const StageContext& ctx, BufferSet& buff
   for (GLuint i = 0; i < 8; ++i) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, blocks[i]);
   gl.DispatchCompute(GLuint((extent.x + 7) / 8), GLuint((extent.y + 7) / 8), 1);
   gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gl.check("shade_svo: dispatch");
+  gl.check("shade: dispatch");
   std::vector<glm::vec4> values(packed.size());
   gl.GetNamedBufferSubData(terms.get(), 0, GLsizeiptr(values.size() * sizeof(glm::vec4)),
                            values.data());
-  gl.check("shade_svo: reading back");
-  const BufferId ids[] = {BufferId::svo_shade_svo_direct_diffuse,
-                          BufferId::svo_shade_svo_direct_specular,
-                          BufferId::svo_shade_svo_indirect_diffuse,
-                          BufferId::svo_shade_svo_indirect_specular, BufferId::svo_shade_svo_color};
+  gl.check("shade: reading back");
+  const BufferId ids[] = {BufferId::svo_shade_direct_diffuse, BufferId::svo_shade_direct_specular,
+                          BufferId::svo_shade_indirect_diffuse,
+                          BufferId::svo_shade_indirect_specular, BufferId::svo_shade_color};
   for (size_t k = 0; k < std::size(ids); ++k) {
     if (!bufferNeeded(bufferSpec(ids[k]), ctx.plan)) continue;
     Buffer out(ids[k], extent);

@@ -1,4 +1,4 @@
-#include "common/lpv/injection.h"
+#include "common/lpv/inject.h"
 
 #include <algorithm>
 #include <cmath>

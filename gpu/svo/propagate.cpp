@@ -1,4 +1,4 @@
-// GPU propagate_svo stage: injection and svo.frames progressive bounces on the GPU
+// GPU propagate stage: injection and propagate.frames progressive bounces on the GPU
 // (gpu/svo/leaf_light.h), frame by frame as cpu/svo/leaf_light.cpp's propagateFrames. The leaf
 // sums are decoded on the host (common/svo/stage_inputs.h: exact power-of-two scaling, the same
 // floats the CPU decodes).
@@ -11,9 +11,9 @@
 
 namespace voxgi::gpu {
 
-void svo::propagate_svo(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
+void svo::propagate(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   using namespace voxgi::svo;
-  beginStage(context, ctx, StageId::svo_propagate_svo);
+  beginStage(context, ctx, StageId::svo_propagate);
   const int depth = treeDepth(ctx.scene);
   const SvoSettings& s = ctx.settings.svo;
   const OctreeWords words = treeWords(buffers, false);
@@ -33,9 +33,9 @@ void svo::propagate_svo(GlContext& context, const StageContext& ctx, BufferSet& 
     radiance = bounceOnce(context, tree, leaves, direct,
                           s.clearEachFrame == SvoToggle::on ? direct : radiance, bounce.cones,
                           bounce.params, first, frame + 1 == s.frames ? &last : nullptr);
-  buffers.put(vec4Buffer(BufferId::svo_propagate_svo_direct, direct));
-  buffers.put(vec4Buffer(BufferId::svo_propagate_svo_radiance, radiance));
-  buffers.put(vec4Buffer(BufferId::svo_propagate_svo_gathered, last.gathered));
+  buffers.put(vec4Buffer(BufferId::svo_propagate_direct, direct));
+  buffers.put(vec4Buffer(BufferId::svo_propagate_radiance, radiance));
+  buffers.put(vec4Buffer(BufferId::svo_propagate_gathered, last.gathered));
 }
 
 }  // namespace voxgi::gpu
