@@ -167,4 +167,11 @@ std::string sourcePath(const std::string& relative) {
   return std::string(VOXGI_SOURCE_DIR) + "/" + relative;
 }
 
+bool planItemIn(const EffectPlan& plan, const std::string& name) {
+  for (const PlanItem& item : plan.items)
+    if (item.name.find(name) != std::string::npos) return item.in;
+  ADD_FAILURE() << "no plan item " << name;
+  return false;
+}
+
 }  // namespace voxgi::test

@@ -40,6 +40,8 @@ BufferSet runCpuUntil(const Technique& technique, const Scene& scene, const Sett
                       std::string_view last);
 // The voxel cone tracing technique.
 const Technique& vct();
+// Whether the plan item whose name contains `name` is in; a test failure when there is none.
+bool planItemIn(const EffectPlan& plan, const std::string& name);
 // The Cornell box with its walls and blocks as `points` sampled points (noise 0.1 along the normal,
 // half as dense at the top, as the shipped cornell_box_cloud.json's), its light a mesh; the cloud
 // carries the walls' colours and a glossy material of its own when `glossy`.

@@ -1,7 +1,6 @@
-// The rsm stage and what inject and shade make of it (docs/stages/lpv/rsm.md): a texel's
-// flux carries the surface's cosine once (T14), a point light's six faces catch all its flux, a
-// spot's map its cone's, the RSM's VPLs reach the volume, depth is the distance along the view's
-// axis, and the depth as shadow map darkens exactly what an occluder hides.
+// The rsm stage (docs/stages/lpv/rsm.md): a texel's flux carries the surface's cosine once (T14),
+// a point light's six faces catch all its flux, a spot's map its cone's, an emissive triangle's
+// maps its emitted flux, and depth is the distance along the view's axis.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -11,80 +10,16 @@
 #include "common/lpv/sh_buffers.h"
 #include "common/voxel_triangles.h"
 #include "shaders/shared/lpv/rsm_kernel.h"
-#include "tests/test_scenes.h"
+#include "tests/lpv/light_scenes.h"
 
 namespace voxgi::test {
 namespace {
-
-const Technique& lpvTechnique() {
-  return findTechnique("lpv");
-}
 
 // Per colour, the sum of an rsm stage buffer's components.
 glm::dvec3 fluxSum(const Buffer& flux) {
   glm::dvec3 sum(0.0);
   for (size_t e = 0; e < flux.elementCount(); ++e) sum += glm::dvec3(flux.vec3At(e));
   return sum;
-}
-
-// The six faces of the cube [lo, hi]^3.
-std::vector<Triangle> closedBox(double lo, double hi) {
-  std::vector<Triangle> out;
-  for (int axis = 0; axis < 3; ++axis)
-    for (double at : {lo, hi})
-      for (const Triangle& t : quad(axis, at, {lo, lo}, {hi, hi})) out.push_back(t);
-  return out;
-}
-
-Material grey(glm::vec3 albedo) {
-  Material m;
-  m.albedo = albedo;
-  return m;
-}
-
-Light pointLight(glm::dvec3 at, glm::vec3 intensity) {
-  Light l;
-  l.type = Light::Type::point;
-  l.position = at;
-  l.intensity = intensity;
-  return l;
-}
-
-// Adds `triangles` as a mesh of their own, of an emissive material (albedo 0).
-void addEmitter(Scene& scene, const std::vector<Triangle>& triangles, glm::vec3 radiance) {
-  Material emitter;
-  emitter.albedo = glm::vec3(0.0f);
-  emitter.emission = radiance;
-  scene.materials.push_back(emitter);
-  Mesh mesh;
-  for (const Triangle& t : triangles) {
-    const auto first = uint32_t(mesh.positions.size());
-    mesh.positions.insert(mesh.positions.end(), t.begin(), t.end());
-    mesh.triangles.emplace_back(first, first + 1, first + 2);
-  }
-  mesh.material = uint32_t(scene.materials.size() - 1);
-  scene.meshes.push_back(mesh);
-}
-
-// A square [lo, hi]^2 of the plane y = at, wound to face -y.
-std::vector<Triangle> downwardSquare(double at, double lo, double hi) {
-  std::vector<Triangle> out = quad(1, at, {lo, lo}, {hi, hi});
-  for (Triangle& t : out) std::swap(t[1], t[2]);
-  return out;
-}
-
-// Direct light on a floor at y = 0.1 under a blocker, seen from between them looking down (the
-// whole shadow in view), with a 128^2 RSM.
-BufferSet shadeFloor(Scene scene) {
-  scene.camera.position = {0.5, 0.45, 0.5};
-  scene.camera.lookAt = {0.5, 0.0, 0.5};
-  scene.camera.up = {0, 0, -1};
-  scene.camera.fovYDeg = 100.0;
-  scene.camera.width = scene.camera.height = 64;
-  Settings settings;
-  settings.lpv.rsmResolution = 128;
-  settings.lpv.steps = 1;
-  return runCpuUntil(lpvTechnique(), scene, settings, "shade");
 }
 
 // T14, the tilt at which Martin's Φ = A_s I_s Ω_s (n_s·l)+ counts the cosine twice (specs A4):
@@ -237,146 +172,5 @@ TEST(Rsm, DepthIsAlongTheViewAxisAndNormalsFaceTheLight) {
   }
   EXPECT_GT(seen, r * r);
 }
-
-// Direct light with the RSM depth as shadow map: a floor under a point light, a small square
-// blocker between them. Beneath the blocker the floor is dark; elsewhere it gets E cos / pi
-// exactly as the light delivers it.
-TEST(ShadeLpv, ShadowMapDarkensWhatAnOccluderHides) {
-  std::vector<Triangle> tris = quad(1, 0.1, {-1, -1}, {2, 2});
-  for (const Triangle& t : quad(1, 0.5, {0.4, 0.4}, {0.6, 0.6})) tris.push_back(t);
-  Scene scene = makeScene(tris, unitGrid(32), grey(glm::vec3(0.5f)));
-  const glm::dvec3 light(0.5, 0.9, 0.5);
-  scene.lights.push_back(pointLight(light, glm::vec3(1.0f)));
-  const BufferSet out = shadeFloor(scene);
-  const Buffer &direct = out.at(BufferId::lpv_shade_direct_diffuse),
-               &position = out.at(BufferId::common_gbuffer_pixel_position),
-               &primitive = out.at(BufferId::common_gbuffer_primitive_id);
-  const double s = scene.grid.voxelSize();
-  int shadowed = 0, lit = 0;
-  for (size_t e = 0; e < direct.elementCount(); ++e) {
-    if (primitive.get<uint32_t>(e, 0) > 2) continue;  // the blocker itself
-    const glm::dvec3 p = scene.grid.min + glm::dvec3(position.vec3At(e)) * s;
-    const glm::dvec3 d = light - p;
-    const double r = glm::length(d);
-    // The blocker's shadow on the floor: the light's rays through [0.4, 0.6]^2 at y = 0.5 reach
-    // y = 0.1 at twice the distance from the axis; stay a few texels clear of its edge.
-    const glm::dvec2 offset = glm::dvec2(p.x - 0.5, p.z - 0.5) / 2.0;
-    const double inside = std::max(std::abs(offset.x), std::abs(offset.y));
-    if (inside < 0.1 - 0.01) {
-      EXPECT_EQ(direct.vec3At(e), glm::vec3(0.0f)) << "pixel " << e << " is in the shadow";
-      ++shadowed;
-    } else if (inside > 0.1 + 0.01) {
-      const double expected = 1.0 / (r * r) * (d.y / r) / M_PI;
-      EXPECT_NEAR(direct.get<float>(e, 0), expected, 1e-4 * expected) << "pixel " << e;
-      ++lit;
-    }
-  }
-  EXPECT_GT(shadowed, 100);
-  EXPECT_GT(lit, 1000);
-}
-
-// inject_geometry.blockers=rsm: the texels' surfaces as blockers. Inside a closed box every wall is
-// seen by a point light at its centre at cosines of at least 1/sqrt(3), so the blocker areas sum to
-// the walls' area (6 x 9.6^2 cells^2), up to the midpoint rule's 6e-5 at 64^2 per face; the area-
-// weighted normals, turned toward the light, cancel. A second light sees the same walls: each cell
-// keeps one light's surfaces, so the total stays near that area instead of doubling (above it by
-// what the larger of two samplings of a cell adds: measured +6.6 %).
-TEST(InjectGeometry, RsmBlockersAreTheSurfacesTheLightsSee) {
-  Scene scene = makeScene(closedBox(0.2, 0.8), unitGrid(16), grey(glm::vec3(0.5f)));
-  scene.lights.push_back(pointLight({0.5, 0.5, 0.5}, glm::vec3(1.0f)));
-  Settings settings;
-  settings.lpv.rsmResolution = 64;
-  settings.lpv.geometry = LpvGeometry::rsm;
-  const double walls = 6.0 * 9.6 * 9.6;
-  const auto areas = [](const Buffer& sums) {
-    glm::dvec4 total(0.0);
-    for (size_t e = 0; e < sums.elementCount(); ++e)
-      for (int c = 0; c < 4; ++c) total[c] += sums.get<int32_t>(e, c) / 4194304.0;
-    return total;
-  };
-  const glm::dvec4 one = areas(runCpuUntil(lpvTechnique(), scene, settings, "inject_geometry")
-                                   .at(BufferId::lpv_inject_geometry_blocker_sum));
-  EXPECT_NEAR(one.x, walls, 2e-4 * walls);
-  for (int c = 1; c < 4; ++c) EXPECT_NEAR(one[c], 0.0, 1e-3) << "component " << c;
-  scene.lights.push_back(pointLight({0.35, 0.6, 0.45}, glm::vec3(1.0f)));
-  const glm::dvec4 two = areas(runCpuUntil(lpvTechnique(), scene, settings, "inject_geometry")
-                                   .at(BufferId::lpv_inject_geometry_blocker_sum));
-  EXPECT_GT(two.x, walls * (1.0 - 2e-4));
-  EXPECT_LT(two.x, walls * 1.1) << "one light's surfaces per cell, not both";
-}
-
-// An emissive square over a floor, a small blocker between them: as an area light, the floor's
-// direct light is Lambert's formula where the blocker does not hide the square's centroid (an
-// independent 64 x 64 midpoint quadrature of cos cos / (pi r^2) over the square here) and 0
-// beneath the blocker, whose shadow is the centroid's: a hard shadow.
-TEST(ShadeLpv, AreaLightDirectLightIsLambertsFormulaOutsideTheShadow) {
-  std::vector<Triangle> tris = quad(1, 0.1, {-1, -1}, {2, 2});
-  for (const Triangle& t : quad(1, 0.5, {0.45, 0.45}, {0.55, 0.55})) tris.push_back(t);
-  Scene scene = makeScene(tris, unitGrid(32), grey(glm::vec3(0.5f)));
-  addEmitter(scene, downwardSquare(0.9, 0.4, 0.6), glm::vec3(1.0f));
-  const BufferSet out = shadeFloor(scene);
-  const Buffer &direct = out.at(BufferId::lpv_shade_direct_diffuse),
-               &position = out.at(BufferId::common_gbuffer_pixel_position),
-               &primitive = out.at(BufferId::common_gbuffer_primitive_id);
-  const double s = scene.grid.voxelSize();
-  int shadowed = 0, lit = 0;
-  for (size_t e = 0; e < direct.elementCount(); ++e) {
-    if (primitive.get<uint32_t>(e, 0) != 1 && primitive.get<uint32_t>(e, 0) != 2) continue;
-    const glm::dvec3 p = scene.grid.min + glm::dvec3(position.vec3At(e)) * s;
-    // The blocker [0.45, 0.55]^2 at y = 0.5 seen from the triangles' centroids (1/15 from the
-    // square's centre along a diagonal): its shadow on y = 0.1 is the blocker scaled by 2 about
-    // each, and both hide |x - 0.5|, |z - 0.5| < 0.067; stay clear of that edge and of the
-    // penumbra the two shadows leave between them.
-    const double reach = std::max(std::abs(p.x - 0.5), std::abs(p.z - 0.5));
-    double f = 0.0;  // the form factor by quadrature
-    const int k = 64;
-    for (int i = 0; i < k; ++i)
-      for (int j = 0; j < k; ++j) {
-        const glm::dvec3 q(0.4 + 0.2 * (i + 0.5) / k, 0.9, 0.4 + 0.2 * (j + 0.5) / k);
-        const glm::dvec3 d = q - p;
-        const double r2 = glm::dot(d, d);
-        f += (d.y / std::sqrt(r2)) * (d.y / std::sqrt(r2)) / (M_PI * r2) * (0.04 / (k * k));
-      }
-    if (reach < 0.05) {
-      EXPECT_EQ(direct.vec3At(e), glm::vec3(0.0f)) << "pixel " << e << " is in the shadow";
-      ++shadowed;
-    } else if (reach > 0.3) {
-      // E / pi = L F; the quadrature's own error is below 1e-4 at these distances.
-      EXPECT_NEAR(direct.get<float>(e, 0), f, 2e-4 * f) << "pixel " << e;
-      ++lit;
-    }
-  }
-  EXPECT_GT(shadowed, 40);  // measured 64 and 1980
-  EXPECT_GT(lit, 1000);
-}
-
-TEST(LpvPlan, RsmRunsForAnalyticLightsAndAreaLights) {
-  Scene scene = makeScene(closedBox(0.2, 0.8), unitGrid(16), grey(glm::vec3(0.5f)));
-  const Technique& t = lpvTechnique();
-  Settings settings = techniqueDefaults(t);
-  EffectPlan plan = t.plan(scene, settings);
-  EXPECT_FALSE(plan.runs(StageId::lpv_rsm));
-  EXPECT_EQ(plan.whySkipped(StageId::lpv_rsm), "no analytic lights");
-  EXPECT_FALSE(plan.on(Effect::direct_light));
-  scene.lights.push_back(pointLight({0.5, 0.5, 0.5}, glm::vec3(1.0f)));
-  Light sun;
-  sun.type = Light::Type::directional;
-  scene.lights.push_back(sun);
-  plan = t.plan(scene, settings);
-  EXPECT_TRUE(plan.runs(StageId::lpv_rsm));
-  EXPECT_TRUE(plan.on(Effect::direct_light));
-  EXPECT_EQ(plan.maps, glm::ivec2(256, 7)) << "six faces and one box";
-  // An emissive quad: two area lights of six faces each (emitters.mode=auto), or VPLs of its own.
-  scene.lights.clear();
-  addEmitter(scene, downwardSquare(0.7, 0.4, 0.6), glm::vec3(1.0f));
-  plan = t.plan(scene, settings);
-  EXPECT_TRUE(plan.runs(StageId::lpv_rsm));
-  EXPECT_EQ(plan.maps, glm::ivec2(256, 12));
-  settings.vct.emitters = EmitterLighting::voxels;
-  plan = t.plan(scene, settings);
-  EXPECT_FALSE(plan.runs(StageId::lpv_rsm));
-  EXPECT_EQ(plan.whySkipped(StageId::lpv_rsm), "no analytic lights and emitters.mode=voxels");
-}
-
 }  // namespace
 }  // namespace voxgi::test

@@ -1,11 +1,13 @@
-// shade's irradiance (T4, T15 of docs/lpv.md): a constant volume, a single VPL's lobe seen
-// against its normal, linearity and the sign of band 1, trilinear weights at a cell centre.
+// shade (docs/stages/lpv/shade.md): its irradiance (T4, T15 of docs/lpv.md): a constant volume, a
+// single VPL's lobe seen against its normal, linearity and the sign of band 1, trilinear weights at
+// a cell centre; its direct light with the RSM as shadow map, for a point light and an area light.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "shaders/shared/lpv/inject_kernel.h"
 #include "shaders/shared/lpv/shade_kernel.h"
+#include "tests/lpv/light_scenes.h"
 #include "tests/lpv/sh_grid.h"
 
 namespace voxgi::test {
@@ -88,6 +90,74 @@ TEST(ShadeLpv, TrilinearAndLinear) {
               0.5 * (irradiance(sum, glm::vec3(1.5f), n, 1.0) +
                      irradiance(sum, glm::vec3(2.5f, 1.5f, 1.5f), n, 1.0)),
               1e-6);
+}
+
+// Direct light with the RSM depth as shadow map: a floor under a point light, a small square
+// blocker between them. Beneath the blocker the floor is dark; elsewhere it gets E cos / pi
+// exactly as the light delivers it.
+TEST(ShadeLpv, ShadowMapDarkensWhatAnOccluderHides) {
+  std::vector<Triangle> tris = quad(1, 0.1, {-1, -1}, {2, 2});
+  for (const Triangle& t : quad(1, 0.5, {0.4, 0.4}, {0.6, 0.6})) tris.push_back(t);
+  Scene scene = makeScene(tris, unitGrid(32), grey(glm::vec3(0.5f)));
+  const glm::dvec3 light(0.5, 0.9, 0.5);
+  scene.lights.push_back(pointLight(light, glm::vec3(1.0f)));
+  int shadowed = 0, lit = 0;
+  for (const auto& [e, p, direct] : shadedFloorPixels(scene)) {
+    const glm::dvec3 d = light - p;
+    const double r = glm::length(d);
+    // The blocker's shadow on the floor: the light's rays through [0.4, 0.6]^2 at y = 0.5 reach
+    // y = 0.1 at twice the distance from the axis; stay a few texels clear of its edge.
+    const glm::dvec2 offset = glm::dvec2(p.x - 0.5, p.z - 0.5) / 2.0;
+    const double inside = std::max(std::abs(offset.x), std::abs(offset.y));
+    if (inside < 0.1 - 0.01) {
+      EXPECT_EQ(direct, glm::vec3(0.0f)) << "pixel " << e << " is in the shadow";
+      ++shadowed;
+    } else if (inside > 0.1 + 0.01) {
+      const double expected = 1.0 / (r * r) * (d.y / r) / M_PI;
+      EXPECT_NEAR(direct.x, expected, 1e-4 * expected) << "pixel " << e;
+      ++lit;
+    }
+  }
+  EXPECT_GT(shadowed, 100);
+  EXPECT_GT(lit, 1000);
+}
+
+// An emissive square over a floor, a small blocker between them: as an area light, the floor's
+// direct light is Lambert's formula where the blocker does not hide the square's centroid (an
+// independent 64 x 64 midpoint quadrature of cos cos / (pi r^2) over the square here) and 0
+// beneath the blocker, whose shadow is the centroid's: a hard shadow.
+TEST(ShadeLpv, AreaLightDirectLightIsLambertsFormulaOutsideTheShadow) {
+  std::vector<Triangle> tris = quad(1, 0.1, {-1, -1}, {2, 2});
+  for (const Triangle& t : quad(1, 0.5, {0.45, 0.45}, {0.55, 0.55})) tris.push_back(t);
+  Scene scene = makeScene(tris, unitGrid(32), grey(glm::vec3(0.5f)));
+  addEmitter(scene, downwardSquare(0.9, 0.4, 0.6), glm::vec3(1.0f));
+  int shadowed = 0, lit = 0;
+  for (const auto& [e, p, direct] : shadedFloorPixels(scene)) {
+    // The blocker [0.45, 0.55]^2 at y = 0.5 seen from the triangles' centroids (1/15 from the
+    // square's centre along a diagonal): its shadow on y = 0.1 is the blocker scaled by 2 about
+    // each, and both hide |x - 0.5|, |z - 0.5| < 0.067; stay clear of that edge and of the
+    // penumbra the two shadows leave between them.
+    const double reach = std::max(std::abs(p.x - 0.5), std::abs(p.z - 0.5));
+    double f = 0.0;  // the form factor by quadrature
+    const int k = 64;
+    for (int i = 0; i < k; ++i)
+      for (int j = 0; j < k; ++j) {
+        const glm::dvec3 q(0.4 + 0.2 * (i + 0.5) / k, 0.9, 0.4 + 0.2 * (j + 0.5) / k);
+        const glm::dvec3 d = q - p;
+        const double r2 = glm::dot(d, d);
+        f += (d.y / std::sqrt(r2)) * (d.y / std::sqrt(r2)) / (M_PI * r2) * (0.04 / (k * k));
+      }
+    if (reach < 0.05) {
+      EXPECT_EQ(direct, glm::vec3(0.0f)) << "pixel " << e << " is in the shadow";
+      ++shadowed;
+    } else if (reach > 0.3) {
+      // E / pi = L F; the quadrature's own error is below 1e-4 at these distances.
+      EXPECT_NEAR(direct.x, f, 2e-4 * f) << "pixel " << e;
+      ++lit;
+    }
+  }
+  EXPECT_GT(shadowed, 40);  // measured 64 and 1980
+  EXPECT_GT(lit, 1000);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
-// The effect planner: what it decides for a scene, and that skipping an effect the scene does not
-// use leaves the image exactly as the full pipeline (plan.mode=full) renders it.
+// Voxel cone tracing's effect planner (common/vct/plan.cpp): what it decides for a scene, and that
+// skipping an effect the scene does not use leaves the image exactly as the full pipeline
+// (plan.mode=full) renders it.
 #include <gtest/gtest.h>
 
 #include "common/scene_load.h"
@@ -7,13 +8,6 @@
 
 namespace voxgi::test {
 namespace {
-
-bool planned(const EffectPlan& plan, const std::string& name) {
-  for (const PlanItem& item : plan.items)
-    if (item.name.find(name) != std::string::npos) return item.in;
-  ADD_FAILURE() << "no plan item " << name;
-  return false;
-}
 
 // A diffuse floor in view of a camera looking down -z, and a glossy quad behind the camera.
 Scene floorAndHiddenMirror() {
@@ -40,11 +34,11 @@ TEST(EffectPlan, FollowsTheScene) {
   Settings settings;
   EffectPlan plan = vct().plan(scene, settings);
   EXPECT_FALSE(plan.on(Effect::emission));
-  EXPECT_FALSE(planned(plan, "emission volume"));
+  EXPECT_FALSE(planItemIn(plan, "emission volume"));
   EXPECT_FALSE(plan.on(Effect::specular)) << "the glossy quad is behind the camera";
   EXPECT_TRUE(meshInView(scene, scene.meshes[0]));
   EXPECT_FALSE(meshInView(scene, scene.meshes[1]));
-  EXPECT_FALSE(planned(plan, "shadow cones"));
+  EXPECT_FALSE(planItemIn(plan, "shadow cones"));
   EXPECT_FALSE(plan.on(Effect::ambient_occlusion));
   EXPECT_FALSE(plan.runs(StageId::vct_bounce));
   EXPECT_TRUE(plan.runs(StageId::vct_trace_cones));
@@ -57,9 +51,9 @@ TEST(EffectPlan, FollowsTheScene) {
   settings.vct.bounceCount = 2;
   plan = vct().plan(scene, settings);
   EXPECT_TRUE(plan.on(Effect::specular));
-  EXPECT_TRUE(planned(plan, "shadow cones"));
+  EXPECT_TRUE(planItemIn(plan, "shadow cones"));
   EXPECT_TRUE(plan.on(Effect::ambient_occlusion));
-  EXPECT_TRUE(planned(plan, "bounce"));
+  EXPECT_TRUE(planItemIn(plan, "bounce"));
   EXPECT_TRUE(plan.runs(StageId::vct_bounce));
 
   settings.planMode = PlanMode::full;
@@ -100,27 +94,6 @@ TEST(EffectPlan, SkippedEffectsLeaveTheImageUnchanged) {
     expectPlannedEqualsFull(scene,
                             resolveSettings(vct(), scene.settings, scene.file, "default", {}));
   }
-}
-
-// The octree's plan: emission and the specular cone from the materials of meshes and clouds, and
-// the full pipeline gives the same image with the extra buffers.
-TEST(EffectPlan, SvoFollowsTheSceneAndTheFullPlanChangesNothing) {
-  const Technique& svo = findTechnique("svo");
-  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
-  scene.grid.resolution = 16;
-  scene.camera.width = scene.camera.height = 32;
-  Settings settings = techniqueDefaults(svo);
-  const EffectPlan plan = svo.plan(scene, settings);
-  EXPECT_TRUE(planned(plan, "emission per pixel"));
-  EXPECT_FALSE(planned(plan, "specular cone"));
-  const BufferSet lean = runCpuUntil(svo, scene, settings, "shade");
-  EXPECT_FALSE(lean.contains(BufferId::svo_shade_indirect_specular));
-  settings.planMode = PlanMode::full;
-  const BufferSet full = runCpuUntil(svo, scene, settings, "shade");
-  EXPECT_TRUE(full.contains(BufferId::svo_shade_indirect_specular));
-  EXPECT_EQ(lean.at(BufferId::svo_shade_color).words, full.at(BufferId::svo_shade_color).words);
-  Scene glossy = cornellBoxCloud(2000, true);
-  EXPECT_TRUE(planned(svo.plan(glossy, techniqueDefaults(svo)), "specular cone"));
 }
 
 }  // namespace

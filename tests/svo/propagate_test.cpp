@@ -1,6 +1,6 @@
-// Light in the octree (docs/svo.md, tests S9-S11, S15, S17 and the dense oracle): the shared
-// kernels read through the tree give the dense pyramid's results on the same voxels; the
-// anisotropic mip's golden values; progressive bounces as the explicit sum; injection.
+// The octree's propagate stage (docs/stages/svo/propagate.md; docs/svo.md, tests S9, S15, S17 and
+// the dense oracle): the shared kernels read through the tree give the dense pyramid's results on
+// the same voxels; progressive bounces as the explicit sum; injection.
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -13,6 +13,7 @@
 #include "cpu/svo/leaf_light.h"
 #include "cpu/vct/cone_volumes.h"
 #include "shaders/shared/vct/bounce_kernel.h"
+#include "tests/svo/tree_samples.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {
@@ -24,15 +25,6 @@ using cpu::svo::Leaves;
 using cpu::svo::NodeLevels;
 using cpu::svo::Octree;
 using cpu::svo::SvoVolumes;
-
-// A sample filling leaf v exactly (RoI = the cell), so the tree's leaves are the given voxels.
-shared::SvoSample cellSample(glm::ivec3 v) {
-  shared::SvoSample s{};
-  s.position = glm::vec4(glm::vec3(v) + 0.5f, 1.0f);
-  s.albedo = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-  s.normal = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
-  return s;
-}
 
 // Six inward-facing walls of a closed box, every one emitting (as tests/vct/bounce_test.cpp).
 Scene closedBox(int n) {
@@ -78,6 +70,13 @@ bool sameBits(glm::vec4 a, glm::vec4 b) {
 // An octree whose leaves are the occupied voxels of the dense pipeline's grid (run up to `last`),
 // holding their values: the albedo with opacity 1 (so that the kernels' albedo is the dense albedo
 // bit for bit), the normal sum, and light_voxels' radiance (which carries the dense opacity).
+// The directional pyramid the octree's six-face mipmap mirrors.
+Settings anisotropicMip() {
+  Settings settings;
+  settings.vct.mip = MipMode::anisotropic;
+  return settings;
+}
+
 struct DenseTree {
   BufferSet dense;
   std::vector<shared::SvoSample> samples;
@@ -116,8 +115,7 @@ DenseTree denseTree(const Scene& scene, const Settings& settings, int depth, con
 TEST(SvoLight, OctreeOfADenseGridGivesTheDensePyramidAndConeResults) {
   constexpr int kDepth = 5, kN = 1 << kDepth;
   const Scene scene = closedBox(kN);
-  Settings settings;
-  settings.vct.mip = MipMode::anisotropic;
+  const Settings settings = anisotropicMip();
   const DenseTree t = denseTree(scene, settings, kDepth, "mip");
   const BufferSet& dense = t.dense;
   const Buffer& radiance = dense.at(BufferId::vct_light_voxels_radiance);
@@ -158,74 +156,13 @@ TEST(SvoLight, OctreeOfADenseGridGivesTheDensePyramidAndConeResults) {
   EXPECT_GT(gathered, samples.size() / 2);  // the bounce added light, not only passed it on
 }
 
-// A tree over one leaf tile's neighbourhood with chosen leaf values, for the mip golden values.
-struct OneTile {
-  Octree octree;
-  Leaves leaves;
-  LeafRadiance radiance;
-};
-
-// Leaves (local ids of the tile at the grid's origin) with premultiplied values and normals.
-OneTile oneTile(const std::vector<std::pair<int, glm::vec4>>& values, glm::vec3 normal) {
-  std::vector<shared::SvoSample> samples;
-  for (const auto& [local, value] : values)
-    samples.push_back(cellSample({local & 1, (local >> 1) & 1, local >> 2}));
-  OneTile t{cpu::svo::buildOctree(samples, 2), {}, {}};
-  const size_t slots = t.octree.leafTileCount() * 8;
-  t.leaves.albedo.assign(slots, glm::vec4(0.0f));
-  t.leaves.normal.assign(slots, glm::vec3(0.0f));
-  t.leaves.emission.assign(slots, glm::vec3(0.0f));
-  t.radiance.assign(slots, glm::vec4(0.0f));
-  for (const auto& [local, value] : values) {
-    t.radiance[size_t(local)] = value;  // the tile at the origin is leaf tile 0
-    t.leaves.normal[size_t(local)] = normal;
-  }
-  return t;
-}
-
-// Node (0,0,0) of tree level 1 (the one above the leaves at depth 2), face f.
-glm::vec4 parentFace(const OneTile& t, FirstStep first, int face) {
-  const NodeLevels m = cpu::svo::mipTree(t.octree, t.leaves, t.radiance, first);
-  return m.levels[1][size_t(face)];
-}
-
-// [Salm 2015, §4.4.2] golden values (the extraction's S10, S11), in voxgi's face labels: face f is
-// what a cone travelling along f sees, Salm's value for the opposite direction.
-TEST(SvoMip, AnisotropicGoldenValues) {
-  constexpr int kPx = 0, kMx = 1, kPy = 2, kMy = 3, kPz = 4, kMz = 5;
-  // One opaque child of radiance 1: a quarter in every face.
-  OneTile one = oneTile({{0, glm::vec4(1.0f)}}, glm::vec3(0.0f));
-  for (int f = 0; f < 6; ++f) EXPECT_EQ(parentFace(one, FirstStep::plain, f), glm::vec4(0.25f));
-  // Two opaque children along x: radiance 1 at x = 0, 10 at x = 1.
-  OneTile two = oneTile({{0, glm::vec4(1, 1, 1, 1)}, {1, glm::vec4(10, 10, 10, 1)}}, glm::vec3(0));
-  EXPECT_EQ(parentFace(two, FirstStep::plain, kMx), glm::vec4(2.5f, 2.5f, 2.5f, 0.25f));
-  EXPECT_EQ(parentFace(two, FirstStep::plain, kPx), glm::vec4(0.25f));
-  for (const int f : {kPy, kMy, kPz, kMz})
-    EXPECT_EQ(parentFace(two, FirstStep::plain, f), glm::vec4(2.75f, 2.75f, 2.75f, 0.5f));
-  // Uniform opacity 0.3, radiance 2 in all eight: 1 - 0.7^2 along every face, radiance kept.
-  std::vector<std::pair<int, glm::vec4>> all;
-  for (int l = 0; l < 8; ++l) all.push_back({l, glm::vec4(0.6f, 0.6f, 0.6f, 0.3f)});
-  const glm::vec4 uniform = parentFace(oneTile(all, glm::vec3(0.0f)), FirstStep::plain, kPz);
-  EXPECT_NEAR(uniform.a, 1.0f - 0.7f * 0.7f, 1e-6f);
-  EXPECT_NEAR(uniform.x / uniform.a, 2.0f, 1e-6f);
-  // The NDF-weighted first step: an opaque wall in the x = 1 children facing +x.
-  OneTile wall =
-      oneTile({{1, glm::vec4(1)}, {3, glm::vec4(1)}, {5, glm::vec4(1)}, {7, glm::vec4(1)}},
-              glm::vec3(1, 0, 0));
-  EXPECT_EQ(parentFace(wall, FirstStep::ndf, kMx), glm::vec4(1.0f));  // seen from +x
-  EXPECT_EQ(parentFace(wall, FirstStep::ndf, kPx), glm::vec4(0.0f));  // its back
-  for (const int f : {kPy, kMy, kPz, kMz})
-    EXPECT_EQ(parentFace(wall, FirstStep::ndf, f), glm::vec4(0.375f));
-}
-
 // Progressive bounces [Salm 2015, §4.4.3]: with static light, frame t's radiance is the explicit
 // sum of T^j(direct) for j <= t, with T one gather of the previous frame (linear for fixed
 // geometry), and the increments shrink geometrically; clearing every frame gives one bounce.
 TEST(SvoLight, ProgressiveBouncesAreTheExplicitSumAndConverge) {
   constexpr int kDepth = 4, kN = 1 << kDepth;
   const Scene scene = closedBox(kN);
-  Settings settings;
-  settings.vct.mip = MipMode::anisotropic;
+  const Settings settings = anisotropicMip();
   const DenseTree t = denseTree(scene, settings, kDepth, "light_voxels");
   const Octree& o = t.octree;
   const Leaves& leaves = t.leaves;
