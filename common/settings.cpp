@@ -38,14 +38,26 @@ std::pair<std::string, std::string> split(const std::string& assignment,
   return {assignment.substr(0, eq), assignment.substr(eq + 1)};
 }
 
-std::vector<const Param*> paramsOf(const Technique& technique) {
-  std::vector<const Param*> out;
-  for (const Param& p : sharedParams()) out.push_back(&p);
-  for (const Param& p : technique.params()) out.push_back(&p);
-  return out;
+// Whether the technique reads a shared key: plan.mode always, a shared stage's keys when it runs
+// the stage (the octree does not voxelize).
+bool readsSharedKey(const Technique& technique, const Param& p) {
+  const std::string_view prefix = std::string_view(p.key).substr(0, p.key.find('.'));
+  if (prefix == "plan") return true;
+  const auto& steps = technique.steps();
+  return std::any_of(steps.begin(), steps.end(), [&](const StageSpec* s) {
+    return s->owner == std::string_view("common") && s->name == prefix;
+  });
 }
 
 }  // namespace
+
+std::vector<const Param*> techniqueParams(const Technique& technique) {
+  std::vector<const Param*> out;
+  for (const Param& p : sharedParams())
+    if (readsSharedKey(technique, p)) out.push_back(&p);
+  for (const Param& p : technique.params()) out.push_back(&p);
+  return out;
+}
 
 const std::vector<Param>& sharedParams() {
   static const std::vector<Param> table{
@@ -115,6 +127,11 @@ Settings resolveSettings(const Technique& technique, const std::vector<std::stri
       throw InputError("--set", key,
                        "is a parameter of " + std::string(found.technique->name) + ", not of " +
                            std::string(technique.name));
+    if (found.param != nullptr && found.technique == nullptr &&
+        !readsSharedKey(technique, *found.param))
+      throw InputError("--set", key,
+                       "is a parameter of a stage " + std::string(technique.name) +
+                           " does not run (voxgi plan lists its stages)");
     applySetting(settings, a, "--set");
   }
   return settings;
@@ -122,7 +139,7 @@ Settings resolveSettings(const Technique& technique, const std::vector<std::stri
 
 std::vector<std::string> settingValues(const Settings& settings, const Technique& technique) {
   std::vector<std::string> out;
-  for (const Param* p : paramsOf(technique)) out.push_back(p->key + "=" + p->get(settings));
+  for (const Param* p : techniqueParams(technique)) out.push_back(p->key + "=" + p->get(settings));
   return out;
 }
 
@@ -135,7 +152,7 @@ std::string describeSettings(const Technique& technique) {
   const Settings defaults = techniqueDefaults(technique);
   std::ostringstream s;
   s << "Parameters of " << technique.name << " (--set key=value):\n";
-  for (const Param* p : paramsOf(technique))
+  for (const Param* p : techniqueParams(technique))
     s << "  " << p->key << " = " << p->get(defaults) << "  " << p->range << "\n      " << p->meaning
       << "\n";
   s << "Presets of " << technique.name << " (--preset NAME, applied before --set):\n";

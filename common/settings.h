@@ -13,6 +13,7 @@
 
 namespace voxgi {
 
+struct Param;
 struct Technique;
 
 enum class VoxelizeMode { conservative, antialiased };
@@ -50,7 +51,9 @@ void applyPreset(Settings& settings, const Technique& technique, const std::stri
 Settings resolveSettings(const Technique& technique, const std::vector<std::string>& fileSettings,
                          const std::string& file, const std::string& preset,
                          const std::vector<std::string>& sets);
-// The current value of every shared key and every key of the technique, "key=value".
+// The keys the technique reads: the shared ones of the stages it runs, then its own.
+std::vector<const Param*> techniqueParams(const Technique& technique);
+// The current value of every key the technique reads, "key=value".
 std::vector<std::string> settingValues(const Settings& settings, const Technique& technique);
 // The value of one key as settingValues prints it ("cones.set" -> "equal7").
 std::string settingValue(const Settings& settings, const std::string& key);

@@ -58,11 +58,20 @@ std::string techniqueNames();
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
 #include "common/stages.inc"
 
+// The settings keys' one scheme: a key is `<stage>.<name>` when one stage reads it
+// (propagate.steps, build.seed; voxelize.mode for a technique that runs voxelize), `<owner>.<name>`
+// when several of a technique's stages do (lpv.bands, svo.first_step), `plan.mode` for the planner,
+// and
+// `<kernel>.<name>` for the kernels several techniques' stages share, in Settings::vct: these
+// groups (tests/settings_test.cpp checks every technique's keys against the scheme).
+inline constexpr std::string_view kKernelKeyGroups[] = {
+    "emitters", "light", "voxel_shadow", "cones", "shadow", "specular", "ao"};
+
 namespace vct {
-// Voxel cone tracing's keys that start with one of `prefixes`: those another technique's stages
-// read from Settings::vct too (the octree's cone and light keys, light propagation volumes'
-// emitters.mode), so a key means one thing for every technique that takes it.
-std::vector<Param> paramsWithPrefix(std::initializer_list<std::string_view> prefixes);
+// Voxel cone tracing's keys of the kernel `groups` (kKernelKeyGroups): those another technique's
+// stages read from Settings::vct too (the octree's cone and light keys, light propagation
+// volumes' emitters.mode), so a key means one thing for every technique that takes it.
+std::vector<Param> kernelParams(std::initializer_list<std::string_view> groups);
 }  // namespace vct
 
 }  // namespace voxgi

@@ -1,4 +1,7 @@
 // --set key=value and --preset: values parse exactly, bad ones name the key, presets apply.
+#include <set>
+#include <string_view>
+
 #include <gtest/gtest.h>
 
 #include "common/error.h"
@@ -66,6 +69,30 @@ TEST(Settings, ATechniqueTakesTheKeysItSharesAndRefusesOthers) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("is a parameter of vct, not of svo"), std::string::npos)
         << e.what();
+  }
+  try {
+    resolveSettings(svo, {}, "scene.json", "default", {"voxelize.mode=antialiased"});
+    FAIL() << "svo took voxelize.mode, though it does not voxelize";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("a stage svo does not run"), std::string::npos)
+        << e.what();
+  }
+}
+
+// Every key of every technique follows the one scheme of common/technique.h: named after a stage
+// the technique runs, after the owner of its stages, the planner, or a shared kernel.
+TEST(Settings, EveryKeyNamesTheStageOrKernelThatReadsIt) {
+  for (const Technique& t : techniques()) {
+    std::set<std::string_view> allowed{"plan"};
+    for (const std::string_view group : kKernelKeyGroups) allowed.insert(group);
+    for (const StageSpec* s : t.steps()) {
+      allowed.insert(s->name);
+      if (s->owner != std::string_view("common")) allowed.insert(s->owner);
+    }
+    for (const Param* p : techniqueParams(t)) {
+      const std::string_view prefix = std::string_view(p->key).substr(0, p->key.find('.'));
+      EXPECT_TRUE(allowed.count(prefix)) << t.name << ": " << p->key;
+    }
   }
 }
 

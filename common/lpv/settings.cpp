@@ -49,7 +49,7 @@ const std::vector<Param>& params() {
     // Voxel cone tracing's emitters.mode (Settings::vct): whether emissive triangles are area
     // lights (direct light per pixel, their reflective shadow maps' texels the volume's VPLs) or
     // VPLs of their own in the volume, as [Martin 2012] injects them.
-    for (Param& p : vct::paramsWithPrefix({"emitters."})) out.push_back(std::move(p));
+    for (Param& p : vct::kernelParams({"emitters"})) out.push_back(std::move(p));
     return out;
   }();
   return table;

@@ -27,8 +27,8 @@ const std::vector<Param>& params() {
                     "B-spline over 4^3 leaves (smoother, 8 trilinear samples)"),
     };
     // Voxel cone tracing's keys that the octree's stages read.
-    for (Param& p : vct::paramsWithPrefix(
-             {"emitters.", "cones.", "shadow.", "specular.", "light.", "voxel_shadow."}))
+    for (Param& p :
+         vct::kernelParams({"emitters", "cones", "shadow", "specular", "light", "voxel_shadow"}))
       out.push_back(std::move(p));
     return out;
   }();

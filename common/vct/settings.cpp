@@ -57,11 +57,12 @@ const std::vector<Param>& params() {
   return table;
 }
 
-std::vector<Param> paramsWithPrefix(std::initializer_list<std::string_view> prefixes) {
+std::vector<Param> kernelParams(std::initializer_list<std::string_view> groups) {
   std::vector<Param> out;
   for (const Param& p : params())
-    for (const std::string_view prefix : prefixes)
-      if (p.key.rfind(prefix, 0) == 0) {
+    for (const std::string_view group : groups)
+      if (p.key.size() > group.size() && p.key.compare(0, group.size(), group) == 0 &&
+          p.key[group.size()] == '.') {
         out.push_back(p);
         break;
       }
