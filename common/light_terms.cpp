@@ -35,22 +35,6 @@ std::string_view termName(LightTerm term) {
   return "";
 }
 
-std::string_view termMeaning(LightTerm term) {
-  switch (term) {
-    case LightTerm::emission:
-      return "what the camera sees unreflected: emitters and background";
-    case LightTerm::direct:
-      return "light straight from the lights and emissive surfaces, reflected once toward the "
-             "camera";
-    case LightTerm::indirect_diffuse:
-      return "light reflected more than once, or from the background, leaving the first surface "
-             "by its diffuse lobe";
-    case LightTerm::indirect_specular:
-      return "the same leaving the first surface by its Phong lobe";
-  }
-  return "";
-}
-
 Image directOnly(const TermImages& terms) {
   Image out = termImage(terms, LightTerm::emission);
   const Image& direct = termImage(terms, LightTerm::direct);

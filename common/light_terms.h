@@ -28,8 +28,6 @@ constexpr std::array<LightTerm, 4> kLightTerms{LightTerm::emission, LightTerm::d
                                                LightTerm::indirect_specular};
 
 std::string_view termName(LightTerm term);
-// One line for help texts and docs.
-std::string_view termMeaning(LightTerm term);
 
 // One image per term, indexed by LightTerm.
 using TermImages = std::array<Image, kLightTerms.size()>;

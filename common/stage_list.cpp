@@ -127,12 +127,6 @@ std::string BufferSpec::qualifiedName() const {
   return stageSpec().qualifiedName() + "." + std::string(name);
 }
 
-std::span<const EffectSpec> effectSpecs() {
-  return kEffects;
-}
-std::span<const StageSpec> stageSpecs() {
-  return kStages;
-}
 std::span<const BufferSpec> bufferSpecs() {
   return kBuffers;
 }

@@ -84,8 +84,6 @@ struct BufferSpec {
   std::string qualifiedName() const;  // "voxelize.opacity", "vct/light_voxels.radiance"
 };
 
-std::span<const EffectSpec> effectSpecs();
-std::span<const StageSpec> stageSpecs();
 std::span<const BufferSpec> bufferSpecs();
 const StageSpec& stageSpec(StageId id);
 const BufferSpec& bufferSpec(BufferId id);

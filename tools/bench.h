@@ -22,10 +22,14 @@ struct BenchOptions {
   int generatedTriangles = 1000000;  // 0: skip the generated mesh
   int repeats = 3;
   bool gpu = true;
+  std::string gl = "osmesa";  // the GPU column's GL platform (--gl)
   std::string json;
 };
 
 void addBenchOptions(CLI::App& cmd, BenchOptions& options);
+// --no-gpu and --gl, the GPU column of every benchmark: OSMesa (llvmpipe) by default, EGL for a
+// hardware GPU.
+void addGpuColumnOptions(CLI::App& cmd, bool& gpu, std::string& gl);
 int runBenchVoxelize(const BenchOptions& options);
 
 struct BenchVctOptions {
@@ -36,6 +40,7 @@ struct BenchVctOptions {
   int mipResolution = 256;  // 0: skip the mip-vs-memcpy line
   int repeats = 3;
   bool gpu = true;
+  std::string gl = "osmesa";  // the GPU column's GL platform (--gl)
   std::string preset = "default";
   std::vector<std::string> sets;
   std::string json;
@@ -51,6 +56,7 @@ struct BenchLpvOptions {
   std::vector<int> threads{1, 2};
   int repeats = 3;
   bool gpu = true;
+  std::string gl = "osmesa";  // the GPU column's GL platform (--gl)
   std::string json;
 };
 
@@ -64,6 +70,7 @@ struct BenchSvoOptions {
   std::vector<int> threads{1, 2};
   std::vector<int> stageDepths{6, 7};  // the technique's stages through the runner
   bool gpu = true;
+  std::string gl = "osmesa";  // the GPU column's GL platform (--gl)
   int repeats = 3;
   std::string json;
 };

@@ -44,13 +44,13 @@ void addBenchLpvOptions(CLI::App& cmd, BenchLpvOptions& o) {
   cmd.add_option("--threads-list", o.threads, "CPU thread counts")->delimiter(',');
   cmd.add_option("--repeat", o.repeats, "runs per measurement (the median is reported)")
       ->check(CLI::Range(1, 100));
-  cmd.add_flag("!--no-gpu", o.gpu, "skip the GPU (OSMesa) column");
+  addGpuColumnOptions(cmd, o.gpu, o.gl);
   cmd.add_option("--json", o.json, "also write the figures as JSON");
 }
 
 int runBenchLpv(const BenchLpvOptions& o) {
   std::unique_ptr<gpu::GlContext> context;
-  if (o.gpu) context = gpu::GlContext::create(gpu::GlPlatform::osmesa);
+  if (o.gpu) context = gpu::GlContext::create(gpu::parseGlPlatform(o.gl));
   nlohmann::json rows = nlohmann::json::array();
   std::cout << std::left << std::setw(18) << "scene" << std::setw(7) << "tech" << std::setw(6)
             << "grid" << std::setw(6) << "steps" << std::setw(6) << "occl" << std::setw(12)
@@ -82,7 +82,7 @@ int runBenchLpv(const BenchLpvOptions& o) {
             }
             if (context) {
               gpu::GpuBackend gpuBackend(*context);
-              runs.emplace_back("gpu osmesa", timeStages(ctx, o.repeats, gpuBackend));
+              runs.emplace_back("gpu " + o.gl, timeStages(ctx, o.repeats, gpuBackend));
             }
             const std::string sceneName = std::filesystem::path(file).stem().string();
             for (const auto& [backend, stages] : runs)

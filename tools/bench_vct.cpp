@@ -105,7 +105,7 @@ void addBenchVctOptions(CLI::App& cmd, BenchVctOptions& o) {
   cmd.add_option("--mip-resolution", o.mipResolution, "mip vs memcpy volume (0: skip)");
   cmd.add_option("--repeat", o.repeats, "runs per measurement (the median is reported)")
       ->check(CLI::Range(1, 100));
-  cmd.add_flag("!--no-gpu", o.gpu, "skip the GPU (OSMesa) column");
+  addGpuColumnOptions(cmd, o.gpu, o.gl);
   cmd.add_option("--preset", o.preset, "parameter preset");
   cmd.add_option("--set", o.sets, "technique parameter key=value");
   cmd.add_option("--json", o.json, "also write the figures as JSON");
@@ -113,7 +113,7 @@ void addBenchVctOptions(CLI::App& cmd, BenchVctOptions& o) {
 
 int runBenchVct(const BenchVctOptions& o) {
   std::unique_ptr<gpu::GlContext> context;
-  if (o.gpu) context = gpu::GlContext::create(gpu::GlPlatform::osmesa);
+  if (o.gpu) context = gpu::GlContext::create(gpu::parseGlPlatform(o.gl));
   nlohmann::json rows = nlohmann::json::array();
   std::cout << std::left << std::setw(14) << "scene" << std::setw(6) << "grid" << std::setw(7)
             << "image" << std::setw(14) << "backend" << std::setw(18) << "stage" << std::right
@@ -139,7 +139,7 @@ int runBenchVct(const BenchVctOptions& o) {
         }
         if (context) {
           gpu::GpuBackend gpuBackend(*context);
-          runs.emplace_back("gpu osmesa", timeStages(ctx, o.repeats, gpuBackend));
+          runs.emplace_back("gpu " + o.gl, timeStages(ctx, o.repeats, gpuBackend));
         }
         const std::string name = std::filesystem::path(file).stem().string();
         for (const auto& [backend, stages] : runs)

@@ -70,13 +70,20 @@ double meshToVolumeSeconds(const Scene& scene, int repeats, float bandWidth) {
 
 }  // namespace
 
+void addGpuColumnOptions(CLI::App& cmd, bool& gpu, std::string& gl) {
+  cmd.add_flag("!--no-gpu", gpu, "skip the GPU column");
+  cmd.add_option("--gl", gl,
+                 "GL platform of the GPU column (osmesa: llvmpipe; egl: a hardware GPU)")
+      ->check(CLI::IsMember({"egl", "osmesa"}));
+}
+
 void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
   cmd.add_option("--resolutions", o.resolutions, "grid resolutions")->delimiter(',');
   cmd.add_option("--bunny", o.bunny, "first mesh (default scenes/bunny.obj)");
   cmd.add_option("--triangles", o.generatedTriangles, "triangles of the generated mesh (0: skip)");
   cmd.add_option("--repeat", o.repeats, "runs per measurement (the median is reported)")
       ->check(CLI::Range(1, 100));
-  cmd.add_flag("!--no-gpu", o.gpu, "skip the GPU (OSMesa) column");
+  addGpuColumnOptions(cmd, o.gpu, o.gl);
   cmd.add_option("--json", o.json, "also write the figures as JSON");
 }
 
@@ -94,7 +101,7 @@ int runBenchVoxelize(const BenchOptions& o) {
   std::unique_ptr<gpu::GlContext> context;
   if (o.gpu) {
     try {
-      context = gpu::GlContext::create(gpu::GlPlatform::osmesa);
+      context = gpu::GlContext::create(gpu::parseGlPlatform(o.gl));
     } catch (const std::exception& e) {
       std::cerr << "bench: no GPU column: " << e.what() << "\n";
     }

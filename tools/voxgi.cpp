@@ -481,11 +481,14 @@ int main(int argc, char** argv) {
                  "print each buffer's word count and FNV-1a checksum (a run's fingerprint, to "
                  "check that a change or another machine reproduces it bit for bit)");
   auto* plan = app.add_subcommand(
-      "plan", "print the stages and cones a scene needs, and why each is in or out");
+      "plan",
+      "print the stages and effects a technique's plan runs for a scene, and why each is "
+      "in or out");
   addCommon(plan, false);
   addTechnique(plan);
-  auto* render = app.add_subcommand(
-      "render", "render an image: voxel cone tracing or the reference path tracer");
+  auto* render =
+      app.add_subcommand("render", "render an image with a technique (" + techniqueNames() +
+                                       ") or the reference path tracer (path)");
   addCommon(render, true);
   std::string png;
   reference::PathTraceOptions pathOptions;
