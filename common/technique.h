@@ -14,6 +14,7 @@
 #include "common/scene.h"
 #include "common/settings_table.h"
 #include "common/stage_list.h"
+#include "common/vdb_io.h"
 
 namespace voxgi {
 
@@ -33,6 +34,8 @@ struct Technique {
   const std::vector<Preset>& (*presets)();  // "default" first
   // Which of its stages, buffers and effects the scene needs, and why (common/effect_plan.h).
   EffectPlan (*plan)(const Scene& scene, const Settings& settings);
+  // Where the elements of its sparse buffers in a run lie as grids (common/vdb_io.h), for dumps.
+  SparseLayouts (*sparseLayouts)(const BufferSet& run, const GridSpec& grid);
   std::string_view stages;  // whose steps it runs: its own name, or a variant's base
   const std::vector<std::string>* defaults = nullptr;  // a variant's (Variant::defaults)
   std::vector<const StageSpec*> steps() const { return techniqueSteps(stages); }
@@ -45,12 +48,13 @@ const Technique& findTechnique(std::string_view name, const std::string& source 
 std::string techniqueNames();
 
 // The per-technique entry points the registry links against (common/<technique>/).
-#define VOXGI_TECHNIQUE(technique, image_stage, image, summary)         \
-  namespace technique {                                                 \
-  const std::vector<Param>& params();                                   \
-  const std::vector<Preset>& presets();                                 \
-  EffectPlan planEffects(const Scene& scene, const Settings& settings); \
-  const std::vector<Variant>& variants();                               \
+#define VOXGI_TECHNIQUE(technique, image_stage, image, summary)            \
+  namespace technique {                                                    \
+  const std::vector<Param>& params();                                      \
+  const std::vector<Preset>& presets();                                    \
+  EffectPlan planEffects(const Scene& scene, const Settings& settings);    \
+  SparseLayouts sparseLayouts(const BufferSet& run, const GridSpec& grid); \
+  const std::vector<Variant>& variants();                                  \
   }
 #define VOXGI_EFFECT(owner, effect, meaning)
 #define VOXGI_STAGE(owner, stage, summary)
@@ -60,10 +64,10 @@ std::string techniqueNames();
 
 // The settings keys' one scheme: a key is `<stage>.<name>` when one stage reads it
 // (propagate.steps, build.seed; voxelize.mode for a technique that runs voxelize), `<owner>.<name>`
-// when several of a technique's stages do (lpv.bands, svo.first_step), `plan.mode` for the planner,
-// and
-// `<kernel>.<name>` for the kernels several techniques' stages share, in Settings::vct: these
-// groups (tests/settings_test.cpp checks every technique's keys against the scheme).
+// when several of a technique's stages do (lpv.bands, svo.first_step), `plan.mode` for the
+// planner, and `<kernel>.<name>` for the kernels several techniques' stages share, in
+// Settings::vct: these groups (tests/settings_test.cpp checks every technique's keys against the
+// scheme).
 inline constexpr std::string_view kKernelKeyGroups[] = {
     "emitters", "light", "voxel_shadow", "cones", "shadow", "specular", "ao"};
 

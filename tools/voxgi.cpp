@@ -305,7 +305,7 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir, b
     if (dir.empty()) continue;
     for (const std::string& path :
          writeBuffers(dir + "/" + std::string(s->name), buffersOf(run.buffers, *s, true),
-                      run.scene.grid, {}, svo::levelLayouts(run.buffers, run.scene.grid)))
+                      run.scene.grid, {}, technique.sparseLayouts(run.buffers, run.scene.grid)))
       std::cout << "wrote " << path << "\n";
   }
   return kExitOk;

@@ -5,8 +5,13 @@
 namespace voxgi::validation {
 namespace {
 
-#define VOXGI_COMPARISON(owner, stage, buffer, kind, tolerance, reason) \
-  Comparison{BufferId::owner##_##stage##_##buffer, Metric::kind, tolerance, reason},
+#define VOXGI_COMPARISON(owner, stage, buffer, kind, tolerance, ties, widening, reason) \
+  Comparison{BufferId::owner##_##stage##_##buffer,                                      \
+             Metric::kind,                                                              \
+             tolerance,                                                                 \
+             Ties::ties,                                                                \
+             Widening::widening,                                                        \
+             reason},
 constexpr Comparison kComparisons[] = {
 #include "validation/comparisons.inc"
 };
@@ -32,6 +37,28 @@ constexpr bool everyBufferHasItsComparison() {
 static_assert(everyBufferHasItsComparison(),
               "validation/comparisons.inc must list one comparison per buffer of "
               "common/stages.inc, in the same order");
+
+// The stage of each buffer, in declaration order (the order of kComparisons).
+constexpr StageId kBufferStages[] = {
+#define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
+#define VOXGI_EFFECT(owner, effect, meaning)
+#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STEP(technique, owner, stage)
+#define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning) \
+  StageId::owner##_##stage,
+#include "common/stages.inc"
+};
+
+// The diff classifies an element once for all the buffers of its stage.
+constexpr bool aStageHasOneTieRule() {
+  for (size_t i = 1; i < std::size(kComparisons); ++i)
+    if (kBufferStages[i] == kBufferStages[i - 1] &&
+        kComparisons[i].ties != kComparisons[i - 1].ties)
+      return false;
+  return true;
+}
+static_assert(aStageHasOneTieRule(),
+              "validation/comparisons.inc: every buffer of a stage must name the same ties");
 
 }  // namespace
 

@@ -12,10 +12,23 @@ namespace voxgi::validation {
 // so a colour channel near zero is judged against the element's magnitude, not its own.
 enum class Metric { exact, max_ulp, max_abs, max_rel };
 
+// Which elements outside the tolerance are ties, a documented near-boundary disagreement that
+// passes (validation/diff.h's classifiers): none; within rounding of a voxel boundary
+// (voxelize); on a triangle edge of the image's pixels (gbuffer) or of the maps' texels (rsm).
+// Every buffer of a stage has the same rule: an element is classified once for all of them.
+enum class Ties { none, voxel_boundaries, pixel_edges, texel_edges };
+
+// How the tolerance widens with the run: f16_steps, for a float buffer of a plan that stores half
+// floats, by 2^-10 per propagation step up to the element's (a half rounding that falls the other
+// way carries on each step; docs/lpv.md, T16).
+enum class Widening { none, f16_steps };
+
 struct Comparison {
   BufferId buffer;
   Metric metric;
   double tolerance;
+  Ties ties;
+  Widening widening;
   std::string_view reason;
   std::string describe() const;  // "exact", "max 3 ULP", "max |gpu-cpu| 1e-06", "max rel 1e-05"
 };

@@ -9,7 +9,7 @@
 
 #include "common/buffer_io.h"
 #include "common/output_file.h"
-#include "common/svo/level_layout.h"
+#include "common/technique.h"
 #include "validation/comparisons.h"
 
 namespace voxgi::validation {
@@ -26,24 +26,30 @@ double ulpDistance(float a, float b) {
   return std::abs(static_cast<double>(ordered(a) - ordered(b)));
 }
 
-// The stages whose backends may legitimately disagree near a decision boundary.
-TieClassifier classifierFor(StageId stage, const StageContext& ctx, const BufferSet& cpu,
+// The tie classifier of a stage's comparisons (one rule for all its buffers).
+TieClassifier classifierFor(const StageSpec& stage, const StageContext& ctx, const BufferSet& cpu,
                             const BufferSet& gpu) {
-  if (stage == StageId::common_voxelize) return voxelizeTies(ctx);
-  if (stage == StageId::common_gbuffer) return gbufferTies(ctx, cpu, gpu);
-  if (stage == StageId::lpv_rsm) return rsmTies(cpu, gpu);
+  switch (comparisonFor(stageBuffers(stage).front()->id).ties) {
+    case Ties::none:
+      return {};
+    case Ties::voxel_boundaries:
+      return voxelizeTies(ctx);
+    case Ties::pixel_edges:
+      return gbufferTies(ctx, cpu, gpu);
+    case Ties::texel_edges:
+      return rsmTies(cpu, gpu);
+  }
   return {};
 }
 
-// The relative tolerance of element e of a buffer under lpv.storage=f16 (specs T16): a rounding
-// that falls the other way on the two backends moves a value by one half ULP (2^-11), and each
-// step can carry that on, so the float buffers of propagate and shade allow 2^-10 per step up
-// to the element's (the accumulated volume and the image: every step).
-double halfStorageTolerance(const BufferSpec& spec, const EffectPlan& plan, const Buffer& b,
-                            size_t e, double tolerance) {
-  const StageId stage = spec.stageSpec().id;
-  if (!plan.on(Effect::f16) || spec.type != ScalarType::f32 ||
-      (stage != StageId::lpv_propagate && stage != StageId::lpv_shade))
+// The relative tolerance of element e of a buffer whose comparison widens with f16 steps, under a
+// plan that stores half floats: a rounding that falls the other way on the two backends moves a
+// value by one half ULP (2^-11), and each step can carry that on, so the buffer allows 2^-10 per
+// step up to the element's (a series buffer's volume k: k + 1 steps; any other: every step).
+double widenedTolerance(const Comparison& cmp, const BufferSpec& spec, const EffectPlan& plan,
+                        const Buffer& b, size_t e) {
+  const double tolerance = cmp.tolerance;
+  if (cmp.widening != Widening::f16_steps || !plan.on(Effect::f16) || spec.type != ScalarType::f32)
     return tolerance;
   const size_t volume = size_t(b.extent.x) * size_t(b.extent.x) * size_t(b.extent.x);
   const double steps =
@@ -56,7 +62,8 @@ double seconds(std::chrono::steady_clock::time_point since) {
 }
 
 void dump(const std::string& dir, const StageSpec& stage, const StageReport& report,
-          const BufferSet& cpu, const BufferSet& gpu, const GridSpec& grid) {
+          const BufferSet& cpu, const BufferSet& gpu, const StageContext& ctx) {
+  const GridSpec& grid = ctx.scene.grid;
   prepareOutputFolder(dir);
   const std::string prefix = dir + "/" + std::string(stage.name);
   std::vector<const Buffer*> cpuList, gpuList, diffList;
@@ -94,8 +101,8 @@ void dump(const std::string& dir, const StageSpec& stage, const StageReport& rep
       if (element < classes.elementCount()) classes.set<int32_t>(element, 0, int32_t(kind));
     diffList.push_back(&classes);
   }
-  // Sparse buffers are placed by the CPU's tree: the GPU's is in the same canonical order.
-  const SparseLayouts layouts = svo::levelLayouts(cpu, grid);
+  // Sparse buffers are placed by the CPU's run: the GPU's is in the same canonical order.
+  const SparseLayouts layouts = ctx.technique.sparseLayouts(cpu, grid);
   writeBuffers(prefix + "_cpu", cpuList, grid, {{"voxgi_backend", "cpu"}}, layouts);
   writeBuffers(prefix + "_gpu", gpuList, grid, {{"voxgi_backend", "gpu"}}, layouts);
   writeBuffers(prefix + "_diff", diffList, grid, {{"voxgi_backend", "gpu minus cpu"}}, layouts);
@@ -181,7 +188,7 @@ StageReport compareStage(const StageSpec& stage, const EffectPlan& plan, const B
       if (cmp.metric == Metric::max_rel) {
         for (int k = 0; k < spec->components; ++k)
           magnitude = std::max({magnitude, std::abs(a.value(e, k)), std::abs(b.value(e, k))});
-        relative = halfStorageTolerance(*spec, plan, a, e, cmp.tolerance);
+        relative = widenedTolerance(cmp, *spec, plan, a, e);
       }
       for (int k = 0; k < spec->components; ++k) {
         const size_t w = e * size_t(spec->components) + size_t(k);
@@ -255,13 +262,13 @@ std::vector<StageReport> diffStages(const StageContext& ctx, StageBackend& cpu, 
       start = std::chrono::steady_clock::now();
       const StageOutputs gpuOutputs = runStage(gpu, *stage, ctx, gpuOut);
       const double gpuSeconds = seconds(start);
-      const TieClassifier classify = classifierFor(stage->id, ctx, cpuOut, gpuOut);
+      const TieClassifier classify = classifierFor(*stage, ctx, cpuOut, gpuOut);
       StageReport report = compareStage(*stage, ctx.plan, cpuOut, gpuOut, classify);
       reportForeignWrites(report, *stage, cpuOutputs, cpu.name());
       reportForeignWrites(report, *stage, gpuOutputs, gpu.name());
       report.cpuSeconds = cpuSeconds;
       report.gpuSeconds = gpuSeconds;
-      if (!dumpDir.empty()) dump(dumpDir, *stage, report, cpuOut, gpuOut, ctx.scene.grid);
+      if (!dumpDir.empty()) dump(dumpDir, *stage, report, cpuOut, gpuOut, ctx);
       reports.push_back(std::move(report));
     } else if (!cpuOutputs.ok()) {
       // A later stage's inputs would be wrong: the CPU reference itself broke the plan.

@@ -60,7 +60,7 @@ SparseLayout brickLayout(const Words& leafTiles) {
 
 }  // namespace
 
-SparseLayouts levelLayouts(const BufferSet& run, const GridSpec& grid) {
+SparseLayouts sparseLayouts(const BufferSet& run, const GridSpec& grid) {
   SparseLayouts out;
   const Buffer* tiles = run.find(BufferId::svo_build_tiles);
   const Buffer* leafTiles = run.find(BufferId::svo_build_leaf_tiles);

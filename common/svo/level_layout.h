@@ -11,6 +11,6 @@ namespace voxgi::svo {
 
 // The layout of every sparse buffer in `run` (a run of the svo technique over `grid`; none if
 // build's buffers are not in it).
-SparseLayouts levelLayouts(const BufferSet& run, const GridSpec& grid);
+SparseLayouts sparseLayouts(const BufferSet& run, const GridSpec& grid);
 
 }  // namespace voxgi::svo

@@ -99,4 +99,9 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   return p;
 }
 
+// No sparse buffers: its dumps are dense grids and images.
+SparseLayouts sparseLayouts(const BufferSet&, const GridSpec&) {
+  return {};
+}
+
 }  // namespace voxgi::vct

@@ -51,7 +51,9 @@ void expectComposedFromTheTerms(const Scene& scene, const Settings& settings, bo
   }
   EXPECT_GT(surfaces, 500u);
   EXPECT_GT(background, 0u);
-  if (ao) EXPECT_GT(occluded, 100u);
+  if (ao) {
+    EXPECT_GT(occluded, 100u);
+  }
 }
 
 TEST(Compose, ColourIsTheMaterialsTimesTheLightTermsPlusEmission) {
