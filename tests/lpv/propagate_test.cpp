@@ -1,5 +1,5 @@
 // The propagation kernel against the analytic properties and golden values of docs/lpv.md
-// (T8-T13 of the extraction of [Martin 2012]): energy conservation, the thesis-literal quarter per
+// (T8-T13 of docs/lpv.md): energy conservation, the thesis-literal quarter per
 // step, the clamp's growth, linearity, the 48 cube symmetries, gather against an independent
 // scatter, the point-light falloff, one-step leakage and occlusion.
 #include <cmath>
@@ -62,7 +62,7 @@ TEST(Propagate, ThesisNormalizationKeepsAQuarterPerStep) {
 }
 
 // T9: clamping each face's intensity at 0 adds energy in HOLPV (3.5449 -> 3.6136 after 16 steps
-// in the extraction's simulation), none in the isotropic LPV-6 case.
+// in an independent simulation (docs/lpv.md, T9)), none in the isotropic LPV-6 case.
 TEST(Propagate, ClampAddsBoundedEnergy) {
   const int n = 35;
   for (const Scheme& s : {Scheme{26, 9}, Scheme{6, 4}}) {

@@ -1,6 +1,7 @@
 // The propagation face tables of common/lpv/propagation_faces.h against the solid angles of
-// ../shared/specs/lpv.md §2.3-2.4, the thesis's two-triangle method and the quadrature moments
-// that make propagation conserve energy (tests T6 and T7 there).
+// docs/lpv.md ("Conventions": the front, side and 26-direction solid angles), the thesis's
+// two-triangle method and the quadrature moments that make propagation conserve energy (T6 and T7
+// of docs/lpv.md).
 #include <cmath>
 #include <numbers>
 

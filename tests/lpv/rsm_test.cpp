@@ -22,9 +22,10 @@ glm::dvec3 fluxSum(const Buffer& flux) {
   return sum;
 }
 
-// T14, the tilt at which Martin's Φ = A_s I_s Ω_s (n_s·l)+ counts the cosine twice (specs A4):
-// a plane that fills a directional light's whole box reflects albedo x irradiance x the box's
-// cross-section at any tilt. With the cosine counted twice the sum would fall as cos(theta).
+// T14, the tilt at which Martin's Φ = A_s I_s Ω_s (n_s·l)+ counts the cosine twice (A4 of
+// docs/lpv.md): a plane that fills a directional light's whole box reflects albedo x irradiance x
+// the box's cross-section at any tilt. With the cosine counted twice the sum would fall as
+// cos(theta).
 TEST(Rsm, TiltedPlaneReflectsTheCosineOnce) {
   const glm::vec3 albedo(0.5f, 0.25f, 1.0f);
   for (double degrees : {0.0, 30.0, 60.0, 75.0}) {

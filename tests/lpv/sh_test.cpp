@@ -1,5 +1,5 @@
 // The SH basis and clamped-cosine lobe of shaders/shared/lpv/sh.h against quadrature and the
-// closed-form values of ../shared/specs/lpv.md §2.2 (tests T1-T3 there).
+// the lobe's closed-form values [Sloan 2008] (T1-T3 of docs/lpv.md).
 #include <cmath>
 #include <numbers>
 

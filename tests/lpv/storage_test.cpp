@@ -1,5 +1,6 @@
-// lpv.storage=f16 (specs T16): the rounding to half precision is the IEEE one (checked against
-// the compiler's _Float16), and propagation in half precision stays within 2^-10 per step of f32.
+// lpv.storage=f16 (T16 of docs/lpv.md): the rounding to half precision is the IEEE one (checked
+// against the compiler's _Float16), and propagation in half precision stays within 2^-10 per step
+// of f32.
 #include <cmath>
 #include <limits>
 #include <random>

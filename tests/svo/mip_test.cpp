@@ -41,7 +41,7 @@ glm::vec4 parentFace(const OneTile& t, FirstStep first, int face) {
   return m.levels[1][size_t(face)];
 }
 
-// [Salm 2015, §4.4.2] golden values (the extraction's S10, S11), in voxgi's face labels: face f is
+// [Salm 2015, §4.4.2] golden values (S10, S11 of docs/svo.md), in voxgi's face labels: face f is
 // what a cone travelling along f sees, Salm's value for the opposite direction.
 TEST(SvoMip, AnisotropicGoldenValues) {
   constexpr int kPx = 0, kMx = 1, kPy = 2, kMy = 3, kPz = 4, kMz = 5;

@@ -204,7 +204,7 @@ TEST(SvoLight, ProgressiveBouncesAreTheExplicitSumAndConverge) {
 // (cone weights summing to 1, common/vct/cone_sets.h) reflects albedo x L, within 0.1 % (the
 // saturation). The NDF-weighted first step [Salm 2015, §4.4.2] weighs each rim child by how its
 // normal faces the cone, which at the cavity's edges and corners (one wall's normal each) dims
-// what a diagonal cone sees: it is held to the extraction's 1 % (it loses 0.9 %).
+// what a diagonal cone sees: it is held to 1 % (S14 of docs/svo.md) (it loses 0.9 %).
 TEST(SvoLight, FurnaceReflectsAlbedoTimesTheShellsRadiance) {
   constexpr int kDepth = 5, kN = 1 << kDepth;
   const glm::ivec3 receiver(16, 16, 16);

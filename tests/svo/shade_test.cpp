@@ -1,5 +1,5 @@
-// Shading's sample of the leaves' gathered light (shaders/shared/svo/shade_kernel.h), S18 of the
-// extraction: a constant field shades constant, the trilinear sample at a leaf centre is that
+// Shading's sample of the leaves' gathered light (shaders/shared/svo/shade_kernel.h), S18 of
+// docs/svo.md: a constant field shades constant, the trilinear sample at a leaf centre is that
 // leaf, and the cubic B-spline reproduces a linear field.
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 //
 // A texel's flux is rho E_perp A_perp: the irradiance on a plane facing the light times the
 // texel's cross-section perpendicular to its ray, so the surface's cosine is in the footprint and
-// not applied again (Martin's Φ = A_s I_s Ω_s (n_s·l)+ counts it twice, specs A4: docs/lpv.md).
+// not applied again (Martin's Φ = A_s I_s Ω_s (n_s·l)+ counts it twice, A4 of docs/lpv.md).
 //
 #ifndef VOXGI_LPV_RSM_KERNEL_H
 #define VOXGI_LPV_RSM_KERNEL_H
