@@ -13,6 +13,20 @@
 namespace voxgi::test {
 namespace {
 
+// Every step of the technique after voxelize (whose own GPU test is tests/gpu_voxelize_test.cpp),
+// GPU against CPU through the registered comparisons: each stage must pass.
+void expectStagesAgree(const Technique& technique, const Scene& scene, const Settings& settings,
+                       gpu::GlPlatform platform) {
+  std::vector<std::string> stages;
+  for (const StageSpec* s : technique.steps())
+    if (s->id != StageId::common_voxelize) stages.push_back(s->qualifiedName());
+  const auto reports = diffTechnique(technique, scene, settings, glContext(platform), stages);
+  std::ostringstream table;
+  validation::printReport(table, reports);
+  ASSERT_EQ(reports.size(), stages.size()) << table.str();
+  for (const auto& r : reports) EXPECT_TRUE(r.pass) << r.stage << "\n" << table.str();
+}
+
 struct Case {
   const char* scene;
   const char* preset;
@@ -28,13 +42,7 @@ TEST_P(GpuStages, AgreeWithCpu) {
   scene.grid.resolution = 32;
   scene.camera.width = scene.camera.height = 64;
   const Settings settings = resolveSettings(vct(), scene.settings, scene.file, c.preset, c.sets);
-  std::vector<std::string> stages;
-  for (const StageSpec* s : vct().steps())
-    if (s->id != StageId::common_voxelize) stages.push_back(s->qualifiedName());
-  const auto reports = diffVct(scene, settings, glContext(c.platform), stages);
-  std::ostringstream table;
-  validation::printReport(table, reports);
-  for (const auto& r : reports) EXPECT_TRUE(r.pass) << r.stage << "\n" << table.str();
+  expectStagesAgree(vct(), scene, settings, c.platform);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -90,13 +98,7 @@ TEST_P(GpuLpvStages, AgreeWithCpu) {
   sets.insert(sets.end(), c.sets.begin(), c.sets.end());
   Settings settings = resolveSettings(technique, scene.settings, scene.file, "default", sets);
   settings.inspect = true;  // as voxgi diff: every step
-  std::vector<std::string> stages;
-  for (const StageSpec* s : technique.steps())
-    if (s->id != StageId::common_voxelize) stages.push_back(s->qualifiedName());
-  const auto reports = diffTechnique(technique, scene, settings, glContext(c.platform), stages);
-  std::ostringstream table;
-  validation::printReport(table, reports);
-  for (const auto& r : reports) EXPECT_TRUE(r.pass) << r.stage << "\n" << table.str();
+  expectStagesAgree(technique, scene, settings, c.platform);
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -120,12 +122,6 @@ INSTANTIATE_TEST_SUITE_P(
              (p.param.spotAndSun ? "_spot_sun" : "");
     });
 
-}  // namespace
-}  // namespace voxgi::test
-
-namespace voxgi::test {
-namespace {
-
 // The sparse voxel octree at 32^3 leaves, every stage, on both platforms: the Cornell box's meshes
 // sampled into points (its area light), the bunny (a point light; normal-weighted first step,
 // one bounce per frame) and the box as a glossy point cloud (discs in the gbuffer, the specular
@@ -148,13 +144,7 @@ TEST_P(GpuSvoStages, AgreeWithCpu) {
   scene.camera.width = scene.camera.height = 64;
   const Technique& svo = findTechnique("svo");
   const Settings settings = resolveSettings(svo, scene.settings, scene.file, "default", c.sets);
-  std::vector<std::string> stages;
-  for (const StageSpec* s : svo.steps()) stages.push_back(s->qualifiedName());
-  const auto reports = diffTechnique(svo, scene, settings, glContext(c.platform), stages);
-  std::ostringstream table;
-  validation::printReport(table, reports);
-  ASSERT_EQ(reports.size(), stages.size());
-  for (const auto& r : reports) EXPECT_TRUE(r.pass) << r.stage << "\n" << table.str();
+  expectStagesAgree(svo, scene, settings, c.platform);
 }
 
 INSTANTIATE_TEST_SUITE_P(

@@ -10,6 +10,22 @@
 namespace voxgi::test {
 namespace {
 
+// Runs every stage of the technique's plan on 1, 2 and 8 threads; the buffers must hash the same.
+void expectBitIdenticalOn1_2_8Threads(const Technique& technique, const Scene& scene,
+                                      const Settings& settings) {
+  const std::string last = technique.steps().back()->qualifiedName();
+  uint64_t reference = 0;
+  for (int threads : {1, 2, 8}) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
+    tbb::task_arena arena(threads);
+    const uint64_t h =
+        arena.execute([&] { return hashBuffers(runCpuUntil(technique, scene, settings, last)); });
+    if (threads == 1) reference = h;
+    EXPECT_EQ(h, reference) << technique.name << " on " << scene.file << ", " << threads
+                            << " threads";
+  }
+}
+
 TEST(StageDeterminism, AllStagesBitIdenticalOn1_2_8Threads) {
   Scene scene = loadScene(sourcePath("scenes/bunny.json"));
   scene.grid.resolution = 32;
@@ -17,16 +33,7 @@ TEST(StageDeterminism, AllStagesBitIdenticalOn1_2_8Threads) {
   Settings settings;
   applyPreset(settings, vct(), "villegas2017");  // soft voxel shadows: the longest marches
   settings.vct.bounceCount = 1;
-  const std::string last = vct().steps().back()->qualifiedName();
-  uint64_t reference = 0;
-  for (int threads : {1, 2, 8}) {
-    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-    tbb::task_arena arena(threads);
-    const uint64_t h =
-        arena.execute([&] { return hashBuffers(runCpuUntil(scene, settings, last)); });
-    if (threads == 1) reference = h;
-    EXPECT_EQ(h, reference) << threads << " threads";
-  }
+  expectBitIdenticalOn1_2_8Threads(vct(), scene, settings);
 }
 
 // holpv with clamp and every step kept, on the Martin-proportioned Cornell box (an area light)
@@ -41,16 +48,7 @@ TEST(StageDeterminism, LpvBitIdenticalOn1_2_8Threads) {
         resolveSettings(holpv, scene.settings, scene.file, "default",
                         {"propagate.steps=5", "propagate.clamp=on", "rsm.resolution=32"});
     settings.inspect = true;
-    const std::string last = holpv.steps().back()->qualifiedName();
-    uint64_t reference = 0;
-    for (int threads : {1, 2, 8}) {
-      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-      tbb::task_arena arena(threads);
-      const uint64_t h =
-          arena.execute([&] { return hashBuffers(runCpuUntil(holpv, scene, settings, last)); });
-      if (threads == 1) reference = h;
-      EXPECT_EQ(h, reference) << file << ", " << threads << " threads";
-    }
+    expectBitIdenticalOn1_2_8Threads(holpv, scene, settings);
   }
 }
 
@@ -64,16 +62,7 @@ TEST(StageDeterminism, SvoBitIdenticalOn1_2_8Threads) {
     const Technique& svo = findTechnique("svo");
     const Settings settings = resolveSettings(svo, scene.settings, scene.file, "default",
                                               {"propagate.frames=2", "svo.first_step=ndf"});
-    const std::string last = svo.steps().back()->qualifiedName();
-    uint64_t reference = 0;
-    for (int threads : {1, 2, 8}) {
-      tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(threads));
-      tbb::task_arena arena(threads);
-      const uint64_t h =
-          arena.execute([&] { return hashBuffers(runCpuUntil(svo, scene, settings, last)); });
-      if (threads == 1) reference = h;
-      EXPECT_EQ(h, reference) << scene.file << ", " << threads << " threads";
-    }
+    expectBitIdenticalOn1_2_8Threads(svo, scene, settings);
   }
 }
 
