@@ -16,12 +16,17 @@
 namespace voxgi::test {
 namespace {
 
+// A 32-pixel path-traced reference of `scene` at `out`, with the path tracer's `options`.
+void renderPathReference(const std::string& scene, const std::string& out,
+                         const std::string& options) {
+  const CommandResult r =
+      voxgi("render " + scene + " --technique path --image 32 " + options + " --out " + out);
+  ASSERT_EQ(r.code, 0) << r.output;
+}
+
 TEST(Cli, StudyWritesEveryCombinationAndThePlot) {
   const std::string dir = testTempDir(), scene = sourcePath("scenes/cornell_box.json");
-  ASSERT_EQ(voxgi("render " + scene + " --technique path --spp 4 --bounces 1 --image 32 --out " +
-                  dir + "ref.exr")
-                .code,
-            0);
+  ASSERT_NO_FATAL_FAILURE(renderPathReference(scene, dir + "ref.exr", "--spp 4 --bounces 1"));
   // Both backends (llvmpipe through OSMesa): the same image, so the same error.
   const CommandResult r =
       voxgi("study " + scene + " --technique vct,path --sweep backend=cpu,gpu --gl osmesa" +
@@ -88,10 +93,7 @@ TEST(Cli, StudyWritesEveryCombinationAndThePlot) {
 // MSE), the figure voxgi bench path reports.
 TEST(Cli, StudySweepsThePathTracersEstimatorsAndReportsEfficiency) {
   const std::string dir = testTempDir(), scene = sourcePath("scenes/cornell_box.json");
-  ASSERT_EQ(voxgi("render " + scene + " --technique path --spp 16 --bounces 0 --image 32 --out " +
-                  dir + "ref.exr")
-                .code,
-            0);
+  ASSERT_NO_FATAL_FAILURE(renderPathReference(scene, dir + "ref.exr", "--spp 16 --bounces 0"));
   const std::string study = "study " + scene + " --technique path --sweep spp=4 --sweep bounces=0" +
                             " --image 32 --repeat 1 --reference " + dir + "ref.exr --csv " + dir +
                             "e.csv ";
@@ -131,10 +133,7 @@ TEST(Cli, StudySweepsThePathTracersEstimatorsAndReportsEfficiency) {
 // holpv's runs and leaves vct's alone.
 TEST(Cli, StudySweepsOnlyTheTechniquesAKeyBelongsTo) {
   const std::string dir = testTempDir(), scene = sourcePath("scenes/cornell_box_lpv.json");
-  ASSERT_EQ(voxgi("render " + scene + " --technique path --spp 2 --bounces 0 --image 32 --out " +
-                  dir + "ref.exr")
-                .code,
-            0);
+  ASSERT_NO_FATAL_FAILURE(renderPathReference(scene, dir + "ref.exr", "--spp 2 --bounces 0"));
   const CommandResult r =
       voxgi("study " + scene + " --technique vct,lpv,holpv --sweep propagate.steps=2,3" +
             " --sweep resolution=16 --image 32 --repeat 1 --reference " + dir + "ref.exr --csv " +
@@ -154,10 +153,8 @@ TEST(Cli, StudySweepsOnlyTheTechniquesAKeyBelongsTo) {
 // measures each against the reference's, and study --terms adds their columns.
 TEST(Cli, TermsAreWrittenComparedAndStudied) {
   const std::string dir = testTempDir(), scene = sourcePath("scenes/cornell_box.json");
-  ASSERT_EQ(voxgi("render " + scene + " --technique path --spp 4 --bounces 1 --image 32 --terms" +
-                  " --out " + dir + "ref.exr")
-                .code,
-            0);
+  ASSERT_NO_FATAL_FAILURE(
+      renderPathReference(scene, dir + "ref.exr", "--spp 4 --bounces 1 --terms"));
   // The default lights the box's emitter as an area light: its light is in the direct term. With
   // emitters.mode=voxels the cones gather it, so the direct term is black and the indirect
   // diffuse term holds it besides the bounce.
