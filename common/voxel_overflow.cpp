@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/error.h"
+#include "common/fnv1a.h"
 #include "common/voxel_walk.h"
 
 namespace voxgi {
@@ -18,12 +19,7 @@ struct Key {
 };
 
 struct KeyHash {
-  size_t operator()(const Key& k) const {
-    uint64_t h = 1469598103934665603ull;  // FNV-1a over the bytes
-    const auto* bytes = reinterpret_cast<const unsigned char*>(k.v);
-    for (size_t i = 0; i < sizeof k.v; ++i) h = (h ^ bytes[i]) * 1099511628211ull;
-    return size_t(h);
-  }
+  size_t operator()(const Key& k) const { return size_t(fnv1a(k.v, sizeof k.v)); }
 };
 
 Key keyOf(const shared::VoxelTriangle& t) {

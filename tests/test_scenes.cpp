@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/fnv1a.h"
 #include "common/pipeline.h"
 #include "common/scene_load.h"
 #include "common/surface_sampling.h"
@@ -137,14 +138,11 @@ glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v) {
 }
 
 uint64_t hashBuffers(const BufferSet& buffers) {
-  uint64_t h = 1469598103934665603ull;
-  auto mix = [&](uint64_t x) {
-    h ^= x;
-    h *= 1099511628211ull;
-  };
+  uint64_t h = kFnv1aBasis;
   for (const auto& [id, b] : buffers) {
-    for (char c : bufferSpec(id).qualifiedName()) mix(static_cast<unsigned char>(c));
-    for (uint32_t w : b.words) mix(w);
+    const std::string name = bufferSpec(id).qualifiedName();
+    h = fnv1a(b.words.data(), b.words.size() * sizeof(uint32_t),
+              fnv1a(name.data(), name.size(), h));
   }
   return h;
 }

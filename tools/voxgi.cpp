@@ -21,6 +21,7 @@
 
 #include "common/buffer_io.h"
 #include "common/error.h"
+#include "common/fnv1a.h"
 #include "common/image_io.h"
 #include "common/light_terms.h"
 #include "common/output_file.h"
@@ -266,18 +267,6 @@ int cmdPlan(const Common& c) {
   return kExitOk;
 }
 
-// FNV-1a over a buffer's words, little-endian bytes: a fingerprint of its contents that does not
-// depend on the file formats (a .vdb file carries a random UUID).
-uint64_t wordsChecksum(const Words& words) {
-  uint64_t h = 0xcbf29ce484222325ull;
-  for (const uint32_t w : words)
-    for (int byte = 0; byte < 4; ++byte) {
-      h ^= (w >> (8 * byte)) & 0xffu;
-      h *= 0x100000001b3ull;
-    }
-  return h;
-}
-
 int cmdDump(const Common& c, const std::string& stage, const std::string& dir, bool checksums) {
   if (dir.empty() && !checksums)
     throw InputError("--out", "", "dump needs an output folder (--out) or --checksums");
@@ -300,8 +289,9 @@ int cmdDump(const Common& c, const std::string& stage, const std::string& dir, b
     if (checksums)
       for (const Buffer* b : buffersOf(run.buffers, *s, true))
         std::cout << "checksum " << b->spec->qualifiedName() << " " << b->words.size() << " "
-                  << std::hex << std::setw(16) << std::setfill('0') << wordsChecksum(b->words)
-                  << std::dec << std::setfill(' ') << "\n";
+                  << std::hex << std::setw(16) << std::setfill('0')
+                  << fnv1a(b->words.data(), b->words.size() * sizeof(uint32_t)) << std::dec
+                  << std::setfill(' ') << "\n";
     if (dir.empty()) continue;
     for (const std::string& path :
          writeBuffers(dir + "/" + std::string(s->name), buffersOf(run.buffers, *s, true),
