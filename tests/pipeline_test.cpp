@@ -1,11 +1,14 @@
 // The stage runner (common/pipeline.h): which stages run, what a stage must leave behind, buffers
 // kept apart by stage, and --stage names.
+#include <set>
+
 #include <gtest/gtest.h>
 
 #include "common/error.h"
 #include "common/pipeline.h"
 #include "common/scene_load.h"
 #include "cpu/backend.h"
+#include "tests/technique_cases.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {
@@ -108,6 +111,26 @@ TEST(Pipeline, StageNamesResolveWithinTheTechnique) {
   EXPECT_THROW(resolveStage(vct(), "lpv/trace_cones"), InputError);
   EXPECT_THROW(resolveStage(vct(), "nonexistent"), InputError);
   EXPECT_THROW(findTechnique("nonexistent"), InputError);
+}
+
+// The cases a technique declares for the generic tests (tests/cases/<technique>.json) run every one
+// of its stages between them, so the GPU diff and the determinism test reach each stage.
+TEST(Pipeline, EveryStageRunsInSomeDeclaredCase) {
+  for (const Technique& technique : techniques()) {
+    for (const char* kind : {"determinism", "gpu"}) {
+      std::set<const StageSpec*> planned;
+      for (const TechniqueCase& c : techniqueCases(technique, kind)) {
+        ASSERT_TRUE(c.error.empty()) << c.error;
+        const Scene scene = caseScene(c);
+        const EffectPlan plan = technique.plan(scene, caseSettings(c, scene));
+        for (const StageSpec* s : technique.steps())
+          if (plan.runs(s->id)) planned.insert(s);
+      }
+      for (const StageSpec* s : technique.steps())
+        EXPECT_TRUE(planned.contains(s))
+            << technique.name << "'s " << kind << " cases never run " << s->qualifiedName();
+    }
+  }
 }
 
 }  // namespace

@@ -107,14 +107,18 @@ const Technique& vct() {
 }
 
 Scene cornellBoxCloud(size_t points, bool glossy) {
-  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
+  return sampledCloudScene(sourcePath("scenes/cornell_box.json"), points, glossy);
+}
+
+Scene sampledCloudScene(const std::string& file, size_t points, bool glossy) {
+  Scene scene = loadScene(file);
   SurfaceSampling sampling;
   sampling.points = points;
   sampling.noise = 0.1;
   sampling.gradientAxis = 1;
   sampling.gradientRatio = 0.5;
   PointCloud cloud = sampleSurfaces(scene, sampling);
-  cloud.name = "the sampled Cornell box";
+  cloud.name = "the sampled " + scene.file;
   Material m;
   m.name = "cloud";
   if (glossy) {

@@ -46,6 +46,9 @@ bool planItemIn(const EffectPlan& plan, const std::string& name);
 // half as dense at the top, as the shipped cornell_box_cloud.json's), its light a mesh; the cloud
 // carries the walls' colours and a glossy material of its own when `glossy`.
 Scene cornellBoxCloud(size_t points, bool glossy = false);
+// The scene file's non-emitting meshes replaced by `points` points sampled from them, as
+// cornellBoxCloud's.
+Scene sampledCloudScene(const std::string& file, size_t points, bool glossy);
 // Voxel v's components of a volume buffer.
 glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v);
 // FNV-1a over every buffer's qualified name and words.

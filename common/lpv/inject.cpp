@@ -113,8 +113,10 @@ Injection prepareInjection(const StageContext& ctx) {
         if (i + j + 1 < e.m) add((double(i) + 2.0 / 3.0) / m, (double(j) + 2.0 / 3.0) / m);
       }
   }
-  out.params.shape = glm::ivec4(ctx.scene.grid.resolution, s.coefficients(), int(out.vpls.size()),
-                                s.vplShift == LpvToggle::on ? 1 : 0);
+  out.params.resolution = ctx.scene.grid.resolution;
+  out.params.coefficients = s.coefficients();
+  out.params.vplCount = int(out.vpls.size());
+  out.params.shiftRsmVpls = s.vplShift == LpvToggle::on ? 1 : 0;
   out.params.scale = found.scale;
   return out;
 }

@@ -60,21 +60,26 @@ Propagation preparePropagation(const LpvSettings& s, int resolution) {
     out.entries.push_back(e);
   }
   out.steps = propagationSteps(s, resolution);
-  out.params.shape = glm::ivec4(resolution, s.coefficients(), int(out.entries.size()), 0);
-  out.params.options = glm::ivec4(s.clampNegative == LpvToggle::on ? 1 : 0, 0, 0, 0);
+  out.params.resolution = resolution;
+  out.params.coefficients = s.coefficients();
+  out.params.entryCount = int(out.entries.size());
+  out.params.clampNegative = s.clampNegative == LpvToggle::on ? 1 : 0;
   return out;
 }
 
 void prepareStorage(const LpvSettings& s, shared::PropagateParams& params,
                     std::vector<float>& volume) {
-  params.storage = glm::vec4(0.0f, 1.0f, 1.0f, 0.0f);
+  params.halfPrecision = 0;
+  params.storageScale = params.inverseStorageScale = 1.0f;
   if (s.storage == LpvStorage::f32) return;
   float largest = 0.0f;
   for (float v : volume) largest = std::max(largest, std::abs(v));
   int exponent = 0;
   if (largest > 0.0f) std::frexp(largest, &exponent);  // largest < 2^exponent
   const float scale = std::ldexp(1.0f, exponent);
-  params.storage = glm::vec4(1.0f, scale, 1.0f / scale, 0.0f);
+  params.halfPrecision = 1;
+  params.storageScale = scale;
+  params.inverseStorageScale = 1.0f / scale;
   for (float& v : volume) v = shared::storedValue(v, params);
 }
 
@@ -84,8 +89,11 @@ shared::ShadeParams shadeParams(const StageContext& ctx) {
   const int lights = ctx.plan.runs(StageId::lpv_rsm)
                          ? int(sceneLights(ctx.scene, ctx.settings.vct.emitters).size())
                          : 0;
-  p.shape = glm::ivec4(ctx.scene.grid.resolution, ctx.settings.lpv.coefficients(), lights, 0);
-  p.scale = glm::vec4(float(1.0 / (s * s)), ctx.settings.lpv.shadeOffset, 0.0f, 0.0f);
+  p.resolution = ctx.scene.grid.resolution;
+  p.coefficients = ctx.settings.lpv.coefficients();
+  p.lightCount = lights;
+  p.inverseCellArea = float(1.0 / (s * s));
+  p.offsetCells = ctx.settings.lpv.shadeOffset;
   p.camera = glm::vec4(glm::vec3(ctx.scene.grid.toVoxel(ctx.scene.camera.position)), 0.0f);
   return p;
 }

@@ -11,7 +11,7 @@
 namespace voxgi::lpv {
 
 struct Propagation {
-  shared::PropagateParams params{};  // shape.w (occlusion) is set per step by the stages
+  shared::PropagateParams params{};  // occlude is set per step by the stages
   std::vector<shared::PropagationEntry> entries;
   int steps = 0;
 };

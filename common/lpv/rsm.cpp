@@ -117,9 +117,11 @@ RsmSetup prepareRsm(const Scene& scene, const Settings& s) {
           view(centre - d * (reach + 1.0), false, d, 0.5 * std::sqrt(3.0) * n, light, first, 1));
     }
   }
-  out.params.shape =
-      glm::ivec4(s.lpv.rsmResolution, int(out.views.size()), int(out.lights.size()), 0);
-  out.params.scale = glm::vec4(static_cast<float>(grid.voxelSize()), s.lpv.rsmBias, 0.0f, 0.0f);
+  out.params.resolution = s.lpv.rsmResolution;
+  out.params.viewCount = int(out.views.size());
+  out.params.lightCount = int(out.lights.size());
+  out.params.voxelSize = static_cast<float>(grid.voxelSize());
+  out.params.biasTexels = s.lpv.rsmBias;
   return out;
 }
 
@@ -151,7 +153,7 @@ glm::dvec3 rsmFluxBound(const Scene& scene, const RsmSetup& rsm) {
   const GridSpec& grid = scene.grid;
   dvec3 albedo(0.0);
   for (const Material& m : scene.materials) albedo = glm::max(albedo, dvec3(m.albedo));
-  const int resolution = rsm.params.shape.x;
+  const int resolution = rsm.params.resolution;
   const double s = grid.voxelSize();
   dvec3 total(0.0);
   double tanHalf = -1.0, solidAngle = 0.0;  // the last perspective view's (cube faces share it)

@@ -19,7 +19,7 @@ void lpv::inject(const StageContext& ctx, BufferSet& buffers) {
   const voxgi::lpv::ShBuffers sh = voxgi::lpv::shBuffers(ctx.settings.lpv);
   checkStageMemory(ctx, StageId::lpv_inject);
   const voxgi::lpv::Injection injection = voxgi::lpv::prepareInjection(ctx);
-  const int n = ctx.scene.grid.resolution, coefficients = injection.params.shape.y;
+  const int n = ctx.scene.grid.resolution, coefficients = injection.params.coefficients;
   Buffer sums(sh.intensitySum, glm::ivec3(n));
   const auto add = [&](const shared::Vpl& vpl) {
     const glm::ivec3 cell = shared::vplCell(vpl);
@@ -44,8 +44,8 @@ void lpv::inject(const StageContext& ctx, BufferSet& buffers) {
     const Buffer &flux = buffers.at(BufferId::lpv_rsm_flux),
                  &normal = buffers.at(BufferId::lpv_rsm_normal),
                  &depth = buffers.at(BufferId::lpv_rsm_depth);
-    const int r = rsm.params.shape.x;
-    const bool shift = injection.params.shape.w == 1;
+    const int r = rsm.params.resolution;
+    const bool shift = injection.params.shiftRsmVpls == 1;
     parallelFor(0, flux.extent.y, [&](int row) {
       const shared::RsmView& view = rsm.views[size_t(row / r)];
       for (int x = 0; x < r; ++x) {

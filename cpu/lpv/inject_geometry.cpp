@@ -38,7 +38,7 @@ Buffer rsmBlockers(const StageContext& ctx, const BufferSet& buffers) {
   if (!ctx.plan.runs(StageId::lpv_rsm)) return sums;
   const Buffer &depth = buffers.at(BufferId::lpv_rsm_depth),
                &normal = buffers.at(BufferId::lpv_rsm_normal);
-  const int r = rsm.params.shape.x;
+  const int r = rsm.params.resolution;
   std::vector<uint32_t> scratch(sums.words.size());
   for (size_t first = 0; first < rsm.views.size(); first += size_t(rsm.views[first].info.z)) {
     std::fill(scratch.begin(), scratch.end(), 0u);

@@ -75,7 +75,7 @@ void lpv::propagate(const StageContext& ctx, BufferSet& buffers) {
 
   for (int step = 1; step <= setup.steps; ++step) {
     const bool occlude = voxgi::lpv::occludedStep(s, step);
-    setup.params.shape.w = occlude ? 1 : 0;
+    setup.params.occlude = occlude ? 1 : 0;
     const Buffer* blocking =
         occlude ? &buffers.at(BufferId::lpv_inject_geometry_blocking) : nullptr;
     const auto run = [&](const auto& volumes) {

@@ -18,8 +18,8 @@ void lpv::rsm(const StageContext& ctx, BufferSet& buffers) {
   RayScene rays;
   rays.addTriangleSoup(0, g.vertices);
   rays.commit();
-  const int r = setup.params.shape.x, views = setup.params.shape.y;
-  const float voxelSize = setup.params.scale.x;
+  const int r = setup.params.resolution, views = setup.params.viewCount;
+  const float voxelSize = setup.params.voxelSize;
   const glm::ivec3 extent(r, r * views, 1);
   using enum BufferId;
   Buffer flux(lpv_rsm_flux, extent), normal(lpv_rsm_normal, extent), depth(lpv_rsm_depth, extent),

@@ -32,7 +32,7 @@ struct ShadeVolumes {
   shared::LightData lightAt(int i) const { return lights[size_t(i)]; }
   shared::RsmView rsmViewAt(int i) const { return rsm.views[size_t(i)]; }
   float rsmDepthAt(int view, glm::ivec2 texel) const {
-    const auto r = size_t(rsm.params.shape.x);
+    const auto r = size_t(rsm.params.resolution);
     return depth->get<float>((size_t(view) * r + size_t(texel.y)) * r + size_t(texel.x), 0);
   }
 };

@@ -44,7 +44,7 @@ void requireMapSize(const Gl& gl, const StageContext& ctx, int resolution, int v
 void lpv::rsm(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   const Gl& gl = beginStage(context, ctx, StageId::lpv_rsm);
   const voxgi::lpv::RsmSetup setup = voxgi::lpv::prepareRsm(ctx.scene, ctx.settings);
-  const int r = setup.params.shape.x, views = setup.params.shape.y;
+  const int r = setup.params.resolution, views = setup.params.viewCount;
   requireMapSize(gl, ctx, r, views);
   const CameraGeometry g = prepareCameraGeometry(ctx.scene);
   const std::vector<shared::LightData>& lights = setup.lights;

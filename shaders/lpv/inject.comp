@@ -26,19 +26,19 @@ void main() {
   int v = int(gl_GlobalInvocationID.x + gl_NumWorkGroups.x * 64u * gl_GlobalInvocationID.y);
   Vpl vpl;
   if (uSource == 0) {
-    if (v >= params.shape.z) return;
+    if (v >= params.vplCount) return;
     vpl = vpls[v];
   } else {
-    int r = rsm.shape.x;
-    if (v >= r * r * rsm.shape.y) return;
+    int r = rsm.resolution;
+    if (v >= r * r * rsm.viewCount) return;
     float depth = depths[v];
     if (depth == 0.0f) return;
     int row = v / r;
     vec3 n = vec3(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]);
     vec3 f = vec3(flux[3 * v], flux[3 * v + 1], flux[3 * v + 2]);
-    vpl = rsmVpl(views[row / r], ivec2(v - row * r, row % r), r, depth, n, f, params.shape.w == 1);
+    vpl = rsmVpl(views[row / r], ivec2(v - row * r, row % r), r, depth, n, f, params.shiftRsmVpls == 1);
   }
-  int n = params.shape.x, coefficients = params.shape.y;
+  int n = params.resolution, coefficients = params.coefficients;
   ivec3 cell = vplCell(vpl);
   if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, ivec3(n)))) return;
   int first = (cell.x + n * (cell.y + n * cell.z)) * 3 * coefficients;

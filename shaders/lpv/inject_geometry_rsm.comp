@@ -17,7 +17,7 @@ layout(std430, binding = 2) readonly buffer Normal { float normals[]; };
 layout(std430, binding = 3) buffer Scratch { int scratch[]; };
 
 void main() {
-  int r = rsm.shape.x;
+  int r = rsm.resolution;
   int local = int(gl_GlobalInvocationID.x + gl_NumWorkGroups.x * 64u * gl_GlobalInvocationID.y);
   if (local >= r * r * uViewCount) return;
   int t = uFirstView * r * r + local;

@@ -16,22 +16,22 @@ layout(std430, binding = 4) readonly buffer Blocking { vec4 blocking[]; };
 layout(location = 0) uniform int uOcclude;
 
 int cellIndex(ivec3 v) {
-  int n = params.shape.x;
+  int n = params.resolution;
   return v.x + n * (v.y + n * v.z);
 }
 PropagationEntry entryAt(int e) { return entries[e]; }
-int coefficientCount() { return params.shape.y; }
+int coefficientCount() { return params.coefficients; }
 int colourCount() { return 3; }
 float intensityAt(ivec3 cell, int word) {
-  return previous[cellIndex(cell) * 3 * params.shape.y + word];
+  return previous[cellIndex(cell) * 3 * params.coefficients + word];
 }
 vec4 blockingAt(ivec3 g) {
-  int n = params.shape.x;
+  int n = params.resolution;
   if (any(lessThan(g, ivec3(0))) || any(greaterThanEqual(g, ivec3(n)))) return vec4(0.0f);
   return blocking[cellIndex(g)];
 }
 void storeIntensity(ivec3 cell, int word, float value) {
-  int w = cellIndex(cell) * 3 * params.shape.y + word;
+  int w = cellIndex(cell) * 3 * params.coefficients + word;
   next[w] = value;
   accumulated[w] = accumulatedValue(accumulated[w], value, params);
 }
@@ -40,8 +40,8 @@ void storeIntensity(ivec3 cell, int word, float value) {
 
 void main() {
   ivec3 x = ivec3(gl_GlobalInvocationID);
-  if (any(greaterThanEqual(x, ivec3(params.shape.x)))) return;
+  if (any(greaterThanEqual(x, ivec3(params.resolution)))) return;
   PropagateParams p = params;
-  p.shape.w = uOcclude;
+  p.occlude = uOcclude;
   propagateCell(x, p);
 }

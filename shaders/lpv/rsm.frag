@@ -22,8 +22,8 @@ layout(location = 3) out uint outPrimitiveId;
 void main() {
   SurfaceTriangle t = triangles[gl_PrimitiveID];
   RsmView v = views[uView];
-  int resolution = params.shape.x;
-  float voxelSize = params.scale.x;
+  int resolution = params.resolution;
+  float voxelSize = params.voxelSize;
   vec3 origin, dir;
   rsmTexelRay(v, ivec2(gl_FragCoord.xy), resolution, origin, dir);
   precise float depth = dot3(vPosition - vec3(v.origin), vec3(v.forward));

@@ -26,14 +26,14 @@ layout(std430, binding = 9) writeonly buffer DirectDiffuse { float directDiffuse
 layout(std430, binding = 10) writeonly buffer DirectSpecular { float directSpecular[]; };
 
 float accumulatedAt(ivec3 cell, int word) {
-  int n = params.shape.x;
+  int n = params.resolution;
   if (any(lessThan(cell, ivec3(0))) || any(greaterThanEqual(cell, ivec3(n)))) return 0.0f;
-  return accumulated[(cell.x + n * (cell.y + n * cell.z)) * 3 * params.shape.y + word];
+  return accumulated[(cell.x + n * (cell.y + n * cell.z)) * 3 * params.coefficients + word];
 }
 LightData lightAt(int i) { return lights[i]; }
 RsmView rsmViewAt(int i) { return views[i]; }
 float rsmDepthAt(int view, ivec2 texel) {
-  int r = rsm.shape.x;
+  int r = rsm.resolution;
   return depths[(view * r + texel.y) * r + texel.x];
 }
 

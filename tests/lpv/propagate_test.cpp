@@ -249,8 +249,9 @@ double irradianceFacingCentre(const ShGrid& accumulated, glm::ivec3 cell) {
     float accumulatedAt(glm::ivec3 c, int word) const { return g.words[g.first(c) + size_t(word)]; }
   };
   shared::ShadeParams p{};
-  p.shape = glm::ivec4(accumulated.n, accumulated.coefficients, 0, 0);
-  p.scale = glm::vec4(1.0f, 0.0f, 0.0f, 0.0f);  // 1 / s^2 = 1, no shade.offset
+  p.resolution = accumulated.n;
+  p.coefficients = accumulated.coefficients;
+  p.inverseCellArea = 1.0f;  // 1 / s^2 = 1, no shade.offset
   const glm::vec3 toCentre = glm::normalize(glm::vec3(glm::ivec3(accumulated.n / 2) - cell));
   return M_PI *
          double(shared::lpvIrradiance(Volumes{accumulated}, glm::vec3(cell) + 0.5f, toCentre, p).x);

@@ -52,7 +52,7 @@ ShGrid propagateStep(const ShGrid& from, const lpv::Propagation& setup,
                      int colours) {
   ShGrid to(from.n, from.coefficients);
   shared::PropagateParams params = setup.params;
-  params.shape.w = blocking != nullptr ? 1 : 0;
+  params.occlude = blocking != nullptr ? 1 : 0;
   const int n = from.n, c = n / 2;
   const int lo = std::max(0, c - reach), hi = std::min(n - 1, c + reach);
   const auto run = [&](const auto& volumes) {

@@ -26,8 +26,9 @@ struct Volumes {
 // E (not / pi) of colour 0 at `p` (voxel-local) with normal n, cell size s.
 double irradiance(const ShGrid& g, glm::vec3 p, glm::vec3 n, double s) {
   shared::ShadeParams params{};
-  params.shape = glm::ivec4(g.n, g.coefficients, 0, 0);
-  params.scale = glm::vec4(float(1.0 / (s * s)), 0.0f, 0.0f, 0.0f);
+  params.resolution = g.n;
+  params.coefficients = g.coefficients;
+  params.inverseCellArea = float(1.0 / (s * s));
   return M_PI * double(shared::lpvIrradiance(Volumes{g}, p, n, params).x);
 }
 

@@ -16,9 +16,12 @@ struct Vpl {
 
 // inject's block: the VPLs follow it.
 struct InjectParams {
-  ivec4 shape;  // x: grid resolution N; y: SH coefficients per colour C; z: VPL count; w: 1 to
-                // shift the RSM texels' VPLs (inject.shift; the emitters' are shifted on the host)
-  vec4 scale;   // rgb: fixed-point units per unit of intensity (powers of two); w: 0
+  int resolution;    // the grid's N
+  int coefficients;  // SH coefficients per colour C
+  int vplCount;
+  int shiftRsmVpls;  // 1 to shift the RSM texels' VPLs (inject.shift; the emitters' are shifted on
+                     // the host)
+  vec4 scale;        // rgb: fixed-point units per unit of intensity (powers of two); w: 0
 };
 
 // One face entry of a propagation step (common/lpv/propagate.cpp), for a destination cell
@@ -33,10 +36,14 @@ struct PropagationEntry {
 
 // propagate's block: the entries follow it.
 struct PropagateParams {
-  ivec4 shape;    // x: N; y: C; z: entry count; w: 1 to occlude (from the second step on)
-  ivec4 options;  // x: 1 to clamp each face's intensity at 0; yzw: 0
-  vec4 storage;   // x: 1 to round stored values to half precision (lpv.storage=f16); y: the
-                  // power-of-two scale they are stored in units of; z: 1 / y; w: 0
+  int resolution;    // N
+  int coefficients;  // C
+  int entryCount;
+  int occlude;                // 1 to occlude (from the second step on)
+  int clampNegative;          // 1 to clamp each face's intensity at 0
+  int halfPrecision;          // 1 to round stored values to half precision (lpv.storage=f16)
+  float storageScale;         // the power-of-two scale they are stored in units of
+  float inverseStorageScale;  // 1 / storageScale
 };
 
 // One view of a reflective shadow map (common/lpv/rsm.cpp): a cube face of a point light (or of a
@@ -53,14 +60,26 @@ struct RsmView {
 
 // The rsm stage's block: the views follow it.
 struct RsmParams {
-  ivec4 shape;  // x: rsm.resolution R; y: view count; z: light count; w: 0
-  vec4 scale;   // x: voxel size (world units); y: rsm.bias in texels; zw: 0
+  int resolution;  // rsm.resolution R
+  int viewCount;
+  int lightCount;
+  int pad0;
+  float voxelSize;   // world units
+  float biasTexels;  // rsm.bias
+  float pad1;
+  float pad2;
 };
 
 // shade's uniforms.
 struct ShadeParams {
-  ivec4 shape;  // x: N; y: C; z: analytic light count (direct light from the RSM); w: 0
-  vec4 scale;   // x: 1 / (cell size^2) (world units); y: shade.offset in cells; zw: 0
+  int resolution;    // N
+  int coefficients;  // C
+  int lightCount;    // analytic lights (direct light from the RSM)
+  int pad0;
+  float inverseCellArea;  // 1 / (cell size^2) (world units)
+  float offsetCells;      // shade.offset
+  float pad1;
+  float pad2;
   vec4 camera;  // xyz: voxel-local camera position (the specular lobe's view direction)
 };
 

@@ -7,7 +7,7 @@
 //
 // Reads FETCH(entryAt)(e) -> PropagationEntry, FETCH(intensityAt)(cell, word) -> float (the
 // previous step; word = colour * C + i), FETCH(blockingAt)(g) -> vec4 (0 outside the grid), and
-// FETCH(coefficientCount)() -> C (p.shape.y; a constant in the CPU's accessor, so the compiler
+// FETCH(coefficientCount)() -> C (p.coefficients; a constant in the CPU's accessor, so the compiler
 // unrolls the coefficient loops there — the same operations in the same order) and
 // FETCH(colourCount)() -> 3 (the kernel tests propagate one colour).
 #ifndef VOXGI_LPV_PROPAGATE_KERNEL_H
@@ -46,13 +46,13 @@ VOLUME_FN vec4 blockingBetween(VOLUMES_IN ivec3 x, ivec3 o) {
 
 // Writes the step's value of cell x, as stored, through FETCH(storeIntensity)(x, word, value).
 VOLUME_FN void propagateCell(VOLUMES_IN ivec3 x, PropagateParams p) {
-  int n = p.shape.x, coefficients = FETCH(coefficientCount)(), colours = FETCH(colourCount)();
-  bool occlude = p.shape.w != 0, clampNegative = p.options.x != 0;
+  int n = p.resolution, coefficients = FETCH(coefficientCount)(), colours = FETCH(colourCount)();
+  bool occlude = p.occlude != 0, clampNegative = p.clampNegative != 0;
   float dst[27];
   for (int w = 0; w < 27; ++w) dst[w] = 0.0f;
   ivec3 blockedFor = ivec3(0);  // the offset `blocking` was fetched for (0: none yet)
   vec4 blocking = vec4(0.0f);
-  for (int e = 0; e < p.shape.z; ++e) {
+  for (int e = 0; e < p.entryCount; ++e) {
     PropagationEntry f = FETCH(entryAt)(e);
     ivec3 o = ivec3(f.offset);
     ivec3 src = x - o;

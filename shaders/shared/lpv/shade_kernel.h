@@ -18,14 +18,14 @@
 VOXGI_NAMESPACE_BEGIN
 
 // Irradiance / pi at `position` (voxel-local) on a surface of unit normal `normal`, sampled
-// p.scale.y cells along the normal (shade.offset: away from the surface's own cell, whose light
+// p.offsetCells cells along the normal (shade.offset: away from the surface's own cell, whose light
 // and blockers it shares).
 VOLUME_FN vec3 lpvIrradiance(VOLUMES_IN vec3 position, vec3 normal, ShadeParams p) {
-  int coefficients = p.shape.y;
+  int coefficients = p.coefficients;
   float lobe[9];
   for (int i = 0; i < coefficients; ++i) lobe[i] = shCosineLobe(i, -normal);
   // shade.offset cells along the normal, then cell centres at i + 1/2
-  precise vec3 t = (position + normal * p.scale.y) - vec3(0.5f);
+  precise vec3 t = (position + normal * p.offsetCells) - vec3(0.5f);
   ivec3 base = ivec3(floor(t));
   precise vec3 f = t - vec3(base);
   precise vec3 sum = vec3(0.0f);
@@ -45,7 +45,7 @@ VOLUME_FN vec3 lpvIrradiance(VOLUMES_IN vec3 position, vec3 normal, ShadeParams 
     }
     sum = sum + e * weight;
   }
-  precise vec3 irradiance = sum * p.scale.x;
+  precise vec3 irradiance = sum * p.inverseCellArea;
   return irradiance * 0.318309886f;  // / pi
 }
 
@@ -55,11 +55,11 @@ VOLUME_FN vec3 lpvIrradiance(VOLUMES_IN vec3 position, vec3 normal, ShadeParams 
 // cosine, since a surface at angle theta spans footprint x tan(theta) of depth within one texel.
 // A point outside every view (beside a spot's cone, outside a directional light's box) is lit.
 VOLUME_FN float rsmVisibility(VOLUMES_IN RsmParams rp, int light, vec3 p, float cosine) {
-  int resolution = rp.shape.x;
+  int resolution = rp.resolution;
   int best = -1;
   vec3 at = vec3(0.0f);
   float bestAxis = 0.0f;
-  for (int i = 0; i < rp.shape.y; ++i) {
+  for (int i = 0; i < rp.viewCount; ++i) {
     RsmView v = FETCH(rsmViewAt)(i);
     if (v.info.x != light) continue;
     vec3 q = rsmProject(v, p);
@@ -80,11 +80,11 @@ VOLUME_FN float rsmVisibility(VOLUMES_IN RsmParams rp, int light, vec3 p, float 
   if (depth == 0.0f) return 1.0f;
   precise float footprint =
       2.0f * v.forward.w / float(resolution) * (v.origin.w == 1.0f ? at.z : 1.0f);
-  precise float bias = rp.scale.y * footprint / max(cosine, 0.1f);
+  precise float bias = rp.biasTexels * footprint / max(cosine, 0.1f);
   return at.z <= depth + bias ? 1.0f : 0.0f;
 }
 
-// Direct light at p (normal n facing the camera) from the p.shape.z lights of the RSM (analytic
+// Direct light at p (normal n facing the camera) from the p.lightCount lights of the RSM (analytic
 // lights and emissive triangles), as trace_cones computes it but with the shadow map's visibility
 // instead of a shadow cone: diffuse gets the sum of E cos V / pi, specular the sum of E cos V
 // times the Phong lobe about the mirror direction. A triangle's E cos is pi L F by Lambert's
@@ -96,7 +96,7 @@ VOLUME_FN void lpvDirect(VOLUMES_IN vec3 position, vec3 normal, float shininess,
   specular = vec3(0.0f);
   precise vec3 view = normalize3(vec3(p.camera) - position);
   precise vec3 mirror = normal * (2.0f * dot3(normal, view)) - view;
-  for (int i = 0; i < p.shape.z; ++i) {
+  for (int i = 0; i < p.lightCount; ++i) {
     LightData l = FETCH(lightAt)(i);
     vec3 toLight;
     float distance;
@@ -110,7 +110,7 @@ VOLUME_FN void lpvDirect(VOLUMES_IN vec3 position, vec3 normal, float shininess,
       cosine = dot3(normal, toLight);
       weight = 1.0f;
     } else {
-      e = lightIrradiance(l, position, rp.scale.x, toLight, distance);
+      e = lightIrradiance(l, position, rp.voxelSize, toLight, distance);
       cosine = dot3(normal, toLight);
       weight = cosine;
     }

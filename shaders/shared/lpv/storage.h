@@ -8,12 +8,12 @@
 VOXGI_NAMESPACE_BEGIN
 
 // A value as the volumes store it: with lpv.storage=f16, the nearest half in units of the
-// power-of-two scale p.storage.y (so LPV_0's largest coefficient is at most 1 and the range of a
+// power-of-two scale p.storageScale (so LPV_0's largest coefficient is at most 1 and the range of a
 // half, 6e-5 .. 65504 with 11 significant bits, covers what propagation needs).
 VOXGI_FN float storedValue(float v, PropagateParams p) {
-  if (p.storage.x == 0.0f) return v;
-  precise float units = v * p.storage.z;
-  precise float stored = roundToHalf(units) * p.storage.y;
+  if (p.halfPrecision == 0) return v;
+  precise float units = v * p.inverseStorageScale;
+  precise float stored = roundToHalf(units) * p.storageScale;
   return stored;
 }
 
