@@ -74,8 +74,8 @@ Scene caseScene(const TechniqueCase& c) {
 }
 
 Settings caseSettings(const TechniqueCase& c, const Scene& scene) {
-  Settings settings = resolveSettings(findTechnique(c.technique), scene.settings, scene.file,
-                                      c.preset, c.sets);
+  Settings settings =
+      resolveSettings(findTechnique(c.technique), scene.settings, scene.file, c.preset, c.sets);
   settings.inspect = c.inspect;
   return settings;
 }

@@ -101,5 +101,7 @@ double median(std::vector<double> values);
 
 // The median wall-clock time of `repeats` runs of `run`.
 double medianSeconds(int repeats, const std::function<void()>& run);
+// The wall-clock time of one run of `run`.
+double elapsedSeconds(const std::function<void()>& run);
 
 }  // namespace voxgi::tools

@@ -38,12 +38,6 @@ uint64_t octreeBytes(const cpu::svo::Octree& o) {
   return structure + o.leafTileCount() * perLeafTile + o.tileCount() * perNodeTile;
 }
 
-double seconds(const std::function<void()>& run) {
-  const auto start = std::chrono::steady_clock::now();
-  run();
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 void addBenchSvoOptions(CLI::App& cmd, BenchSvoOptions& o) {
@@ -145,9 +139,9 @@ int runBenchSvo(const BenchSvoOptions& o) {
       cpu::svo::Octree octree;
       for (int r = 0; r < o.repeats; ++r) {
         cpu::svo::SampleHomes homes;
-        structure.push_back(seconds(
+        structure.push_back(elapsedSeconds(
             [&] { octree = cpu::svo::buildOctree(set.samples, depth, cloudFile, &homes); }));
-        sums.push_back(seconds([&] {
+        sums.push_back(elapsedSeconds([&] {
           cpu::svo::accumulateLeaves(octree, set.samples, set.weightScale, cloudFile, &homes);
         }));
       }

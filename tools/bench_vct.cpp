@@ -25,52 +25,6 @@
 
 namespace voxgi::tools {
 
-std::vector<std::pair<std::string, double>> timeStages(const StageContext& ctx, int repeats,
-                                                       StageBackend& backend) {
-  cpu::CpuBackend reference;
-  const bool onCpu = dynamic_cast<cpu::CpuBackend*>(&backend) != nullptr;
-  std::vector<std::pair<std::string, double>> out;
-  BufferSet inputs;
-  for (const StageSpec* stage : plannedStages(ctx)) {
-    if (stage->id == StageId::common_voxelize) {
-      runStage(reference, *stage, ctx, inputs);
-      continue;
-    }
-    // Copying the inputs is not timed: only the stage.
-    std::vector<double> times;
-    BufferSet result;
-    for (int r = 0; r < repeats; ++r) {
-      result = inputs;
-      const auto start = std::chrono::steady_clock::now();
-      const StageOutputs outputs = runStage(backend, *stage, ctx, result);
-      times.push_back(
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-      if (!outputs.ok()) throw std::logic_error(outputs.describe(*stage, backend.name()));
-    }
-    out.emplace_back(stage->qualifiedName(), median(std::move(times)));
-    if (onCpu)
-      inputs = std::move(result);
-    else
-      runStage(reference, *stage, ctx, inputs);  // the next stage's inputs come from the CPU
-  }
-  return out;
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
-
-double medianSeconds(int repeats, const std::function<void()>& run) {
-  std::vector<double> t;
-  for (int r = 0; r < repeats; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    run();
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  return median(std::move(t));
-}
-
 namespace {
 
 // cpu::mip on an N^3 RGBA32F radiance volume vs std::memcpy of the same bytes, both medians.

@@ -70,13 +70,6 @@ double meshToVolumeSeconds(const Scene& scene, int repeats, float bandWidth) {
 
 }  // namespace
 
-void addGpuColumnOptions(CLI::App& cmd, bool& gpu, std::string& gl) {
-  cmd.add_flag("!--no-gpu", gpu, "skip the GPU column");
-  cmd.add_option("--gl", gl,
-                 "GL platform of the GPU column (osmesa: llvmpipe; egl: a hardware GPU)")
-      ->check(CLI::IsMember({"egl", "osmesa"}));
-}
-
 void addBenchOptions(CLI::App& cmd, BenchOptions& o) {
   cmd.add_option("--resolutions", o.resolutions, "grid resolutions")->delimiter(',');
   cmd.add_option("--bunny", o.bunny, "first mesh (default scenes/bunny.obj)");

@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -16,6 +17,7 @@
 #include "common/output_file.h"
 #include "validation/reference/image_metrics.h"
 #include "validation/reference/path_trace.h"
+#include "tools/command.h"
 
 namespace voxgi::tools {
 namespace {
@@ -298,6 +300,14 @@ int runCompare(const CompareOptions& o) {
   }
   if (!o.json.empty()) writeFileAtomically(o.json, out.dump(2) + "\n");
   return kExitOk;
+}
+
+void addCompareCommand(CLI::App& app, Commands& commands) {
+  auto o = std::make_shared<CompareOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "compare", "RMSE, relative MSE, MARE and SSIM of an image against a reference");
+  addCompareOptions(*cmd, *o);
+  commands.push_back({cmd, [o] { return runCompare(*o); }});
 }
 
 }  // namespace voxgi::tools

@@ -1,8 +1,17 @@
-#include "tools/ledger.h"
-
+// voxgi ledger SCENE --technique lpv|holpv: where a light propagation volume's light goes, step
+// by step (validation/lpv/ledger.h), as a table and as JSON.
 #include <algorithm>
 #include <iomanip>
+#include <iostream>
+#include <memory>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "common/error.h"
+#include "common/output_file.h"
+#include "tools/command.h"
+#include "validation/lpv/ledger.h"
 
 namespace voxgi::tools {
 namespace {
@@ -15,8 +24,7 @@ nlohmann::json rgb(const glm::dvec3& c) {
   return {c.r, c.g, c.b};
 }
 
-}  // namespace
-
+// Fractions of the emitted flux, luminance-weighted (Rec. 709) so one column stands for a colour.
 void printLedger(std::ostream& out, const validation::Ledger& l) {
   const double emitted = luminance(l.emitted);
   const auto share = [&](const glm::dvec3& c) {
@@ -80,6 +88,48 @@ nlohmann::json ledgerJson(const validation::Ledger& l) {
           {"read", rgb(l.read)},
           {"surfaces", surfaces},
           {"samples_per_cell", l.samplesPerCell}};
+}
+
+struct LedgerOptions {
+  SceneOptions scene;
+  std::string json;
+};
+
+// A light propagation volume run up to propagate, with every step kept.
+int runLedger(const LedgerOptions& o) {
+  const Technique& technique = findTechnique(o.scene.technique);
+  const auto& steps = technique.steps();
+  const StageSpec& propagate = stageSpec(StageId::lpv_propagate);
+  if (std::find(steps.begin(), steps.end(), &propagate) == steps.end())
+    throw InputError(
+        "--technique", "",
+        o.scene.technique + " has no propagation volume; the ledger is lpv's and holpv's");
+  if (!o.json.empty()) checkOutputPath(o.json);
+  const StageRun run = runStages(o.scene, &propagate, true);
+  const VoxelTriangles triangles = prepareVoxelTriangles(run.scene, run.scene.grid);
+  const StageContext ctx{technique, run.scene, run.settings, triangles};
+  const validation::Ledger ledger = validation::lpvLedger(ctx, run.buffers);
+  std::cout << technique.name << " ledger of " << run.scene.file << " ("
+            << run.scene.grid.resolution << "^3, " << ledger.steps.size() << " steps, "
+            << run.backendName() << ")\n";
+  printLedger(std::cout, ledger);
+  if (!o.json.empty()) writeFileAtomically(o.json, ledgerJson(ledger).dump(2) + "\n");
+  return kExitOk;
+}
+
+}  // namespace
+
+void addLedgerCommand(CLI::App& app, Globals& globals, Commands& commands) {
+  auto o = std::make_shared<LedgerOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "ledger",
+      "light propagation volumes: per step the flux sent, removed by the geometry volume, lost at "
+      "the grid's border and read by shading, against the emitted flux");
+  o->scene.add(*cmd, globals, true);
+  cmd->add_option("--technique", o->scene.technique, "lpv or holpv")
+      ->check(CLI::IsMember(techniqueList()));
+  cmd->add_option("--json", o->json, "also write the ledger as JSON");
+  commands.push_back({cmd, [o] { return runLedger(*o); }});
 }
 
 }  // namespace voxgi::tools

@@ -33,6 +33,7 @@
 #include "cpu/backend.h"
 #include "gpu/backend.h"
 #include "validation/reference/path_trace.h"
+#include "tools/command.h"
 
 extern char** environ;
 
@@ -484,6 +485,14 @@ int runStudy(const StudyOptions& o) {
   plot(o.csv, o.plot, o.metric, title, noiseFloor);
   std::cout << "wrote " << o.plot << "\n";
   return kExitOk;
+}
+
+void addStudyCommand(CLI::App& app, Commands& commands) {
+  auto o = std::make_shared<StudyOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "study", "sweep parameters, time each combination and plot its error against a reference");
+  addStudyOptions(*cmd, *o);
+  commands.push_back({cmd, [o] { return runStudy(*o); }});
 }
 
 }  // namespace voxgi::tools

@@ -1,0 +1,76 @@
+// voxgi dump: every buffer of a stage (or all) as .vdb/.exr, or its checksums.
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "common/buffer_io.h"
+#include "common/error.h"
+#include "common/fnv1a.h"
+#include "common/output_file.h"
+#include "tools/command.h"
+
+namespace voxgi::tools {
+namespace {
+
+struct DumpOptions {
+  SceneOptions scene;
+  std::string stage = "all", out;
+  bool checksums = false;
+};
+
+// A stage the plan skips has no buffers: say so instead of writing another stage's.
+void requirePlanned(const SceneOptions& o, const Technique& technique, const StageSpec& s) {
+  const Scene scene = o.load();
+  const EffectPlan plan = technique.plan(scene, o.settings(scene, true));
+  if (!plan.runs(s.id))
+    throw InputError("--stage", "",
+                     "the plan skips " + s.qualifiedName() + " (" + plan.whySkipped(s.id) +
+                         "), so it has no buffers to dump (voxgi plan shows why)");
+}
+
+void printChecksums(const std::vector<const Buffer*>& buffers) {
+  for (const Buffer* b : buffers)
+    std::cout << "checksum " << b->spec->qualifiedName() << " " << b->words.size() << " "
+              << std::hex << std::setw(16) << std::setfill('0')
+              << fnv1a(b->words.data(), b->words.size() * sizeof(uint32_t)) << std::dec
+              << std::setfill(' ') << "\n";
+}
+
+int runDump(const DumpOptions& o) {
+  if (o.out.empty() && !o.checksums)
+    throw InputError("--out", "", "dump needs an output folder (--out) or --checksums");
+  const Technique& technique = findTechnique(o.scene.technique);
+  const bool all = o.stage == "all";
+  const std::vector<const StageSpec*> requested = requestedStages(technique, o.stage);
+  if (!all) requirePlanned(o.scene, technique, *requested.front());
+  if (!o.out.empty()) prepareOutputFolder(o.out);
+  const StageRun run = runStages(o.scene, all ? nullptr : requested.front(), true);
+  for (const StageSpec* s : run.stages) {
+    if (!all && s != requested.front()) continue;
+    if (o.checksums) printChecksums(buffersOf(run.buffers, *s, true));
+    if (o.out.empty()) continue;
+    for (const std::string& path :
+         writeBuffers(o.out + "/" + std::string(s->name), buffersOf(run.buffers, *s, true),
+                      run.scene.grid, {}, technique.sparseLayouts(run.buffers, run.scene.grid)))
+      std::cout << "wrote " << path << "\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+void addDumpCommand(CLI::App& app, Globals& globals, Commands& commands) {
+  auto o = std::make_shared<DumpOptions>();
+  CLI::App* cmd =
+      app.add_subcommand("dump", "write every buffer of a stage (or all) as .vdb/.exr");
+  o->scene.add(*cmd, globals, true);
+  o->scene.addTechnique(*cmd);
+  cmd->add_option("--stage", o->stage, kStageHelp)->required();
+  cmd->add_option("--out", o->out, "output folder");
+  cmd->add_flag("--checksums", o->checksums,
+                "print each buffer's word count and FNV-1a checksum (a run's fingerprint, to "
+                "check that a change or another machine reproduces it bit for bit)");
+  commands.push_back({cmd, [o] { return runDump(*o); }});
+}
+
+}  // namespace voxgi::tools
