@@ -13,6 +13,132 @@
 
 namespace voxgi::gpu {
 
+namespace {
+
+// The integer images the triangles accumulate into (common/voxelize's fixed-point sums), bound
+// as images 0-3; the emission sum only where the plan has emission.
+struct SumImages {
+  GlTexture weight, albedo, normal, emission;
+};
+
+SumImages clearedSums(const Gl& gl, int n, bool emissive) {
+  SumImages s{GlTexture(gl, createTexture3d(gl, GL_R32UI, glm::ivec3(n))),
+              GlTexture(gl, createTexture3d(gl, GL_R32UI, {3 * n, n, n})),
+              GlTexture(gl, createTexture3d(gl, GL_R32I, {3 * n, n, n})),
+              GlTexture(gl, emissive ? createTexture3d(gl, GL_R32UI, {4 * n, n, n}) : 0)};
+  const uint32_t zero = 0;
+  for (GLuint t : {s.weight.get(), s.albedo.get(), s.emission.get()})
+    if (t != 0) gl.ClearTexImage(t, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  gl.ClearTexImage(s.normal.get(), 0, GL_RED_INTEGER, GL_INT, &zero);
+  return s;
+}
+
+void bindSums(const Gl& gl, const SumImages& s, GLenum access) {
+  gl.BindImageTexture(0, s.weight.get(), 0, GL_TRUE, 0, access, GL_R32UI);
+  gl.BindImageTexture(1, s.albedo.get(), 0, GL_TRUE, 0, access, GL_R32UI);
+  gl.BindImageTexture(2, s.normal.get(), 0, GL_TRUE, 0, access, GL_R32I);
+  if (s.emission.get() != 0)
+    gl.BindImageTexture(3, s.emission.get(), 0, GL_TRUE, 0, access, GL_R32UI);
+}
+
+// Antialiased: one invocation per (triangle, row); see shaders/voxelize_antialiased.comp.
+void splatAntialiased(const Gl& gl, const StageContext& ctx, int n, bool emissive) {
+  const auto& tris = ctx.triangles.triangles;
+  std::vector<uint32_t> firstRow(tris.size() + 1, 0u);
+  for (size_t i = 0; i < tris.size(); ++i) {
+    if (uint64_t(firstRow[i]) + tris[i].info.y > 0xFFFFFFFFull - 64u)
+      throw InputError(ctx.scene.file, "meshes",
+                       "too many antialiasing sample rows for one dispatch");
+    firstRow[i + 1] = firstRow[i] + tris[i].info.y;
+  }
+  GlBuffer rows(gl, createBuffer(gl, firstRow.size() * sizeof(uint32_t), firstRow.data()));
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, rows.get());
+  Program splat(gl, {&shaders::voxelize_antialiased_comp});
+  splat.set("uResolution", n);
+  splat.set("uHasEmission", emissive ? 1 : 0);
+  splat.set("uTriangleCount", static_cast<unsigned>(tris.size()));
+  splat.set("uRowCount", firstRow.back());
+  splat.use();
+  dispatchLinear(gl, firstRow.back());
+}
+
+// Conservative: the graphics pipeline, each triangle projected on its dominant axis.
+void rasterizeConservative(const Gl& gl, size_t triangles, int n, bool emissive) {
+  Program raster(gl, {&shaders::voxelize_vert, &shaders::voxelize_geom, &shaders::voxelize_frag});
+  raster.set("uResolution", n);
+  raster.set("uHasEmission", emissive ? 1 : 0);
+  raster.use();
+  GLuint fbo = 0, vao = 0;
+  gl.CreateFramebuffers(1, &fbo);  // no attachments: fragments only write images
+  gl.NamedFramebufferParameteri(fbo, GL_FRAMEBUFFER_DEFAULT_WIDTH, n);
+  gl.NamedFramebufferParameteri(fbo, GL_FRAMEBUFFER_DEFAULT_HEIGHT, n);
+  gl.CreateVertexArrays(1, &vao);
+  gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+  gl.BindVertexArray(vao);
+  gl.Viewport(0, 0, n, n);
+  gl.Disable(GL_DEPTH_TEST);
+  gl.Disable(GL_CULL_FACE);
+  gl.Disable(GL_MULTISAMPLE);
+  gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * triangles));
+  gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+  gl.DeleteFramebuffers(1, &fbo);
+  gl.DeleteVertexArrays(1, &vao);
+}
+
+// The float volumes the resolve pass writes from the sums (images 4-7).
+struct ResolvedImages {
+  GlTexture opacity, albedo, normal, emission;
+};
+
+ResolvedImages resolve(const Gl& gl, const StageContext& ctx, const SumImages& sums, int n,
+                       bool emissive) {
+  ResolvedImages r{GlTexture(gl, createTexture3d(gl, GL_R32F, glm::ivec3(n))),
+                   GlTexture(gl, createTexture3d(gl, GL_R32F, {3 * n, n, n})),
+                   GlTexture(gl, createTexture3d(gl, GL_R32F, {3 * n, n, n})),
+                   GlTexture(gl, emissive ? createTexture3d(gl, GL_R32F, {3 * n, n, n}) : 0)};
+  Program program(gl, {&shaders::voxelize_resolve_comp});
+  program.set("uResolution", n);
+  program.set("uHasEmission", emissive ? 1 : 0);
+  program.set("uAntialiased", ctx.settings.voxelizeMode == VoxelizeMode::antialiased ? 1 : 0);
+  program.set("uEmissionScale", ctx.triangles.emissionScale);
+  program.set("uEmitterMean", ctx.settings.voxelizeEmission == VoxelizeEmission::emitters ? 1 : 0);
+  bindSums(gl, sums, GL_READ_ONLY);
+  gl.BindImageTexture(4, r.opacity.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  gl.BindImageTexture(5, r.albedo.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  gl.BindImageTexture(6, r.normal.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  if (emissive) gl.BindImageTexture(7, r.emission.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
+  program.use();
+  const auto groups = static_cast<GLuint>((n + 3) / 4);
+  gl.DispatchCompute(groups, groups, groups);
+  gl.MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  gl.check("voxelize: resolving");
+  return r;
+}
+
+void readBack(const Gl& gl, const SumImages& sums, const ResolvedImages& resolved, int n,
+              BufferSet& buffers) {
+  auto read = [&](BufferId id, const GlTexture& texture, GLenum format, GLenum type) {
+    Buffer b(id, glm::ivec3(n));
+    readTexture(gl, texture.get(), 0, format, type, {b.components() * n, n, n}, b);
+    buffers.put(std::move(b));
+  };
+  using enum BufferId;
+  read(common_voxelize_weight_sum, sums.weight, GL_RED_INTEGER, GL_UNSIGNED_INT);
+  read(common_voxelize_albedo_sum, sums.albedo, GL_RED_INTEGER, GL_UNSIGNED_INT);
+  read(common_voxelize_normal_sum, sums.normal, GL_RED_INTEGER, GL_INT);
+  read(common_voxelize_opacity, resolved.opacity, GL_RED, GL_FLOAT);
+  read(common_voxelize_albedo, resolved.albedo, GL_RED, GL_FLOAT);
+  read(common_voxelize_normal, resolved.normal, GL_RED, GL_FLOAT);
+  if (sums.emission.get() != 0) {
+    read(common_voxelize_emission_sum, sums.emission, GL_RED_INTEGER, GL_UNSIGNED_INT);
+    read(common_voxelize_emission, resolved.emission, GL_RED, GL_FLOAT);
+  }
+  gl.check("voxelize: reading back");
+}
+
+}  // namespace
+
 void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   context.makeCurrent();
   const Gl& gl = context.gl();
@@ -23,9 +149,8 @@ void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& bu
                          ", above this GL's GL_MAX_3D_TEXTURE_SIZE " +
                          std::to_string(context.max3dTextureSize()));
   checkStageMemory(ctx, StageId::common_voxelize, 2.0);  // GPU copies plus the read-back buffers
-  refuseRepeatedTriangles(ctx.triangles, n, ctx.settings.voxelizeMode == VoxelizeMode::antialiased,
-                          ctx.scene.file);
   const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
+  refuseRepeatedTriangles(ctx.triangles, n, antialiased, ctx.scene.file);
   const bool emissive =
       ctx.plan.on(Effect::emission);  // emissionScale may be 0 under plan.mode=full
   const auto& tris = ctx.triangles.triangles;
@@ -36,93 +161,20 @@ void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& bu
   GlBuffer status(gl, createBuffer(gl, sizeof zero, &zero));
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, triangles.get());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, status.get());
-
-  GlTexture weight(gl, createTexture3d(gl, GL_R32UI, glm::ivec3(n)));
-  GlTexture albedoSum(gl, createTexture3d(gl, GL_R32UI, {3 * n, n, n}));
-  GlTexture normalSum(gl, createTexture3d(gl, GL_R32I, {3 * n, n, n}));
-  GlTexture emissionSum(gl, emissive ? createTexture3d(gl, GL_R32UI, {4 * n, n, n}) : 0);
-  for (GLuint t : {weight.get(), albedoSum.get(), emissionSum.get()})
-    if (t != 0) gl.ClearTexImage(t, 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  gl.ClearTexImage(normalSum.get(), 0, GL_RED_INTEGER, GL_INT, &zero);
-  gl.BindImageTexture(0, weight.get(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
-  gl.BindImageTexture(1, albedoSum.get(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
-  gl.BindImageTexture(2, normalSum.get(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32I);
-  if (emissive) gl.BindImageTexture(3, emissionSum.get(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_R32UI);
+  const SumImages sums = clearedSums(gl, n, emissive);
+  bindSums(gl, sums, GL_READ_WRITE);
   gl.check("voxelize: allocating volumes");
 
   if (!tris.empty()) {
-    if (antialiased) {
-      // One invocation per (triangle, row); see shaders/voxelize_antialiased.comp.
-      std::vector<uint32_t> firstRow(tris.size() + 1, 0u);
-      for (size_t i = 0; i < tris.size(); ++i) {
-        if (uint64_t(firstRow[i]) + tris[i].info.y > 0xFFFFFFFFull - 64u)
-          throw InputError(ctx.scene.file, "meshes",
-                           "too many antialiasing sample rows for one dispatch");
-        firstRow[i + 1] = firstRow[i] + tris[i].info.y;
-      }
-      GlBuffer rows(gl, createBuffer(gl, firstRow.size() * sizeof(uint32_t), firstRow.data()));
-      gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, rows.get());
-      Program splat(gl, {&shaders::voxelize_antialiased_comp});
-      splat.set("uResolution", n);
-      splat.set("uHasEmission", emissive ? 1 : 0);
-      splat.set("uTriangleCount", static_cast<unsigned>(tris.size()));
-      splat.set("uRowCount", firstRow.back());
-      splat.use();
-      dispatchLinear(gl, firstRow.back());
-    } else {
-      Program raster(gl,
-                     {&shaders::voxelize_vert, &shaders::voxelize_geom, &shaders::voxelize_frag});
-      raster.set("uResolution", n);
-      raster.set("uHasEmission", emissive ? 1 : 0);
-      raster.use();
-      GLuint fbo = 0, vao = 0;
-      gl.CreateFramebuffers(1, &fbo);  // no attachments: fragments only write images
-      gl.NamedFramebufferParameteri(fbo, GL_FRAMEBUFFER_DEFAULT_WIDTH, n);
-      gl.NamedFramebufferParameteri(fbo, GL_FRAMEBUFFER_DEFAULT_HEIGHT, n);
-      gl.CreateVertexArrays(1, &vao);
-      gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
-      gl.BindVertexArray(vao);
-      gl.Viewport(0, 0, n, n);
-      gl.Disable(GL_DEPTH_TEST);
-      gl.Disable(GL_CULL_FACE);
-      gl.Disable(GL_MULTISAMPLE);
-      gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(3 * tris.size()));
-      gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-      gl.DeleteFramebuffers(1, &fbo);
-      gl.DeleteVertexArrays(1, &vao);
-    }
+    if (antialiased)
+      splatAntialiased(gl, ctx, n, emissive);
+    else
+      rasterizeConservative(gl, tris.size(), n, emissive);
     gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                      GL_SHADER_STORAGE_BARRIER_BIT);
     gl.check("voxelize: accumulating");
   }
-
-  GlTexture opacity(gl, createTexture3d(gl, GL_R32F, glm::ivec3(n)));
-  GlTexture albedo(gl, createTexture3d(gl, GL_R32F, {3 * n, n, n}));
-  GlTexture normal(gl, createTexture3d(gl, GL_R32F, {3 * n, n, n}));
-  GlTexture emission(gl, emissive ? createTexture3d(gl, GL_R32F, {3 * n, n, n}) : 0);
-  {
-    Program resolve(gl, {&shaders::voxelize_resolve_comp});
-    resolve.set("uResolution", n);
-    resolve.set("uHasEmission", emissive ? 1 : 0);
-    resolve.set("uAntialiased", antialiased ? 1 : 0);
-    resolve.set("uEmissionScale", ctx.triangles.emissionScale);
-    resolve.set("uEmitterMean",
-                ctx.settings.voxelizeEmission == VoxelizeEmission::emitters ? 1 : 0);
-    gl.BindImageTexture(0, weight.get(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
-    gl.BindImageTexture(1, albedoSum.get(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
-    gl.BindImageTexture(2, normalSum.get(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32I);
-    if (emissive) gl.BindImageTexture(3, emissionSum.get(), 0, GL_TRUE, 0, GL_READ_ONLY, GL_R32UI);
-    gl.BindImageTexture(4, opacity.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-    gl.BindImageTexture(5, albedo.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-    gl.BindImageTexture(6, normal.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-    if (emissive) gl.BindImageTexture(7, emission.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R32F);
-    resolve.use();
-    const auto groups = static_cast<GLuint>((n + 3) / 4);
-    gl.DispatchCompute(groups, groups, groups);
-    gl.MemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    gl.check("voxelize: resolving");
-  }
+  const ResolvedImages resolved = resolve(gl, ctx, sums, n, emissive);
 
   uint32_t overflow = 0;
   gl.GetNamedBufferSubData(status.get(), 0, sizeof overflow, &overflow);
@@ -130,25 +182,7 @@ void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& bu
     throw InputError(ctx.scene.file, "meshes",
                      "more than 32768 voxel faces of surface fall into one voxel (fixed-point "
                      "overflow); lower grid.resolution or remove overlapping copies");
-
-  const glm::ivec3 extent(n);
-  auto read = [&](BufferId id, GLuint texture, GLenum format, GLenum type) {
-    Buffer b(id, extent);
-    readTexture(gl, texture, 0, format, type, {b.components() * n, n, n}, b);
-    buffers.put(std::move(b));
-  };
-  using enum BufferId;
-  read(common_voxelize_weight_sum, weight.get(), GL_RED_INTEGER, GL_UNSIGNED_INT);
-  read(common_voxelize_albedo_sum, albedoSum.get(), GL_RED_INTEGER, GL_UNSIGNED_INT);
-  read(common_voxelize_normal_sum, normalSum.get(), GL_RED_INTEGER, GL_INT);
-  read(common_voxelize_opacity, opacity.get(), GL_RED, GL_FLOAT);
-  read(common_voxelize_albedo, albedo.get(), GL_RED, GL_FLOAT);
-  read(common_voxelize_normal, normal.get(), GL_RED, GL_FLOAT);
-  if (emissive) {
-    read(common_voxelize_emission_sum, emissionSum.get(), GL_RED_INTEGER, GL_UNSIGNED_INT);
-    read(common_voxelize_emission, emission.get(), GL_RED, GL_FLOAT);
-  }
-  gl.check("voxelize: reading back");
+  readBack(gl, sums, resolved, n, buffers);
 }
 
 }  // namespace voxgi::gpu

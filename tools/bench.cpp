@@ -55,7 +55,6 @@ double medianSeconds(int repeats, const std::function<void()>& run) {
   return median(std::move(t));
 }
 
-
 void addGpuColumnOptions(CLI::App& cmd, bool& gpu, std::string& gl) {
   cmd.add_flag("!--no-gpu", gpu, "skip the GPU column");
   cmd.add_option("--gl", gl,

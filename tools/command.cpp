@@ -14,7 +14,8 @@ void SceneOptions::add(CLI::App& cmd, Globals& globals, bool withBackend) {
       ->check(CLI::Range(1, kMaxResolution));
   cmd.add_option("--image", image, "image width in pixels (the height keeps the aspect)")
       ->check(CLI::Range(1, 16384));
-  cmd.add_option("--mode", mode, "voxelization: conservative or antialiased (default: voxelize.mode)")
+  cmd.add_option("--mode", mode,
+                 "voxelization: conservative or antialiased (default: voxelize.mode)")
       ->check(CLI::IsMember({"conservative", "antialiased"}));
   cmd.add_option("--gl", gl, "GL platform for the GPU backend")
       ->check(CLI::IsMember({"egl", "osmesa"}));
@@ -65,7 +66,9 @@ StageRun runStages(const SceneOptions& o, const StageSpec* last, bool inspect) {
   const Technique& technique = findTechnique(o.technique);
   Scene scene = o.load();
   const Settings settings = o.settings(scene, inspect);
-  StageRun run{std::move(scene), settings, chooseBackend(o.backend, gpu::parseGlPlatform(o.gl)),
+  StageRun run{std::move(scene),
+               settings,
+               chooseBackend(o.backend, gpu::parseGlPlatform(o.gl)),
                {},
                {},
                0.0};

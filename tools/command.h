@@ -81,8 +81,7 @@ StageRun runStages(const SceneOptions& o, const StageSpec* last, bool inspect = 
 // The buffers `stage` left in the set (with the fixed-point sums only when asked).
 std::vector<const Buffer*> buffersOf(const BufferSet& set, const StageSpec& stage, bool withSums);
 // The stages --stage names: every step of the technique for "all", else the one it resolves to.
-std::vector<const StageSpec*> requestedStages(const Technique& technique,
-                                              const std::string& stage);
+std::vector<const StageSpec*> requestedStages(const Technique& technique, const std::string& stage);
 // --stage's help.
 inline constexpr const char* kStageHelp =
     "stage (vct/trace_cones, or trace_cones within --technique) or all";

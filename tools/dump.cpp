@@ -61,8 +61,7 @@ int runDump(const DumpOptions& o) {
 
 void addDumpCommand(CLI::App& app, Globals& globals, Commands& commands) {
   auto o = std::make_shared<DumpOptions>();
-  CLI::App* cmd =
-      app.add_subcommand("dump", "write every buffer of a stage (or all) as .vdb/.exr");
+  CLI::App* cmd = app.add_subcommand("dump", "write every buffer of a stage (or all) as .vdb/.exr");
   o->scene.add(*cmd, globals, true);
   o->scene.addTechnique(*cmd);
   cmd->add_option("--stage", o->stage, kStageHelp)->required();

@@ -31,9 +31,9 @@ void readGradient(const std::string& gradient, SurfaceSampling& sampling) {
   const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), ratio);
   if (axis.size() != 1 || axis.find_first_of("xyz") != 0 || ec != std::errc() ||
       end != value.data() + value.size() || !(ratio > 0.0 && ratio <= 1e6))
-    throw InputError("--density-gradient", "",
-                     "expected AXIS:RATIO with AXIS x, y or z and RATIO in (0, 1e6], got '" +
-                         gradient + "'");
+    throw InputError(
+        "--density-gradient", "",
+        "expected AXIS:RATIO with AXIS x, y or z and RATIO in (0, 1e6], got '" + gradient + "'");
   sampling.gradientAxis = axis[0] - 'x';
   sampling.gradientRatio = ratio;
 }

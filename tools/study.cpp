@@ -324,57 +324,67 @@ void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
   addUnitsOptions(cmd, o.units, o.skipEmitters);
 }
 
-int runStudy(const StudyOptions& o) {
-  checkOutputPath(o.csv);
-  if (!o.plot.empty()) checkOutputPath(o.plot);
-  std::vector<Sweep> sweeps;
-  for (const std::string& s : o.sweeps) sweeps.push_back(parseSweep(s));
-  const Image reference = readReference(o.reference);
-  const std::vector<uint8_t> mask =
-      withoutEmitters(o.skipEmitters, o.reference, reference, readMask(o.mask, reference));
-  const std::vector<Job> jobs = makeJobs(o, sweeps);
-  std::optional<TermImages> referenceTerms;
+namespace {
+
+// The reference a study measures against: its image, the pixels that count, the metrics' scale
+// and its light terms (with --terms).
+struct StudyReference {
+  Image image;
+  std::vector<uint8_t> mask;
+  reference::MetricScale scale;
+  std::optional<TermImages> terms;
+};
+
+StudyReference readStudyReference(const StudyOptions& o) {
+  StudyReference r;
+  r.image = readReference(o.reference);
+  r.mask = withoutEmitters(o.skipEmitters, o.reference, r.image, readMask(o.mask, r.image));
+  r.scale = reference::metricScale(r.image, r.mask, o.units);
   if (o.terms) {
-    referenceTerms = readTermImages(o.reference);
+    r.terms = readTermImages(o.reference);
     for (const LightTerm term : kLightTerms)
-      checkSameSize(termImage(*referenceTerms, term).width, termImage(*referenceTerms, term).height,
-                    termPath(o.reference, term), reference);
+      checkSameSize(termImage(*r.terms, term).width, termImage(*r.terms, term).height,
+                    termPath(o.reference, term), r.image);
   }
-  checkSameSize(jobs.front().scene.camera.width, jobs.front().scene.camera.height,
-                o.scene + " camera.resolution (or --image)", reference);
-  std::unique_ptr<gpu::GlContext> context;
-  const reference::MetricScale scale = reference::metricScale(reference, mask, o.units);
-  std::vector<Result> results;
-  std::vector<reference::ImageMetrics> metrics;
-  // Per job, its image without the indirect terms (nullopt for a technique without terms).
-  std::vector<std::optional<reference::ImageMetrics>> directOnlyMetrics;
-  // Per job, per term (empty without --terms or for a technique without terms).
-  std::vector<std::vector<reference::TermMetrics>> termMetrics(jobs.size());
-  for (size_t k = 0; k < jobs.size(); ++k) {
-    const Job& job = jobs[k];
-    if (job.gpu && context == nullptr) context = gpu::GlContext::create(gpu::parseGlPlatform(o.gl));
-    results.push_back(job.technique == "path" ? runPath(job, o.repeats)
-                                              : runTechnique(job, o.repeats, context.get()));
-    metrics.push_back(reference::compareImages(results.back().image, reference, mask, scale));
-    directOnlyMetrics.push_back(std::nullopt);
-    if (results.back().terms)
-      directOnlyMetrics.back() =
-          reference::compareImages(directOnly(*results.back().terms), reference, mask, scale);
-    if (referenceTerms && results.back().terms)
-      for (const LightTerm term : kLightTerms)
-        termMetrics[k].push_back(reference::compareTerm(termImage(*results.back().terms, term),
-                                                        termImage(*referenceTerms, term), reference,
-                                                        mask, scale));
-    std::cout << "[" << k + 1 << "/" << jobs.size() << "] " << job.technique << " " << job.label()
-              << ": " << results.back().seconds << " s, RMSE " << metrics.back().rmse << ", relMSE "
-              << metrics.back().relMse << ", SSIM " << metrics.back().ssim << ", energy "
-              << metrics.back().energy.r << " / " << metrics.back().energy.g << " / "
-              << metrics.back().energy.b << std::endl;
-  }
-  const reference::Baselines baselines = reference::trivialBaselines(reference, mask, scale);
-  std::cout << "baselines: black relMSE " << baselines.black.relMse << ", SSIM "
-            << baselines.black.ssim << "; constant relMSE " << baselines.constant.relMse
-            << ", SSIM " << baselines.constant.ssim << std::endl;
+  return r;
+}
+
+// One combination's run and its errors against the reference.
+struct Measured {
+  Result result;
+  reference::ImageMetrics metrics;
+  // Its image without the indirect terms (nullopt for a technique without terms).
+  std::optional<reference::ImageMetrics> directOnly;
+  // Per term (empty without --terms or for a technique without terms).
+  std::vector<reference::TermMetrics> terms;
+};
+
+Measured measure(const Job& job, const StudyOptions& o, const StudyReference& ref,
+                 std::unique_ptr<gpu::GlContext>& context) {
+  if (job.gpu && context == nullptr) context = gpu::GlContext::create(gpu::parseGlPlatform(o.gl));
+  Measured m;
+  m.result = job.technique == "path" ? runPath(job, o.repeats)
+                                     : runTechnique(job, o.repeats, context.get());
+  m.metrics = reference::compareImages(m.result.image, ref.image, ref.mask, ref.scale);
+  if (m.result.terms)
+    m.directOnly =
+        reference::compareImages(directOnly(*m.result.terms), ref.image, ref.mask, ref.scale);
+  if (ref.terms && m.result.terms)
+    for (const LightTerm term : kLightTerms)
+      m.terms.push_back(reference::compareTerm(termImage(*m.result.terms, term),
+                                               termImage(*ref.terms, term), ref.image, ref.mask,
+                                               ref.scale));
+  return m;
+}
+
+// The overall Pareto front of time against the --metric error, and each technique's own (its best
+// trade-offs even where another wins).
+struct Fronts {
+  std::vector<bool> all, ownTechnique;
+};
+
+Fronts paretoFronts(const StudyOptions& o, const std::vector<Job>& jobs,
+                    const std::vector<Measured>& measured) {
   const auto errorOf = [&](const reference::ImageMetrics& m) {
     return o.metric == "rmse"      ? m.rmse
            : o.metric == "rel_mse" ? m.relMse
@@ -382,13 +392,11 @@ int runStudy(const StudyOptions& o) {
                                    : 1.0 - m.ssim;
   };
   std::vector<double> seconds, errors;
-  for (size_t k = 0; k < jobs.size(); ++k) {
-    seconds.push_back(results[k].seconds);
-    errors.push_back(errorOf(metrics[k]));
+  for (const Measured& m : measured) {
+    seconds.push_back(m.result.seconds);
+    errors.push_back(errorOf(m.metrics));
   }
-  const std::vector<bool> front = reference::paretoFront(seconds, errors);
-  // Each technique's own front too: what its best trade-offs are even where another wins.
-  std::vector<bool> techniqueFront(jobs.size(), false);
+  Fronts fronts{reference::paretoFront(seconds, errors), std::vector<bool>(jobs.size(), false)};
   for (const std::string& technique : o.techniques) {
     std::vector<size_t> mine;
     std::vector<double> s, e;
@@ -399,10 +407,13 @@ int runStudy(const StudyOptions& o) {
         e.push_back(errors[k]);
       }
     const std::vector<bool> f = reference::paretoFront(s, e);
-    for (size_t i = 0; i < mine.size(); ++i) techniqueFront[mine[i]] = f[i];
+    for (size_t i = 0; i < mine.size(); ++i) fronts.ownTechnique[mine[i]] = f[i];
   }
+  return fronts;
+}
 
-  // Columns: every stage of the studied techniques, then the path tracer.
+// The time columns: every stage of the studied techniques, then the path tracer.
+std::vector<std::string> stageColumns(const StudyOptions& o) {
   std::vector<std::string> stages;
   for (const std::string& t : o.techniques)
     if (t != "path")
@@ -410,7 +421,11 @@ int runStudy(const StudyOptions& o) {
         if (std::find(stages.begin(), stages.end(), s->qualifiedName()) == stages.end())
           stages.push_back(s->qualifiedName());
   stages.emplace_back("path_trace");
-  std::ostringstream csv;
+  return stages;
+}
+
+void csvHeader(std::ostream& csv, const std::vector<Sweep>& sweeps,
+               const std::vector<std::string>& stages, bool terms) {
   csv << "technique";
   for (const Sweep& s : sweeps) csv << "," << s.key;
   csv << ",label,seconds";
@@ -418,72 +433,120 @@ int runStudy(const StudyOptions& o) {
   csv << ",rmse,rel_mse,mare,ssim,ssim_loss,energy_r,energy_g,energy_b,direct_only_rmse,"
          "direct_only_rel_mse,direct_only_mare,direct_only_ssim,direct_only_ssim_loss,efficiency,"
          "pareto,pareto_technique";
-  if (referenceTerms)
+  if (terms)
     for (const LightTerm term : kLightTerms)
       csv << ",rel_mse_" << termName(term) << ",share_" << termName(term) << ",brightness_"
           << termName(term);
   csv << "\n";
-  csv.precision(6);
-  for (size_t k = 0; k < jobs.size(); ++k) {
-    csv << jobs[k].technique;
-    for (const Sweep& s : sweeps) {
-      csv << ",";
-      for (const auto& [key, value] : jobs[k].values)
-        if (key == s.key) csv << value;
-    }
-    csv << "," << jobs[k].label() << "," << results[k].seconds;
-    for (const std::string& s : stages) {
-      csv << ",";
-      const auto it = results[k].stages.find(s);
-      if (it != results[k].stages.end()) csv << it->second;
-    }
-    const reference::ImageMetrics& m = metrics[k];
-    // What a unit of error costs in time: 1 / (seconds x MSE), as voxgi bench path reports it.
-    const double efficiency = 1.0 / (results[k].seconds * m.rmse * m.rmse);
-    csv << "," << metricCells(m) << ",";
-    if (directOnlyMetrics[k])
-      csv << errorCells(*directOnlyMetrics[k]) << ",";
-    else
-      csv << ",,,,,";
-    if (std::isfinite(efficiency)) csv << efficiency;
-    csv << "," << (front[k] ? 1 : 0) << "," << (techniqueFront[k] ? 1 : 0);
-    if (referenceTerms) {
-      // A technique without terms leaves its cells empty.
-      for (size_t t = 0; t < kLightTerms.size(); ++t) {
-        if (termMetrics[k].empty()) {
-          csv << ",,,";
-          continue;
-        }
-        const reference::TermMetrics& tm = termMetrics[k][t];
-        csv << "," << tm.own.relMse << "," << tm.share << ",";
-        if (!std::isnan(tm.meanRatio)) csv << tm.meanRatio;
-      }
-    }
-    csv << "\n";
+}
+
+void csvRow(std::ostream& csv, const Job& job, const Measured& measured,
+            const std::vector<Sweep>& sweeps, const std::vector<std::string>& stages, bool onFront,
+            bool onTechniqueFront, bool terms) {
+  csv << job.technique;
+  for (const Sweep& s : sweeps) {
+    csv << ",";
+    for (const auto& [key, value] : job.values)
+      if (key == s.key) csv << value;
   }
-  // The trivial answers as rows of their own: no time, no front.
+  const Result& result = measured.result;
+  csv << "," << job.label() << "," << result.seconds;
+  for (const std::string& s : stages) {
+    csv << ",";
+    const auto it = result.stages.find(s);
+    if (it != result.stages.end()) csv << it->second;
+  }
+  const reference::ImageMetrics& m = measured.metrics;
+  // What a unit of error costs in time: 1 / (seconds x MSE), as voxgi bench path reports it.
+  const double efficiency = 1.0 / (result.seconds * m.rmse * m.rmse);
+  csv << "," << metricCells(m) << ",";
+  if (measured.directOnly)
+    csv << errorCells(*measured.directOnly) << ",";
+  else
+    csv << ",,,,,";
+  if (std::isfinite(efficiency)) csv << efficiency;
+  csv << "," << (onFront ? 1 : 0) << "," << (onTechniqueFront ? 1 : 0);
+  if (terms) {
+    // A technique without terms leaves its cells empty.
+    for (size_t t = 0; t < kLightTerms.size(); ++t) {
+      if (measured.terms.empty()) {
+        csv << ",,,";
+        continue;
+      }
+      const reference::TermMetrics& tm = measured.terms[t];
+      csv << "," << tm.own.relMse << "," << tm.share << ",";
+      if (!std::isnan(tm.meanRatio)) csv << tm.meanRatio;
+    }
+  }
+  csv << "\n";
+}
+
+// The trivial answers as rows of their own: no time, no front.
+void csvBaselines(std::ostream& csv, const reference::Baselines& baselines, size_t sweeps,
+                  size_t stages, bool terms) {
   for (const auto& [name, b] :
        {std::pair{"black", &baselines.black}, std::pair{"constant", &baselines.constant}}) {
-    csv << "baseline_" << name << std::string(sweeps.size(), ',') << "," << name << ",";
-    for (size_t s = 0; s < stages.size(); ++s) csv << ",";
+    csv << "baseline_" << name << std::string(sweeps, ',') << "," << name << ",";
+    for (size_t s = 0; s < stages; ++s) csv << ",";
     csv << "," << metricCells(*b) << ",,,,,,,0,0";
-    if (referenceTerms) csv << std::string(3 * kLightTerms.size(), ',');
+    if (terms) csv << std::string(3 * kLightTerms.size(), ',');
     csv << "\n";
   }
-  writeFileAtomically(o.csv, csv.str());
-  std::cout << "wrote " << o.csv << " (" << jobs.size() << " rows)\n";
-  if (o.plot.empty()) return kExitOk;
+}
 
+// The plot, with the reference's noise floor where its variance image gives one.
+void plotStudy(const StudyOptions& o, const StudyReference& ref) {
   std::string noiseFloor;
-  const std::optional<Image> variance = readVarianceImage(o.reference, reference);
+  const std::optional<Image> variance = readVarianceImage(o.reference, ref.image);
   if (variance && (o.metric == "rmse" || o.metric == "rel_mse")) {
-    const reference::ImageMetrics floor = reference::noiseFloor(reference, *variance, mask, scale);
+    const reference::ImageMetrics floor =
+        reference::noiseFloor(ref.image, *variance, ref.mask, ref.scale);
     noiseFloor = std::to_string(o.metric == "rmse" ? floor.rmse : floor.relMse);
   }
   const std::string title = std::filesystem::path(o.scene).filename().string() + " against " +
                             std::filesystem::path(o.reference).filename().string();
   plot(o.csv, o.plot, o.metric, title, noiseFloor);
   std::cout << "wrote " << o.plot << "\n";
+}
+
+}  // namespace
+
+int runStudy(const StudyOptions& o) {
+  checkOutputPath(o.csv);
+  if (!o.plot.empty()) checkOutputPath(o.plot);
+  std::vector<Sweep> sweeps;
+  for (const std::string& s : o.sweeps) sweeps.push_back(parseSweep(s));
+  const StudyReference ref = readStudyReference(o);
+  const std::vector<Job> jobs = makeJobs(o, sweeps);
+  checkSameSize(jobs.front().scene.camera.width, jobs.front().scene.camera.height,
+                o.scene + " camera.resolution (or --image)", ref.image);
+  std::unique_ptr<gpu::GlContext> context;
+  std::vector<Measured> measured;
+  for (size_t k = 0; k < jobs.size(); ++k) {
+    measured.push_back(measure(jobs[k], o, ref, context));
+    const reference::ImageMetrics& m = measured.back().metrics;
+    std::cout << "[" << k + 1 << "/" << jobs.size() << "] " << jobs[k].technique << " "
+              << jobs[k].label() << ": " << measured.back().result.seconds << " s, RMSE " << m.rmse
+              << ", relMSE " << m.relMse << ", SSIM " << m.ssim << ", energy " << m.energy.r
+              << " / " << m.energy.g << " / " << m.energy.b << std::endl;
+  }
+  const reference::Baselines baselines =
+      reference::trivialBaselines(ref.image, ref.mask, ref.scale);
+  std::cout << "baselines: black relMSE " << baselines.black.relMse << ", SSIM "
+            << baselines.black.ssim << "; constant relMSE " << baselines.constant.relMse
+            << ", SSIM " << baselines.constant.ssim << std::endl;
+  const Fronts fronts = paretoFronts(o, jobs, measured);
+  const std::vector<std::string> stages = stageColumns(o);
+  const bool terms = ref.terms.has_value();
+  std::ostringstream csv;
+  csvHeader(csv, sweeps, stages, terms);
+  csv.precision(6);
+  for (size_t k = 0; k < jobs.size(); ++k)
+    csvRow(csv, jobs[k], measured[k], sweeps, stages, fronts.all[k], fronts.ownTechnique[k], terms);
+  csvBaselines(csv, baselines, sweeps.size(), stages.size(), terms);
+  writeFileAtomically(o.csv, csv.str());
+  std::cout << "wrote " << o.csv << " (" << jobs.size() << " rows)\n";
+  if (!o.plot.empty()) plotStudy(o, ref);
   return kExitOk;
 }
 

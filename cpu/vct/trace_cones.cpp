@@ -14,40 +14,146 @@
 #include "shaders/shared/vct/trace_cones_kernel.h"
 
 namespace voxgi::cpu {
+namespace {
+
+// A pixel of a tile with a surface, what its cones start from, and its direct light as the lights
+// add up.
+struct Pixel {
+  size_t e;
+  glm::vec3 p, n, origin, mirror;
+  glm::vec3 tangent, bitangent;  // the diffuse cones' frame around n
+  shared::ObjectData object;
+  shared::DirectLight direct;
+};
+
+// The stage's planned buffers, allocated; the others stay empty and are not written.
+struct TermBuffers {
+  Buffer directDiffuse, indirectDiffuse, directSpecular, indirectSpecular, ambient;
+
+  TermBuffers(const EffectPlan& plan, glm::ivec3 extent) {
+    const auto planned = [&](BufferId id) {
+      return bufferNeeded(bufferSpec(id), plan) ? Buffer(id, extent) : Buffer();
+    };
+    directDiffuse = planned(BufferId::vct_trace_cones_direct_diffuse);
+    indirectDiffuse = planned(BufferId::vct_trace_cones_indirect_diffuse);
+    directSpecular = planned(BufferId::vct_trace_cones_direct_specular);
+    indirectSpecular = planned(BufferId::vct_trace_cones_indirect_specular);
+    ambient = planned(BufferId::vct_trace_cones_ambient_occlusion);
+  }
+  void write(size_t e, const shared::PixelLight& light) {
+    directDiffuse.setVec3(e, light.directDiffuse);
+    indirectDiffuse.setVec3(e, light.indirectDiffuse);
+    if (directSpecular.spec != nullptr) directSpecular.setVec3(e, light.directSpecular);
+    if (indirectSpecular.spec != nullptr) indirectSpecular.setVec3(e, light.indirectSpecular);
+    if (ambient.spec != nullptr) ambient.set(e, 0, light.ambientOcclusion);
+  }
+  void putInto(BufferSet& buffers) {
+    for (Buffer* b :
+         {&directDiffuse, &indirectDiffuse, &directSpecular, &indirectSpecular, &ambient})
+      if (b->spec != nullptr) buffers.put(std::move(*b));
+  }
+};
+
+// The kernel's phases over one tile's pixels, each phase's cones marched together in lanes.
+class TileTracer {
+ public:
+  TileTracer(const ConeVolumes& volumes, const ConeTraceSetup& setup)
+      : volumes_(volumes), params_(setup.params) {}
+
+  // Direct light, one light at a time in the kernel's order.
+  void addDirectLight(std::vector<Pixel>& pixels) {
+    std::vector<shared::LightPath> paths(pixels.size());
+    for (int i = 0; i < params_.modes.x; ++i) {
+      jobs_.clear();
+      for (size_t k = 0; k < pixels.size(); ++k) {
+        const Pixel& px = pixels[k];
+        paths[k] = shared::lightPath(volumes_.lightAt(i), px.p, px.n, params_);
+        if (paths[k].arrives && paths[k].shadowLength > 0.0f)
+          jobs_.push_back({px.origin, paths[k].toLight, paths[k].cosine, paths[k].tanHalf,
+                           paths[k].shadowLength});
+      }
+      march(shared::shadowMarchKind(params_));
+      size_t hit = 0;
+      for (size_t k = 0; k < pixels.size(); ++k) {
+        if (!paths[k].arrives) continue;
+        const float visibility =
+            paths[k].shadowLength > 0.0f ? 1.0f - hits_[hit++].occlusion : 1.0f;
+        Pixel& px = pixels[k];
+        px.direct =
+            shared::addLight(px.direct, paths[k], visibility, px.mirror, px.object, params_);
+      }
+    }
+  }
+
+  // The diffuse cones, cone by cone: a lane's next cone is its neighbour's, much like it.
+  std::vector<shared::DiffuseSum> diffuse(const std::vector<Pixel>& pixels) {
+    const int coneCount = params_.grid.w;
+    jobs_.clear();
+    for (int c = 0; c < coneCount; ++c)
+      for (const Pixel& px : pixels) {
+        const shared::ConeData cone = volumes_.coneAt(c);
+        jobs_.push_back({px.origin,
+                         shared::diffuseConeDirection(px.tangent, px.bitangent, px.n, cone),
+                         cone.direction.z, cone.direction.w, params_.march.w});
+      }
+    march(shared::diffuseMarchKind(params_));
+    std::vector<shared::DiffuseSum> sums(pixels.size(), shared::noDiffuse());
+    for (int c = 0; c < coneCount; ++c)
+      for (size_t k = 0; k < pixels.size(); ++k)
+        sums[k] = shared::addDiffuseCone(sums[k], hits_[size_t(c) * pixels.size() + k],
+                                         volumes_.coneAt(c));
+    return sums;
+  }
+
+  // The specular cones of glossy pixels, then every pixel's terms.
+  void finish(const std::vector<Pixel>& pixels, const std::vector<shared::DiffuseSum>& diffuse,
+              TermBuffers& out) {
+    jobs_.clear();
+    for (const Pixel& px : pixels)
+      if (px.object.specular.x > 0.0f)
+        jobs_.push_back({px.origin, px.mirror, shared::dot3(px.n, px.mirror), px.object.specular.x,
+                         params_.march.w});
+    march(shared::kMarchRadiance);
+    size_t specular = 0;
+    for (size_t k = 0; k < pixels.size(); ++k) {
+      const Pixel& px = pixels[k];
+      const shared::ConeHit specularHit =
+          px.object.specular.x > 0.0f ? hits_[specular++] : shared::noConeHit();
+      out.write(px.e, shared::finishPixel(px.direct, diffuse[k], specularHit, px.object, params_));
+    }
+  }
+
+ private:
+  void march(int kind) {
+    hits_.resize(jobs_.size());
+    marchCones(volumes_, jobs_, kind, params_, hits_);
+  }
+
+  const ConeVolumes& volumes_;
+  const shared::ConeTraceParams& params_;
+  std::vector<ConeJob> jobs_;
+  std::vector<shared::ConeHit> hits_;
+};
+
+}  // namespace
+
 void vct::trace_cones(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, StageId::vct_trace_cones);
-  const Scene& scene = ctx.scene;
-  const int n = scene.grid.resolution;
+  const int n = ctx.scene.grid.resolution;
   const ConeTraceSetup setup = prepareConeTrace(ctx);
   const RadianceBuffers lit = finalRadiance(ctx);
   const ConeVolumes volumes(buffers.at(lit.radiance), buffers.at(lit.pyramid), ctx.settings.vct.mip,
                             n, setup.lights, setup.cones);
-
   const Buffer& position = buffers.at(BufferId::common_gbuffer_pixel_position);
   const Buffer& normal = buffers.at(BufferId::common_gbuffer_pixel_normal);
   const Buffer& objectId = buffers.at(BufferId::common_gbuffer_object_id);
   const glm::ivec3 extent = position.extent;
-  // The planned buffers of the stage, allocated; the others stay empty and are not written.
-  const auto planned = [&](BufferId id) {
-    return bufferNeeded(bufferSpec(id), ctx.plan) ? Buffer(id, extent) : Buffer();
-  };
-  Buffer directDiffuse = planned(BufferId::vct_trace_cones_direct_diffuse);
-  Buffer indirectDiffuse = planned(BufferId::vct_trace_cones_indirect_diffuse);
-  Buffer directSpecular = planned(BufferId::vct_trace_cones_direct_specular);
-  Buffer indirectSpecular = planned(BufferId::vct_trace_cones_indirect_specular);
-  Buffer ambient = planned(BufferId::vct_trace_cones_ambient_occlusion);
+  TermBuffers terms(ctx.plan, extent);
 
   // 8x8 tiles: neighbouring pixels' cones read the same voxels (cache) and end after similar
   // numbers of steps (lanes), and small tasks balance pixels of very different cost.
   const tbb::blocked_range2d<int> tiles(0, extent.y, 8, 0, extent.x, 8);
   parallelFor(tiles, [&](const tbb::blocked_range2d<int>& tile) {
-    struct Pixel {
-      size_t e;
-      glm::vec3 p, n, origin, mirror;
-      glm::vec3 tangent, bitangent;  // the diffuse cones' frame around n
-      shared::ObjectData object;
-      shared::DirectLight direct;
-    };
     std::vector<Pixel> pixels;
     for (int y = tile.rows().begin(); y != tile.rows().end(); ++y)
       for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) {
@@ -61,73 +167,12 @@ void vct::trace_cones(const StageContext& ctx, BufferSet& buffers) {
                           shared::mirrorDirection(p, nrm, setup.params), t, b, setup.objects.at(id),
                           shared::noDirectLight()});
       }
-    std::vector<ConeJob> jobs;
-    std::vector<shared::ConeHit> hits;
-    const auto march = [&](int kind) {
-      hits.resize(jobs.size());
-      marchCones(volumes, jobs, kind, setup.params, hits);
-    };
-    // Direct light, one light at a time in the kernel's order.
-    std::vector<shared::LightPath> paths(pixels.size());
-    for (int i = 0; i < setup.params.modes.x; ++i) {
-      jobs.clear();
-      for (size_t k = 0; k < pixels.size(); ++k) {
-        const Pixel& px = pixels[k];
-        paths[k] = shared::lightPath(volumes.lightAt(i), px.p, px.n, setup.params);
-        if (paths[k].arrives && paths[k].shadowLength > 0.0f)
-          jobs.push_back({px.origin, paths[k].toLight, paths[k].cosine, paths[k].tanHalf,
-                          paths[k].shadowLength});
-      }
-      march(shared::shadowMarchKind(setup.params));
-      size_t hit = 0;
-      for (size_t k = 0; k < pixels.size(); ++k) {
-        if (!paths[k].arrives) continue;
-        const float visibility = paths[k].shadowLength > 0.0f ? 1.0f - hits[hit++].occlusion : 1.0f;
-        Pixel& px = pixels[k];
-        px.direct =
-            shared::addLight(px.direct, paths[k], visibility, px.mirror, px.object, setup.params);
-      }
-    }
-    // The diffuse cones, cone by cone: a lane's next cone is its neighbour's, much like it.
-    const int coneCount = setup.params.grid.w;
-    jobs.clear();
-    for (int c = 0; c < coneCount; ++c)
-      for (const Pixel& px : pixels) {
-        const shared::ConeData cone = volumes.coneAt(c);
-        jobs.push_back({px.origin,
-                        shared::diffuseConeDirection(px.tangent, px.bitangent, px.n, cone),
-                        cone.direction.z, cone.direction.w, setup.params.march.w});
-      }
-    march(shared::diffuseMarchKind(setup.params));
-    std::vector<shared::DiffuseSum> diffuse(pixels.size(), shared::noDiffuse());
-    for (int c = 0; c < coneCount; ++c)
-      for (size_t k = 0; k < pixels.size(); ++k)
-        diffuse[k] = shared::addDiffuseCone(diffuse[k], hits[size_t(c) * pixels.size() + k],
-                                            volumes.coneAt(c));
-    // The specular cones of glossy pixels.
-    jobs.clear();
-    for (const Pixel& px : pixels)
-      if (px.object.specular.x > 0.0f)
-        jobs.push_back({px.origin, px.mirror, shared::dot3(px.n, px.mirror), px.object.specular.x,
-                        setup.params.march.w});
-    march(shared::kMarchRadiance);
-    size_t specular = 0;
-    for (size_t k = 0; k < pixels.size(); ++k) {
-      const Pixel& px = pixels[k];
-      const shared::ConeHit specularHit =
-          px.object.specular.x > 0.0f ? hits[specular++] : shared::noConeHit();
-      const shared::PixelLight light =
-          shared::finishPixel(px.direct, diffuse[k], specularHit, px.object, setup.params);
-      const size_t e = px.e;
-      directDiffuse.setVec3(e, light.directDiffuse);
-      indirectDiffuse.setVec3(e, light.indirectDiffuse);
-      if (directSpecular.spec != nullptr) directSpecular.setVec3(e, light.directSpecular);
-      if (indirectSpecular.spec != nullptr) indirectSpecular.setVec3(e, light.indirectSpecular);
-      if (ambient.spec != nullptr) ambient.set(e, 0, light.ambientOcclusion);
-    }
+    TileTracer tracer(volumes, setup);
+    tracer.addDirectLight(pixels);
+    const std::vector<shared::DiffuseSum> diffuse = tracer.diffuse(pixels);
+    tracer.finish(pixels, diffuse, terms);
   });
-  for (Buffer* b : {&directDiffuse, &indirectDiffuse, &directSpecular, &indirectSpecular, &ambient})
-    if (b->spec != nullptr) buffers.put(std::move(*b));
+  terms.putInto(buffers);
 }
 
 }  // namespace voxgi::cpu
