@@ -66,61 +66,64 @@ size_t typeComponents(const std::string& type) {
   return 0;
 }
 
-}  // namespace
-
-void checkGltf(const std::string& path) {
-  const std::string bytes = readInputFile(path, "", "glTF file");
-  const uint64_t size = bytes.size();
+// The document's JSON text and, for a GLB, its BIN chunk's size, from the container's header.
+struct GltfContainer {
   std::string text;
+  bool glb = false;
   uint64_t binChunk = 0;  // bytes of the GLB's BIN chunk
-  const bool glb = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
-  if (glb) {
-    if (bytes.size() < 20) throw InputError(path, "header", "shorter than a GLB header");
-    if (le32(bytes, 4) != 2) throw InputError(path, "header", "not glTF version 2");
-    if (le32(bytes, 8) != size)
-      throw InputError(path, "header",
-                       "declares " + std::to_string(le32(bytes, 8)) + " bytes, the file has " +
-                           std::to_string(size));
-    size_t at = 12;
-    for (int chunk = 0; at + 8 <= bytes.size(); ++chunk) {
-      const uint64_t length = le32(bytes, at);
-      const std::string type = bytes.substr(at + 4, 4);
-      if (at + 8 + length > bytes.size())
-        throw InputError(path, "chunk " + std::to_string(chunk), "runs past the end of the file");
-      if (chunk == 0 && type != std::string("JSON", 4))
-        throw InputError(path, "chunk 0", "the first chunk must be JSON");
-      if (chunk == 0) text = bytes.substr(at + 8, length);
-      if (chunk == 1 && type == std::string("BIN\0", 4)) binChunk = length;
-      at += 8 + length;
-    }
-  } else {
-    text = bytes;
+};
+
+GltfContainer readContainer(const std::string& path, const std::string& bytes) {
+  GltfContainer c;
+  c.glb = bytes.size() >= 4 && bytes.compare(0, 4, "glTF") == 0;
+  if (!c.glb) {
+    c.text = bytes;
+    return c;
   }
-  json doc;
-  try {
-    doc = json::parse(text);
-  } catch (const json::exception& e) {
-    throw InputError(path, "", std::string("malformed glTF JSON: ") + e.what());
+  if (bytes.size() < 20) throw InputError(path, "header", "shorter than a GLB header");
+  if (le32(bytes, 4) != 2) throw InputError(path, "header", "not glTF version 2");
+  if (le32(bytes, 8) != bytes.size())
+    throw InputError(path, "header",
+                     "declares " + std::to_string(le32(bytes, 8)) + " bytes, the file has " +
+                         std::to_string(bytes.size()));
+  size_t at = 12;
+  for (int chunk = 0; at + 8 <= bytes.size(); ++chunk) {
+    const uint64_t length = le32(bytes, at);
+    const std::string type = bytes.substr(at + 4, 4);
+    if (at + 8 + length > bytes.size())
+      throw InputError(path, "chunk " + std::to_string(chunk), "runs past the end of the file");
+    if (chunk == 0 && type != std::string("JSON", 4))
+      throw InputError(path, "chunk 0", "the first chunk must be JSON");
+    if (chunk == 0) c.text = bytes.substr(at + 8, length);
+    if (chunk == 1 && type == std::string("BIN\0", 4)) c.binChunk = length;
+    at += 8 + length;
   }
-  if (!doc.is_object()) throw InputError(path, "", "not a glTF document (no top-level object)");
-  const auto array = [&](const char* key) {
-    const auto it = doc.find(key);
-    if (it == doc.end()) return json::array();
-    if (!it->is_array()) throw InputError(path, key, "must be an array");
-    return *it;
-  };
+  return c;
+}
+
+// The top-level array `key` (empty when absent).
+json topArray(const std::string& path, const json& doc, const char* key) {
+  const auto it = doc.find(key);
+  if (it == doc.end()) return json::array();
+  if (!it->is_array()) throw InputError(path, key, "must be an array");
+  return *it;
+}
+
+// Each buffer's declared length, checked against its file or the BIN chunk.
+std::vector<uint64_t> checkBuffers(const std::string& path, const json& doc,
+                                   const GltfContainer& c) {
   std::vector<uint64_t> bufferBytes;
-  const json buffers = array("buffers");
+  const json buffers = topArray(path, doc, "buffers");
   for (size_t i = 0; i < buffers.size(); ++i) {
     const std::string field = "buffers[" + std::to_string(i) + "]";
     if (!buffers[i].is_object()) throw InputError(path, field, "must be an object");
     const uint64_t length = count(path, buffers[i], "byteLength", field, 0);
     const auto uri = buffers[i].find("uri");
-    uint64_t available = binChunk;
+    uint64_t available = c.binChunk;
     if (uri != buffers[i].end()) {
       if (!uri->is_string()) throw InputError(path, field + ".uri", "must be a string");
       available = uriBytes(path, uri->get<std::string>(), field + ".uri");
-    } else if (!glb || i != 0) {
+    } else if (!c.glb || i != 0) {
       throw InputError(path, field, "has no uri (only a GLB's first buffer may use its BIN chunk)");
     }
     if (length > available)
@@ -129,8 +132,14 @@ void checkGltf(const std::string& path) {
           std::to_string(length) + " bytes declared, " + std::to_string(available) + " available");
     bufferBytes.push_back(length);
   }
+  return bufferBytes;
+}
+
+// Each buffer view's length, checked to lie inside its buffer.
+std::vector<uint64_t> checkViews(const std::string& path, const json& doc,
+                                 const std::vector<uint64_t>& bufferBytes) {
   std::vector<uint64_t> viewBytes;
-  const json views = array("bufferViews");
+  const json views = topArray(path, doc, "bufferViews");
   for (size_t i = 0; i < views.size(); ++i) {
     const std::string field = "bufferViews[" + std::to_string(i) + "]";
     if (!views[i].is_object()) throw InputError(path, field, "must be an object");
@@ -142,7 +151,13 @@ void checkGltf(const std::string& path) {
       throw InputError(path, field, "runs past the end of buffers[" + std::to_string(buffer) + "]");
     viewBytes.push_back(length);
   }
-  const json accessors = array("accessors");
+  return viewBytes;
+}
+
+// Each accessor's elements inside its view (or, without one, no more than the file has bytes).
+void checkAccessors(const std::string& path, const json& doc, uint64_t fileBytes,
+                    const std::vector<uint64_t>& viewBytes) {
+  const json accessors = topArray(path, doc, "accessors");
   for (size_t i = 0; i < accessors.size(); ++i) {
     const std::string field = "accessors[" + std::to_string(i) + "]";
     const json& a = accessors[i];
@@ -156,7 +171,7 @@ void checkGltf(const std::string& path) {
       throw InputError(path, field, "unknown componentType or type");
     if (!a.contains("bufferView")) {
       // Sparse or zero-filled: Assimp still allocates count elements; bound them by the file.
-      if (n > size)
+      if (n > fileBytes)
         throw InputError(path, field + ".count", "more elements than the file has bytes");
       continue;
     }
@@ -169,6 +184,22 @@ void checkGltf(const std::string& path) {
       throw InputError(path, field,
                        "needs more bytes than bufferViews[" + std::to_string(view) + "] holds");
   }
+}
+
+}  // namespace
+
+void checkGltf(const std::string& path) {
+  const std::string bytes = readInputFile(path, "", "glTF file");
+  const GltfContainer container = readContainer(path, bytes);
+  json doc;
+  try {
+    doc = json::parse(container.text);
+  } catch (const json::exception& e) {
+    throw InputError(path, "", std::string("malformed glTF JSON: ") + e.what());
+  }
+  if (!doc.is_object()) throw InputError(path, "", "not a glTF document (no top-level object)");
+  const std::vector<uint64_t> bufferBytes = checkBuffers(path, doc, container);
+  checkAccessors(path, doc, bytes.size(), checkViews(path, doc, bufferBytes));
 }
 
 }  // namespace voxgi

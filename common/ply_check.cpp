@@ -170,6 +170,87 @@ struct BinaryReader {
   }
 };
 
+// Assimp's header parser stops at a NUL and treats other control bytes (a carriage return inside
+// a line) its own way: a header it could read differently from this check is refused. Carriage
+// returns only as CRLF line ends.
+void refuseControlCharacters(const std::string& path, const std::string& where,
+                             std::string_view line) {
+  const std::string_view body =
+      !line.empty() && line.back() == '\r' ? line.substr(0, line.size() - 1) : line;
+  for (const char c : body)
+    if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f)
+      throw InputError(path, where, "a control character in the header");
+}
+
+PlyHeader::Format readFormat(const std::string& path, const std::string& where,
+                             const std::vector<std::string_view>& w) {
+  if (w.size() != 3 || w[2] != "1.0")
+    throw InputError(path, where,
+                     "expected 'format ascii|binary_little_endian|"
+                     "binary_big_endian 1.0'");
+  if (w[1] == "ascii") return PlyHeader::Format::ascii;
+  if (w[1] == "binary_little_endian") return PlyHeader::Format::binary_little_endian;
+  if (w[1] == "binary_big_endian") return PlyHeader::Format::binary_big_endian;
+  throw InputError(path, where, "unknown format '" + std::string(w[1]) + "'");
+}
+
+PlyElement readElement(const std::string& path, const std::string& where,
+                       const std::vector<std::string_view>& w) {
+  uint64_t count = 0;
+  if (w.size() != 3 ||
+      std::from_chars(w[2].data(), w[2].data() + w[2].size(), count).ec != std::errc())
+    throw InputError(path, where, "expected 'element NAME COUNT'");
+  // Assimp 5.2 parses the count of an element it does not know from the start of its name (0, or
+  // whatever digits the name starts with), so such an element shifts every byte it reads after
+  // it; it reads counts as 32 bits.
+  static const char* known[] = {"vertex", "face", "tristrips", "edge", "material"};
+  if (std::none_of(std::begin(known), std::end(known), [&](const char* k) { return w[1] == k; }))
+    throw InputError(path, where,
+                     "element '" + std::string(w[1]) +
+                         "': voxgi reads vertex, face, tristrips, edge and material elements");
+  if (count > 0xffffffffu) throw InputError(path, where, "more than 2^32 - 1 instances");
+  return {std::string(w[1]), count, {}};
+}
+
+PlyProperty readProperty(const std::string& path, const std::string& where,
+                         const std::vector<std::string_view>& w) {
+  PlyProperty p;
+  const bool ok = w.size() == 5 && w[1] == "list"
+                      ? parseType(std::string(w[2]), p.countType) &&
+                            parseType(std::string(w[3]), p.type) && plyIntegral(p.countType)
+                      : w.size() == 3 && parseType(std::string(w[1]), p.type);
+  if (!ok)
+    throw InputError(path, where,
+                     "expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME' "
+                     "with an integer count type");
+  p.list = w.size() == 5;
+  p.name = std::string(w.back());
+  return p;
+}
+
+// The least the declared elements can take, checked before anything is read or allocated; and
+// an instance of an element without properties takes no bytes, so its count would not be bounded
+// by the file's size (10^18 of them took forever to walk).
+void checkDeclaredSize(const std::string& path, const PlyHeader& h, uint64_t fileSize) {
+  for (const PlyElement& e : h.elements)
+    if (e.properties.empty() && e.count > 0)
+      throw InputError(path, "element " + e.name, "declares no properties");
+  const uint64_t body = fileSize - h.bodyOffset;
+  long double least = 0.0L;
+  for (const PlyElement& e : h.elements) {
+    uint64_t perItem = 0;
+    for (const PlyProperty& p : e.properties)
+      perItem +=
+          h.format == PlyHeader::Format::ascii ? 2 : plyTypeSize(p.list ? p.countType : p.type);
+    least += static_cast<long double>(e.count) * static_cast<long double>(perItem);
+  }
+  if (least > static_cast<long double>(body))
+    throw InputError(path, "header",
+                     "the declared elements need at least " +
+                         std::to_string(uint64_t(std::min<long double>(least, 1.8e19L))) +
+                         " bytes, the file has " + std::to_string(body) + " after the header");
+}
+
 }  // namespace
 
 PlyHeader readPlyHeader(const std::string& path, const std::string& bytes) {
@@ -192,14 +273,7 @@ PlyHeader readPlyHeader(const std::string& path, std::string_view bytes, uint64_
     ++lineNumber;
     const auto w = words(line);
     const std::string where = "header line " + std::to_string(lineNumber);
-    // Assimp's header parser stops at a NUL and treats other control bytes (a carriage return
-    // inside a line) its own way: a header it could read differently from this check is refused.
-    // Carriage returns only as CRLF line ends.
-    const std::string_view body =
-        !line.empty() && line.back() == '\r' ? line.substr(0, line.size() - 1) : line;
-    for (const char c : body)
-      if ((static_cast<unsigned char>(c) < 0x20 && c != '\t') || c == 0x7f)
-        throw InputError(path, where, "a control character in the header");
+    refuseControlCharacters(path, where, line);
     if (lineNumber == 1) {
       if (w.size() != 1 || w[0] != "ply")
         throw InputError(path, where, "not a PLY file (no 'ply')");
@@ -220,49 +294,13 @@ PlyHeader readPlyHeader(const std::string& path, std::string_view bytes, uint64_
     if (w[0] == "comment" || w[0] == "obj_info") continue;
     if (w[0] == "format") {
       if (sawFormat) throw InputError(path, where, "a second format line");
-      if (w.size() != 3 || w[2] != "1.0")
-        throw InputError(path, where,
-                         "expected 'format ascii|binary_little_endian|"
-                         "binary_big_endian 1.0'");
-      if (w[1] == "ascii")
-        h.format = PlyHeader::Format::ascii;
-      else if (w[1] == "binary_little_endian")
-        h.format = PlyHeader::Format::binary_little_endian;
-      else if (w[1] == "binary_big_endian")
-        h.format = PlyHeader::Format::binary_big_endian;
-      else
-        throw InputError(path, where, "unknown format '" + std::string(w[1]) + "'");
+      h.format = readFormat(path, where, w);
       sawFormat = true;
     } else if (w[0] == "element") {
-      uint64_t count = 0;
-      if (w.size() != 3 ||
-          std::from_chars(w[2].data(), w[2].data() + w[2].size(), count).ec != std::errc())
-        throw InputError(path, where, "expected 'element NAME COUNT'");
-      // Assimp 5.2 parses the count of an element it does not know from the start of its name
-      // (0, or whatever digits the name starts with), so such an element shifts every byte it
-      // reads after it; it reads counts as 32 bits.
-      static const char* known[] = {"vertex", "face", "tristrips", "edge", "material"};
-      if (std::none_of(std::begin(known), std::end(known),
-                       [&](const char* k) { return w[1] == k; }))
-        throw InputError(path, where,
-                         "element '" + std::string(w[1]) +
-                             "': voxgi reads vertex, face, tristrips, edge and material elements");
-      if (count > 0xffffffffu) throw InputError(path, where, "more than 2^32 - 1 instances");
-      h.elements.push_back({std::string(w[1]), count, {}});
+      h.elements.push_back(readElement(path, where, w));
     } else if (w[0] == "property") {
       if (h.elements.empty()) throw InputError(path, where, "property before any element");
-      PlyProperty p;
-      const bool ok = w.size() == 5 && w[1] == "list"
-                          ? parseType(std::string(w[2]), p.countType) &&
-                                parseType(std::string(w[3]), p.type) && plyIntegral(p.countType)
-                          : w.size() == 3 && parseType(std::string(w[1]), p.type);
-      if (!ok)
-        throw InputError(path, where,
-                         "expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME' "
-                         "with an integer count type");
-      p.list = w.size() == 5;
-      p.name = std::string(w.back());
-      h.elements.back().properties.push_back(p);
+      h.elements.back().properties.push_back(readProperty(path, where, w));
     } else if (w[0] == "end_header" && w.size() == 1) {
       ended = true;
     } else {
@@ -270,27 +308,8 @@ PlyHeader readPlyHeader(const std::string& path, std::string_view bytes, uint64_
     }
   }
   if (!sawFormat) throw InputError(path, "header", "no format line");
-  // An instance of an element without properties takes no bytes, so its count would not be
-  // bounded by the file's size (10^18 of them took forever to walk).
-  for (const PlyElement& e : h.elements)
-    if (e.properties.empty() && e.count > 0)
-      throw InputError(path, "element " + e.name, "declares no properties");
   h.bodyOffset = at;
-  // The least the declared elements can take, checked before anything is read or allocated.
-  const uint64_t body = fileSize - at;
-  long double least = 0.0L;
-  for (const PlyElement& e : h.elements) {
-    uint64_t perItem = 0;
-    for (const PlyProperty& p : e.properties)
-      perItem +=
-          h.format == PlyHeader::Format::ascii ? 2 : plyTypeSize(p.list ? p.countType : p.type);
-    least += static_cast<long double>(e.count) * static_cast<long double>(perItem);
-  }
-  if (least > static_cast<long double>(body))
-    throw InputError(path, "header",
-                     "the declared elements need at least " +
-                         std::to_string(uint64_t(std::min<long double>(least, 1.8e19L))) +
-                         " bytes, the file has " + std::to_string(body) + " after the header");
+  checkDeclaredSize(path, h, fileSize);
   return h;
 }
 
