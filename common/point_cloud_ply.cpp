@@ -157,49 +157,40 @@ bool plyIsPointCloud(const PlyHeader& header) {
   return vertices;
 }
 
-PlyPoints readPlyPoints(const std::string& path) {
-  const std::string bytes = readInputFile(path, "", "PLY file");
-  const PlyHeader h = readPlyHeader(path, bytes);
+namespace {
+
+// The vertex element of a file that is a point cloud (refused otherwise).
+const PlyElement& pointElement(const std::string& path, const PlyHeader& h) {
   if (!plyIsPointCloud(h))
     throw InputError(path, "", "not a point cloud (one vertex element, no faces)");
-  const auto it = std::find_if(h.elements.begin(), h.elements.end(),
-                               [](const PlyElement& e) { return e.name == "vertex"; });
-  if (std::count_if(h.elements.begin(), h.elements.end(),
-                    [](const PlyElement& e) { return e.name == "vertex"; }) > 1)
+  const auto isVertex = [](const PlyElement& e) { return e.name == "vertex"; };
+  if (std::count_if(h.elements.begin(), h.elements.end(), isVertex) > 1)
     throw InputError(path, "element vertex", "a second vertex element");
-  const PlyElement& vertex = *it;
-  const Layout l = layoutOf(path, vertex);
-  const size_t count = vertex.count;
-  const size_t props = vertex.properties.size();
+  return *std::find_if(h.elements.begin(), h.elements.end(), isVertex);
+}
 
-  // Sizes are checked before anything is allocated: a binary body must be exactly the vertices.
-  size_t stride = 0;
-  for (const PlyProperty& p : vertex.properties) stride += plyTypeSize(p.type);
-  const bool ascii = h.format == PlyHeader::Format::ascii;
-  const size_t body = bytes.size() - h.bodyOffset;
-  if (!ascii && body != count * stride)
-    throw InputError(path, "element vertex",
-                     std::to_string(count) + " vertices of " + std::to_string(stride) +
-                         " bytes take " + std::to_string(count * stride) + " bytes, the file has " +
-                         std::to_string(body) + " after the header");
+// What a vertex element decodes into, and where it throws.
+struct PointReader {
+  const std::string& path;
+  const std::string& bytes;
+  const PlyHeader& h;
+  const PlyElement& vertex;
+  Layout l;
+  PlyPoints& out;
 
-  PlyPoints out;
-  out.positions.resize(count);
-  if (l.normal[0] >= 0) out.normals.resize(count);
-  if (l.color[0] >= 0) out.colors.resize(count);
-  if (l.radius >= 0) out.radii.resize(count);
-  const auto fail = [&](size_t i, const std::string& what) {
+  [[noreturn]] void fail(size_t i, const std::string& what) const {
     throw InputError(path, "vertex " + std::to_string(i), what);
-  };
+  }
 
-  if (!ascii) {
+  // Binary: decoded a block at a time, one property after another; the first bad vertex is
+  // reported, whatever order the threads run in.
+  void binary(size_t stride) const {
+    const size_t props = vertex.properties.size(), count = vertex.count;
     std::vector<size_t> offset(props);
     for (size_t p = 1; p < props; ++p)
       offset[p] = offset[p - 1] + plyTypeSize(vertex.properties[p - 1].type);
     const bool swap = (h.format == PlyHeader::Format::binary_big_endian) !=
                       (std::endian::native == std::endian::big);
-    // Decoded a block at a time, one property after another; the first bad vertex is reported,
-    // whatever order the threads run in.
     std::atomic<size_t> firstBad{std::numeric_limits<size_t>::max()};
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data() + h.bodyOffset);
     parallelFor(
@@ -227,19 +218,27 @@ PlyPoints readPlyPoints(const std::string& path) {
                      &v[p]);
       fail(bad, store(out, bad, v.data(), l, vertex));
     }
-    return out;
   }
 
   // ASCII: one line of exactly the declared values per vertex, whitespace after the last.
-  size_t at = h.bodyOffset;
-  std::vector<double> v(props);
-  for (size_t i = 0; i < count; ++i) {
-    if (at >= bytes.size()) fail(i, "missing: the file ends early");
-    const size_t eol = std::min(bytes.find('\n', at), bytes.size());
-    const char* c = bytes.data() + at;
-    const char* end = bytes.data() + eol;
-    at = eol + 1;
-    for (size_t p = 0; p < props; ++p) {
+  void ascii() const {
+    const size_t props = vertex.properties.size();
+    size_t at = h.bodyOffset;
+    std::vector<double> v(props);
+    for (size_t i = 0; i < vertex.count; ++i) {
+      if (at >= bytes.size()) fail(i, "missing: the file ends early");
+      const size_t eol = std::min(bytes.find('\n', at), bytes.size());
+      asciiLine(i, bytes.data() + at, bytes.data() + eol, v);
+      at = eol + 1;
+      if (const std::string what = store(out, i, v.data(), l, vertex); !what.empty()) fail(i, what);
+    }
+    for (; at < bytes.size(); ++at)
+      if (!std::isspace(static_cast<unsigned char>(bytes[at])))
+        throw InputError(path, "body", "data after the last vertex");
+  }
+
+  void asciiLine(size_t i, const char* c, const char* end, std::vector<double>& v) const {
+    for (size_t p = 0; p < v.size(); ++p) {
       while (c < end && (*c == ' ' || *c == '\t' || *c == '\r')) ++c;
       if (c == end) fail(i, "the line has too few values");
       const char* word = c;
@@ -253,11 +252,39 @@ PlyPoints readPlyPoints(const std::string& path) {
     }
     while (c < end && (*c == ' ' || *c == '\t' || *c == '\r')) ++c;
     if (c != end) fail(i, "the line has more values than the header declares");
-    if (const std::string what = store(out, i, v.data(), l, vertex); !what.empty()) fail(i, what);
   }
-  for (; at < bytes.size(); ++at)
-    if (!std::isspace(static_cast<unsigned char>(bytes[at])))
-      throw InputError(path, "body", "data after the last vertex");
+};
+
+}  // namespace
+
+PlyPoints readPlyPoints(const std::string& path) {
+  const std::string bytes = readInputFile(path, "", "PLY file");
+  const PlyHeader h = readPlyHeader(path, bytes);
+  const PlyElement& vertex = pointElement(path, h);
+  const Layout l = layoutOf(path, vertex);
+  const size_t count = vertex.count;
+
+  // Sizes are checked before anything is allocated: a binary body must be exactly the vertices.
+  size_t stride = 0;
+  for (const PlyProperty& p : vertex.properties) stride += plyTypeSize(p.type);
+  const bool ascii = h.format == PlyHeader::Format::ascii;
+  const size_t body = bytes.size() - h.bodyOffset;
+  if (!ascii && body != count * stride)
+    throw InputError(path, "element vertex",
+                     std::to_string(count) + " vertices of " + std::to_string(stride) +
+                         " bytes take " + std::to_string(count * stride) + " bytes, the file has " +
+                         std::to_string(body) + " after the header");
+
+  PlyPoints out;
+  out.positions.resize(count);
+  if (l.normal[0] >= 0) out.normals.resize(count);
+  if (l.color[0] >= 0) out.colors.resize(count);
+  if (l.radius >= 0) out.radii.resize(count);
+  const PointReader reader{path, bytes, h, vertex, l, out};
+  if (ascii)
+    reader.ascii();
+  else
+    reader.binary(stride);
   return out;
 }
 

@@ -359,60 +359,66 @@ void validateGeometry(const Scene& scene) {
   }
 }
 
-Scene loadScene(const std::string& path) {
+namespace {
+
+// A mesh or point-cloud file on its own: its geometry with default materials, a 64^3 grid fitted
+// to it and the camera on +z looking at its centre.
+Scene loadBareFile(const std::string& path) {
   Scene scene;
   scene.file = path;
-  const std::string ext = fs::path(path).extension().string();
-  if (ext != ".json") {
-    requireInputFile(path, "", "mesh file");
-    if (isPointCloudFile(path)) {
-      importPointCloud(scene, path, glm::dmat4(1.0), defaultMaterial(scene), {});
-    } else {
-      importMeshFile(scene, path, glm::dmat4(1.0), std::nullopt);
-    }
-    validateGeometry(scene);
-    scene.grid = fitGrid(scene.bounds(), 64);
-    checkGrid(scene, path);
-    const auto [lo, hi] = scene.bounds();
-    if (lo.x <= hi.x) {  // look at the mesh from +z
-      scene.camera.lookAt = 0.5 * (lo + hi);
-      scene.camera.position = scene.camera.lookAt + glm::dvec3(0.0, 0.0, 2.0 * scene.grid.size);
-    }
-    estimatePointCloudProperties(scene, std::vector<PointCloudOptions>(scene.pointClouds.size()));
-    return scene;
+  requireInputFile(path, "", "mesh file");
+  if (isPointCloudFile(path)) {
+    importPointCloud(scene, path, glm::dmat4(1.0), defaultMaterial(scene), {});
+  } else {
+    importMeshFile(scene, path, glm::dmat4(1.0), std::nullopt);
   }
+  validateGeometry(scene);
+  scene.grid = fitGrid(scene.bounds(), 64);
+  checkGrid(scene, path);
+  const auto [lo, hi] = scene.bounds();
+  if (lo.x <= hi.x) {  // look at the mesh from +z
+    scene.camera.lookAt = 0.5 * (lo + hi);
+    scene.camera.position = scene.camera.lookAt + glm::dvec3(0.0, 0.0, 2.0 * scene.grid.size);
+  }
+  estimatePointCloudProperties(scene, std::vector<PointCloudOptions>(scene.pointClouds.size()));
+  return scene;
+}
+
+json parseSceneFile(const std::string& path) {
   requireInputFile(path, "", "scene file");
   std::ifstream in(path);
   if (!in) throw InputError(path, "", "cannot open scene file");
-  json doc;
   try {
-    doc = json::parse(in);
+    return json::parse(in);
   } catch (const json::exception& e) {  // syntax errors, numbers beyond double (1e400)
     throw InputError(path, "", std::string("malformed JSON: ") + e.what());
   }
-  const Field root{path, doc, ""};
-  root.allowKeys({"meshes", "point_clouds", "materials", "lights", "camera", "background", "grid",
-                  "settings", "description"});
-  if (root.has("materials")) {
-    const Field mats = root.at("materials");
-    if (!mats.value.is_object()) mats.fail("must be an object of name -> material");
-    for (const auto& [name, v] : mats.value.items()) {
-      Material m;
-      m.name = name;
-      readMaterial(mats.at(name), m);
-      scene.materials.push_back(m);
-    }
+}
+
+void readMaterials(const Field& root, Scene& scene) {
+  if (!root.has("materials")) return;
+  const Field mats = root.at("materials");
+  if (!mats.value.is_object()) mats.fail("must be an object of name -> material");
+  for (const auto& [name, v] : mats.value.items()) {
+    Material m;
+    m.name = name;
+    readMaterial(mats.at(name), m);
+    scene.materials.push_back(m);
   }
-  const size_t namedMaterials = scene.materials.size();
+}
+
+// Each mesh file with its transform and material; a material of the file whose name matches one
+// of the scene file's (the first `namedMaterials`) takes the scene file's values.
+void readMeshes(const Field& root, Scene& scene, size_t namedMaterials) {
   if (!root.has("meshes") && !root.has("point_clouds")) root.at("meshes");  // names what is missing
-  const json noMeshes = json::array();
-  const Field meshes = root.has("meshes") ? root.at("meshes") : Field{path, noMeshes, "meshes"};
+  if (!root.has("meshes")) return;
+  const Field meshes = root.at("meshes");
   if (!meshes.value.is_array()) meshes.fail("must be an array");
   for (size_t i = 0; i < meshes.value.size(); ++i) {
     const Field m = meshes.at(i);
     m.allowKeys({"file", "material", "transform"});
     const Field file = m.at("file");
-    const fs::path meshPath = fs::path(path).parent_path() / file.string();
+    const fs::path meshPath = fs::path(scene.file).parent_path() / file.string();
     try {
       requireInputFile(meshPath.string(), "", "mesh file");
     } catch (const InputError& e) {
@@ -423,30 +429,25 @@ Scene loadScene(const std::string& path) {
         m.has("transform") ? readTransform(m.at("transform")) : glm::dmat4(1.0);
     const size_t before = scene.materials.size();
     importMeshFile(scene, meshPath.string(), transform, material);
-    // Materials of the file whose name matches a JSON material take the JSON values.
     for (size_t k = before; k < scene.materials.size(); ++k)
       for (size_t j = 0; j < namedMaterials; ++j)
         if (scene.materials[k].name == scene.materials[j].name)
           scene.materials[k] = scene.materials[j];
   }
-  std::vector<PointCloudOptions> cloudOptions;
-  if (root.has("point_clouds")) {
-    const Field clouds = root.at("point_clouds");
-    if (!clouds.value.is_array()) clouds.fail("must be an array");
-    for (size_t i = 0; i < clouds.value.size(); ++i)
-      cloudOptions.push_back(readPointCloud(clouds.at(i), scene, namedMaterials));
-  }
-  if (root.has("lights")) {
-    const Field lights = root.at("lights");
-    if (!lights.value.is_array()) lights.fail("must be an array");
-    for (size_t i = 0; i < lights.value.size(); ++i)
-      scene.lights.push_back(readLight(lights.at(i)));
-  }
-  if (root.has("camera")) scene.camera = readCamera(root.at("camera"));
-  if (root.has("background")) scene.background = root.at("background").color(0.0, 1e9);
-  if (root.has("settings")) scene.settings = readSettings(root.at("settings"));
-  validateGeometry(scene);
-  estimatePointCloudProperties(scene, cloudOptions);
+}
+
+// Calls read(element) for each element of the array `key`, if the scene file has it.
+template <class Read>
+void forEachOf(const Field& root, const char* key, Read read) {
+  if (!root.has(key)) return;
+  const Field array = root.at(key);
+  if (!array.value.is_array()) array.fail("must be an array");
+  for (size_t i = 0; i < array.value.size(); ++i) read(array.at(i));
+}
+
+// The grid the file gives (min, size and resolution), or one of its resolution (64 by default)
+// fitted to the scene's bounds.
+void readGrid(const Field& root, Scene& scene) {
   int resolution = 64;
   if (root.has("grid")) {
     const Field g = root.at("grid");
@@ -454,19 +455,45 @@ Scene loadScene(const std::string& path) {
     if (g.has("resolution")) {
       const Field r = g.at("resolution");
       if (!r.value.is_number_integer()) r.fail("must be an integer");
-      resolution = readResolution(path, r.path, r.value.get<int64_t>());
+      resolution = readResolution(scene.file, r.path, r.value.get<int64_t>());
     }
     if (g.has("min") != g.has("size")) g.fail("give both min and size, or neither");
     if (g.has("min")) {
       scene.grid.min = g.at("min").vec3();
       scene.grid.size = g.at("size").number();
       scene.grid.resolution = resolution;
-      checkGrid(scene, path);
-      return scene;
+      checkGrid(scene, scene.file);
+      return;
     }
   }
   scene.grid = fitGrid(scene.bounds(), resolution);
-  checkGrid(scene, path);
+  checkGrid(scene, scene.file);
+}
+
+}  // namespace
+
+Scene loadScene(const std::string& path) {
+  if (fs::path(path).extension().string() != ".json") return loadBareFile(path);
+  const json doc = parseSceneFile(path);
+  Scene scene;
+  scene.file = path;
+  const Field root{path, doc, ""};
+  root.allowKeys({"meshes", "point_clouds", "materials", "lights", "camera", "background", "grid",
+                  "settings", "description"});
+  readMaterials(root, scene);
+  const size_t namedMaterials = scene.materials.size();
+  readMeshes(root, scene, namedMaterials);
+  std::vector<PointCloudOptions> cloudOptions;
+  forEachOf(root, "point_clouds", [&](const Field& cloud) {
+    cloudOptions.push_back(readPointCloud(cloud, scene, namedMaterials));
+  });
+  forEachOf(root, "lights", [&](const Field& light) { scene.lights.push_back(readLight(light)); });
+  if (root.has("camera")) scene.camera = readCamera(root.at("camera"));
+  if (root.has("background")) scene.background = root.at("background").color(0.0, 1e9);
+  if (root.has("settings")) scene.settings = readSettings(root.at("settings"));
+  validateGeometry(scene);
+  estimatePointCloudProperties(scene, cloudOptions);
+  readGrid(root, scene);
   return scene;
 }
 

@@ -64,7 +64,8 @@ struct Layout {
   std::vector<Use> uses;
 };
 
-std::vector<Layout> layouts() {
+// The records shared by the stages of several techniques (shaders/shared/).
+std::vector<Layout> commonLayouts() {
   return {
       {"VoxelTriangle",
        sizeof(VoxelTriangle),
@@ -100,6 +101,12 @@ std::vector<Layout> layouts() {
         {"lpv/shade", "lights[0]", 0, true},
         {"svo/propagate_inject", "lights[0]", sizeof(LightVoxelsParams), true},
         {"svo/shade", "lights[0]", sizeof(ConeTraceParams), true}}},
+  };
+}
+
+// The records voxel cone tracing's (the octree's cone and light stages use them too).
+std::vector<Layout> vctLayouts() {
+  return {
       {"LightVoxelsParams",
        sizeof(LightVoxelsParams),
        {VOXGI_FIELD(LightVoxelsParams, config), VOXGI_FIELD(LightVoxelsParams, values)},
@@ -138,6 +145,12 @@ std::vector<Layout> layouts() {
         VOXGI_FIELD(ComposeInput, directSpecular), VOXGI_FIELD(ComposeInput, indirectDiffuse),
         VOXGI_FIELD(ComposeInput, indirectSpecular), VOXGI_FIELD(ComposeInput, ambientOcclusion)},
        {{"vct/compose", "inputs[0]", 0, true}}},
+  };
+}
+
+// The records light propagation volumes' (shaders/shared/lpv/lpv_types.h).
+std::vector<Layout> lpvLayouts() {
+  return {
       {"Vpl",
        sizeof(Vpl),
        {VOXGI_FIELD(Vpl, position), VOXGI_FIELD(Vpl, normal), VOXGI_FIELD(Vpl, flux)},
@@ -177,11 +190,6 @@ std::vector<Layout> layouts() {
         {"lpv/inject", "views[0]", sizeof(RsmParams), true},
         {"lpv/shade", "views[0]", sizeof(RsmParams), true},
         {"lpv/inject_geometry_rsm", "views[0]", sizeof(RsmParams), true}}},
-      {"SvoSample",
-       sizeof(SvoSample),
-       {VOXGI_FIELD(SvoSample, position), VOXGI_FIELD(SvoSample, albedo),
-        VOXGI_FIELD(SvoSample, normal), VOXGI_FIELD(SvoSample, emission)},
-       {{"svo/build", "samples[0]", 0, true}}},
       {"RsmParams",
        sizeof(RsmParams),
        {VOXGI_FIELD(RsmParams, resolution), VOXGI_FIELD(RsmParams, viewCount),
@@ -192,6 +200,24 @@ std::vector<Layout> layouts() {
         {"lpv/shade", "rsm", 0, false},
         {"lpv/inject_geometry_rsm", "rsm", 0, false}}},
   };
+}
+
+// The records the sparse voxel octree's.
+std::vector<Layout> svoLayouts() {
+  return {
+      {"SvoSample",
+       sizeof(SvoSample),
+       {VOXGI_FIELD(SvoSample, position), VOXGI_FIELD(SvoSample, albedo),
+        VOXGI_FIELD(SvoSample, normal), VOXGI_FIELD(SvoSample, emission)},
+       {{"svo/build", "samples[0]", 0, true}}},
+  };
+}
+
+std::vector<Layout> layouts() {
+  std::vector<Layout> all;
+  for (auto* owner : {commonLayouts, vctLayouts, lpvLayouts, svoLayouts})
+    for (Layout& layout : owner()) all.push_back(std::move(layout));
+  return all;
 }
 
 TEST(Layout, EveryProgramLinksOnBothPlatforms) {
