@@ -1,26 +1,10 @@
 #include "common/light_terms.h"
 
-#include <filesystem>
-
 #include "common/error.h"
 #include "common/technique.h"
 #include "shaders/shared/vct/compose_kernel.h"
 
 namespace voxgi {
-namespace {
-
-// The buffer called `name` among the technique's stages' (its shading stage's light terms), or
-// nullptr where the plan did not produce it.
-const Buffer* lightBuffer(const Technique& technique, const BufferSet& buffers,
-                          std::string_view name) {
-  for (const StageSpec* stage : technique.steps())
-    for (const BufferSpec* spec : stageBuffers(*stage))
-      if (spec->name == name) return buffers.find(spec->id);
-  return nullptr;
-}
-
-}  // namespace
-
 std::string_view termName(LightTerm term) {
   switch (term) {
     case LightTerm::emission:
@@ -42,40 +26,16 @@ Image directOnly(const TermImages& terms) {
   return out;
 }
 
-std::string termPath(const std::string& image, LightTerm term) {
-  const std::filesystem::path p(image);
-  return (p.parent_path() /
-          (p.stem().string() + "." + std::string(termName(term)) + p.extension().string()))
-      .string();
-}
-
-void writeTermImages(const std::string& image, const TermImages& terms) {
-  for (const LightTerm term : kLightTerms) writeExr(termPath(image, term), termImage(terms, term));
-}
-
-TermImages readTermImages(const std::string& image) {
-  TermImages terms;
-  for (const LightTerm term : kLightTerms) {
-    const std::string path = termPath(image, term);
-    if (!std::filesystem::exists(path))
-      throw InputError(path, "",
-                       "missing: the terms of " + image +
-                           " are written by voxgi render --terms (docs/accuracy.md)");
-    termImage(terms, term) = readExr(path);
-  }
-  return terms;
-}
-
 std::optional<TermImages> techniqueTerms(const Technique& technique, const BufferSet& buffers,
                                          const Settings& settings, const Scene& scene) {
-  const Buffer *directDiffuse = lightBuffer(technique, buffers, "direct_diffuse"),
-               *directSpecular = lightBuffer(technique, buffers, "direct_specular"),
-               *indirectDiffuse = lightBuffer(technique, buffers, "indirect_diffuse"),
-               *indirectSpecular = lightBuffer(technique, buffers, "indirect_specular"),
-               *ambient = lightBuffer(technique, buffers, "ambient_occlusion");
+  const LightTermBuffers ids = technique.lightTerms(settings);
+  // A buffer the technique has and its plan produced, or nullptr.
+  const auto find = [&](std::optional<BufferId> id) { return id ? buffers.find(*id) : nullptr; };
+  const Buffer *directDiffuse = find(ids.directDiffuse), *directSpecular = find(ids.directSpecular),
+               *indirectDiffuse = find(ids.indirectDiffuse),
+               *indirectSpecular = find(ids.indirectSpecular),
+               *ambient = find(ids.ambientOcclusion);
   if (indirectDiffuse == nullptr) return std::nullopt;
-  // AO darkens the indirect diffuse term only when asked, as vct's compose does.
-  if (settings.vct.ambientOcclusion != AmbientOcclusion::on) ambient = nullptr;
   using enum BufferId;
   const Buffer& objectId = buffers.at(common_gbuffer_object_id);
   const Buffer *albedo = buffers.find(common_gbuffer_pixel_albedo),

@@ -14,7 +14,7 @@
 #include <string_view>
 
 #include "common/buffer.h"
-#include "common/image_io.h"
+#include "common/image.h"
 #include "common/scene.h"
 #include "common/settings.h"
 
@@ -42,19 +42,10 @@ inline const Image& termImage(const TermImages& images, LightTerm term) {
 // baseline that asks whether a technique's indirect light helps at all (docs/accuracy.md).
 Image directOnly(const TermImages& terms);
 
-// Where the image of `term` goes beside IMAGE.exr: IMAGE.<term>.exr.
-std::string termPath(const std::string& image, LightTerm term);
-
-// Writes each term beside `image` (termPath), each file complete or not at all.
-void writeTermImages(const std::string& image, const TermImages& terms);
-// Reads the terms beside `image`; throws InputError naming a missing or unreadable file.
-TermImages readTermImages(const std::string& image);
-
 // A staged technique's terms from the buffers its run left: the gbuffer's materials times the
-// light buffers of its shading stage (direct_diffuse, direct_specular, indirect_diffuse,
-// indirect_specular), put together by the kernel that composes its image
-// (shaders/shared/vct/compose_kernel.h), so the terms add up to the image up to float rounding.
-// nullopt when the technique has no such buffers.
+// light buffers of its shading stage (Technique::lightTerms), put together by the kernel that
+// composes its image (shaders/shared/vct/compose_kernel.h), so the terms add up to the image up to
+// float rounding. nullopt when the technique has no such buffers.
 std::optional<TermImages> techniqueTerms(const Technique& technique, const BufferSet& buffers,
                                          const Settings& settings, const Scene& scene);
 

@@ -1,5 +1,5 @@
 // The scene model every technique renders: triangle meshes and point clouds with materials, lights,
-// a camera, background radiance and the voxel grid. Loaded by common/scene_load.cpp
+// a camera, background radiance and the voxel grid. Loaded by common/scene/scene_load.cpp
 // (docs/scene-format.md).
 #pragma once
 
@@ -37,7 +37,7 @@ struct Mesh {
 
 // A point cloud (docs/svo.md, "Point clouds"): world-space points with one material. Every point
 // has a unit normal and a disc radius (from the file, or estimated from its neighbours when the
-// scene asks for it: common/point_neighbours.h); colours are optional.
+// scene asks for it: common/scene/point_neighbours.h); colours are optional.
 struct PointCloud {
   std::string name;  // the file it came from, for messages
   std::vector<glm::dvec3> positions;

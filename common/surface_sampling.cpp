@@ -10,8 +10,6 @@
 
 #include "common/counter_random.h"
 #include "common/error.h"
-#include "common/image_io.h"
-#include "common/output_file.h"
 #include "common/parallel.h"
 
 namespace voxgi {
@@ -110,31 +108,6 @@ double sampledArea(const Scene& scene, int material) {
                                            m.positions[t.z] - m.positions[t.x]));
   }
   return area;
-}
-
-void writePointCloudPly(const PointCloud& cloud, const std::string& path) {
-  std::ostringstream header;
-  header << "ply\nformat binary_little_endian 1.0\ncomment voxgi sample\nelement vertex "
-         << cloud.size()
-         << "\nproperty double x\nproperty double y\nproperty double z\nproperty float nx\n"
-            "property float ny\nproperty float nz\nproperty float red\nproperty float green\n"
-            "property float blue\nproperty float radius\nend_header\n";
-  constexpr size_t kRecord = 3 * 8 + 7 * 4;
-  std::string bytes = header.str();
-  const size_t start = bytes.size();
-  bytes.resize(start + cloud.size() * kRecord);
-  static_assert(std::endian::native == std::endian::little, "writes little-endian PLY natively");
-  parallelFor(size_t(0), cloud.size(), [&](size_t i) {
-    char* at = bytes.data() + start + i * kRecord;
-    const double p[3] = {cloud.positions[i].x, cloud.positions[i].y, cloud.positions[i].z};
-    const glm::vec3 l = cloud.colors.empty() ? glm::vec3(0.8f) : cloud.colors[i];
-    const glm::vec3 c(linearToSrgb(l.x), linearToSrgb(l.y), linearToSrgb(l.z));
-    const float rest[7] = {
-        cloud.normals[i].x, cloud.normals[i].y, cloud.normals[i].z, c.x, c.y, c.z, cloud.radii[i]};
-    std::memcpy(at, p, sizeof p);
-    std::memcpy(at + sizeof p, rest, sizeof rest);
-  });
-  writeFileAtomically(path, bytes);
 }
 
 }  // namespace voxgi

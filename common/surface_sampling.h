@@ -29,16 +29,11 @@ struct SurfaceSampling {
 // ones unless `sampling.material` names one: a PLY carries no emission, so `voxgi sample` leaves
 // emitters as meshes beside the cloud),
 // each with the triangle's right-hand normal, its material's albedo as colour and a radius with
-// pi r^2 = twice the area per point (common/point_neighbours.h's convention). Throws InputError
-// naming the scene when it has no triangle with area to sample.
+// pi r^2 = twice the area per point (common/scene/point_neighbours.h's convention). Throws
+// InputError naming the scene when it has no triangle with area to sample.
 PointCloud sampleSurfaces(const Scene& scene, const SurfaceSampling& sampling);
 
 // The area of the triangles sampleSurfaces would sample.
 double sampledArea(const Scene& scene, int material);
-
-// The cloud as a binary little-endian PLY: x y z (double), nx ny nz, red green blue (float,
-// sRGB-encoded as PLY colours are), radius (float). Written to a temporary file and renamed
-// (common/output_file.h).
-void writePointCloudPly(const PointCloud& cloud, const std::string& path);
 
 }  // namespace voxgi

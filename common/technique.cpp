@@ -11,7 +11,7 @@ std::span<const Technique> techniques() {
 #define VOXGI_TECHNIQUE(technique, image_stage, image, description)                               \
   out.push_back(Technique{#technique, description, BufferId::technique##_##image_stage##_##image, \
                           &technique::params, &technique::presets, &technique::planEffects,       \
-                          &technique::sparseLayouts, #technique});                                \
+                          &technique::sparseLayouts, &technique::lightTerms, #technique});        \
   for (const Variant& v : technique::variants()) {                                                \
     out.push_back(out.back());                                                                    \
     out.back().name = v.name;                                                                     \

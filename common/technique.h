@@ -5,18 +5,29 @@
 #pragma once
 
 #include <initializer_list>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "common/buffer.h"
 #include "common/effect_plan.h"
 #include "common/scene.h"
 #include "common/settings_table.h"
 #include "common/stage_list.h"
-#include "common/vdb_io.h"
+#include "common/sparse_layout.h"
 
 namespace voxgi {
+
+// The buffers of a technique's shading stage that its image's light terms come from
+// (common/light_terms.h), each empty where it has none; a technique without indirectDiffuse has
+// no terms.
+struct LightTermBuffers {
+  std::optional<BufferId> directDiffuse, directSpecular, indirectDiffuse, indirectSpecular;
+  // Applied to indirectDiffuse only where its compose applies it under these settings.
+  std::optional<BufferId> ambientOcclusion;
+};
 
 // A technique that runs another one's stages under other defaults (holpv: lpv with 3 SH bands and
 // 26 propagation directions), so that a variant is one setting, never a copy of the stages.
@@ -34,8 +45,10 @@ struct Technique {
   const std::vector<Preset>& (*presets)();  // "default" first
   // Which of its stages, buffers and effects the scene needs, and why (common/effect_plan.h).
   EffectPlan (*plan)(const Scene& scene, const Settings& settings);
-  // Where the elements of its sparse buffers in a run lie as grids (common/vdb_io.h), for dumps.
+  // Where the elements of its sparse buffers in a run lie as grids (common/io/vdb_io.h), for dumps.
   SparseLayouts (*sparseLayouts)(const BufferSet& run, const GridSpec& grid);
+  // Which buffers hold its light terms under these settings.
+  LightTermBuffers (*lightTerms)(const Settings& settings);
   std::string_view stages;  // whose steps it runs: its own name, or a variant's base
   const std::vector<std::string>* defaults = nullptr;  // a variant's (Variant::defaults)
   std::vector<const StageSpec*> steps() const { return techniqueSteps(stages); }
@@ -54,6 +67,7 @@ std::string techniqueNames();
   const std::vector<Preset>& presets();                                    \
   EffectPlan planEffects(const Scene& scene, const Settings& settings);    \
   SparseLayouts sparseLayouts(const BufferSet& run, const GridSpec& grid); \
+  LightTermBuffers lightTerms(const Settings& settings);                   \
   const std::vector<Variant>& variants();                                  \
   }
 #define VOXGI_EFFECT(owner, effect, meaning)

@@ -5,7 +5,7 @@
 
 #include "common/parallel.h"
 #include "common/camera_geometry.h"
-#include "common/ray_scene.h"
+#include "common/scene/ray_scene.h"
 #include "cpu/stages.h"
 #include "shaders/shared/gbuffer_kernel.h"
 

@@ -16,7 +16,7 @@
 #include <nlohmann/json.hpp>
 #include <openvdb/openvdb.h>
 
-#include "common/image_io.h"
+#include "common/io/image_io.h"
 
 #include "tests/cli.h"
 #include "tests/test_scenes.h"

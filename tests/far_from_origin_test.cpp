@@ -3,8 +3,8 @@
 // double) and for the path tracer (coordinates relative to the scene's centre, in double).
 #include <gtest/gtest.h>
 
-#include "common/buffer_io.h"
-#include "common/scene_load.h"
+#include "common/io/buffer_io.h"
+#include "common/scene/scene_load.h"
 #include "tests/test_scenes.h"
 #include "validation/reference/image_metrics.h"
 #include "validation/reference/path_trace.h"

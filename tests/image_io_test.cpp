@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "common/image_io.h"
+#include "common/io/image_io.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi {

@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 
 #include "common/light_terms.h"
-#include "common/scene_load.h"
+#include "common/scene/scene_load.h"
 #include "common/technique.h"
-#include "common/buffer_io.h"
+#include "common/io/buffer_io.h"
 #include "tests/test_scenes.h"
 #include "validation/reference/path_trace.h"
 

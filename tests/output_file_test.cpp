@@ -1,5 +1,5 @@
-// Outputs are complete or absent (common/output_file.h): a failed write keeps the previous file and
-// leaves no temporary, and symbolic links, folders and devices are refused, not replaced.
+// Outputs are complete or absent (common/io/output_file.h): a failed write keeps the previous file
+// and leaves no temporary, and symbolic links, folders and devices are refused, not replaced.
 #include <signal.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -13,8 +13,8 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "common/image_io.h"
-#include "common/output_file.h"
+#include "common/io/image_io.h"
+#include "common/io/output_file.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

@@ -6,7 +6,7 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
-#include "common/scene_load.h"
+#include "common/scene/scene_load.h"
 #include "tests/test_scenes.h"
 #include "validation/reference/path_trace.h"
 

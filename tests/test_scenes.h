@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "common/buffer.h"
-#include "common/image_io.h"
+#include "common/io/image_io.h"
 #include "common/scene.h"
 #include "common/stage.h"
 

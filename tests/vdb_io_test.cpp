@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 #include <openvdb/openvdb.h>
 
-#include "common/vdb_io.h"
+#include "common/io/vdb_io.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

@@ -12,8 +12,8 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
-#include "common/output_file.h"
-#include "common/scene_load.h"
+#include "common/io/output_file.h"
+#include "common/scene/scene_load.h"
 #include "common/voxel_triangles.h"
 #include "cpu/backend.h"
 #include "gpu/backend.h"

@@ -16,8 +16,8 @@
 #include <tbb/global_control.h>
 
 #include "common/light_terms.h"
-#include "common/output_file.h"
-#include "common/scene_load.h"
+#include "common/io/output_file.h"
+#include "common/scene/scene_load.h"
 #include "tools/bench.h"
 #include "validation/reference/image_metrics.h"
 #include "validation/reference/path_trace.h"

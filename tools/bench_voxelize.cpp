@@ -13,8 +13,8 @@
 #include <tbb/global_control.h>
 
 #include "common/pipeline.h"
-#include "common/output_file.h"
-#include "common/scene_load.h"
+#include "common/io/output_file.h"
+#include "common/scene/scene_load.h"
 #include "cpu/backend.h"
 #include "gpu/backend.h"
 #include "tools/bench.h"

@@ -3,7 +3,7 @@
 #include <chrono>
 #include <iostream>
 
-#include "common/scene_load.h"
+#include "common/scene/scene_load.h"
 
 namespace voxgi::tools {
 

@@ -12,9 +12,10 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "common/image_io.h"
+#include "common/io/image_io.h"
+#include "common/io/term_images.h"
 #include "common/light_terms.h"
-#include "common/output_file.h"
+#include "common/io/output_file.h"
 #include "validation/reference/image_metrics.h"
 #include "validation/reference/path_trace.h"
 #include "tools/command.h"

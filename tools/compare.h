@@ -10,7 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
-#include "common/image_io.h"
+#include "common/io/image_io.h"
 #include "validation/reference/image_metrics.h"
 
 namespace voxgi::tools {

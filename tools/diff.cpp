@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "common/output_file.h"
+#include "common/io/output_file.h"
 #include "cpu/backend.h"
 #include "gpu/backend.h"
 #include "tools/command.h"

@@ -3,10 +3,10 @@
 #include <iostream>
 #include <memory>
 
-#include "common/buffer_io.h"
+#include "common/io/buffer_io.h"
 #include "common/error.h"
 #include "common/fnv1a.h"
-#include "common/output_file.h"
+#include "common/io/output_file.h"
 #include "tools/command.h"
 
 namespace voxgi::tools {

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "common/output_file.h"
+#include "common/io/output_file.h"
 #include "tools/command.h"
 #include "validation/lpv/ledger.h"
 

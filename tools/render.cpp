@@ -12,11 +12,12 @@
 #include <optional>
 #include <unistd.h>
 
-#include "common/buffer_io.h"
+#include "common/io/buffer_io.h"
 #include "common/error.h"
-#include "common/image_io.h"
+#include "common/io/image_io.h"
+#include "common/io/term_images.h"
 #include "common/light_terms.h"
-#include "common/output_file.h"
+#include "common/io/output_file.h"
 #include "tools/command.h"
 #include "validation/reference/path_trace.h"
 

@@ -16,12 +16,13 @@
 #include <set>
 #include <sstream>
 
-#include "common/buffer_io.h"
+#include "common/io/buffer_io.h"
 #include "common/error.h"
+#include "common/io/term_images.h"
 #include "common/light_terms.h"
-#include "common/output_file.h"
+#include "common/io/output_file.h"
 #include "common/pipeline.h"
-#include "common/scene_load.h"
+#include "common/scene/scene_load.h"
 #include "common/settings.h"
 #include "common/settings_table.h"
 #include "common/technique.h"

@@ -3,8 +3,8 @@
 #include <memory>
 
 #include "common/error.h"
-#include "common/output_file.h"
-#include "common/vdb_io.h"
+#include "common/io/output_file.h"
+#include "common/io/vdb_io.h"
 #include "tools/command.h"
 
 namespace voxgi::tools {

@@ -7,8 +7,8 @@
 #include <filesystem>
 #include <limits>
 
-#include "common/buffer_io.h"
-#include "common/output_file.h"
+#include "common/io/buffer_io.h"
+#include "common/io/output_file.h"
 #include "common/technique.h"
 #include "validation/comparisons.h"
 

@@ -88,4 +88,11 @@ SparseLayouts sparseLayouts(const BufferSet&, const GridSpec&) {
   return {};
 }
 
+// shade's terms: a volume's light is diffuse, so it has no indirect specular term.
+LightTermBuffers lightTerms(const Settings&) {
+  using enum BufferId;
+  return {lpv_shade_direct_diffuse, lpv_shade_direct_specular, lpv_shade_indirect_diffuse,
+          std::nullopt, std::nullopt};
+}
+
 }  // namespace voxgi::lpv

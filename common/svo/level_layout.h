@@ -1,11 +1,11 @@
-// Where the octree's sparse buffers lie as OpenVDB grids (common/vdb_io.h, docs/svo.md "Dumps"):
+// Where the octree's sparse buffers lie as OpenVDB grids (common/io/vdb_io.h, docs/svo.md "Dumps"):
 // leaves at pyramid level 0 on the scene's grid, node level l at pyramid level depth - l, each
 // voxel at its Morton key's coordinate, so every level lines up with the dense grids in a viewer.
 #pragma once
 
 #include "common/buffer.h"
 #include "common/grid.h"
-#include "common/vdb_io.h"
+#include "common/sparse_layout.h"
 
 namespace voxgi::svo {
 

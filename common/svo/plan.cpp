@@ -72,4 +72,11 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   return p;
 }
 
+// shade's terms.
+LightTermBuffers lightTerms(const Settings&) {
+  using enum BufferId;
+  return {svo_shade_direct_diffuse, svo_shade_direct_specular, svo_shade_indirect_diffuse,
+          svo_shade_indirect_specular, std::nullopt};
+}
+
 }  // namespace voxgi::svo

@@ -104,4 +104,15 @@ SparseLayouts sparseLayouts(const BufferSet&, const GridSpec&) {
   return {};
 }
 
+// trace_cones' terms; compose darkens the indirect diffuse term with AO only under ao.mode=on.
+LightTermBuffers lightTerms(const Settings& settings) {
+  using enum BufferId;
+  LightTermBuffers b{vct_trace_cones_direct_diffuse, vct_trace_cones_direct_specular,
+                     vct_trace_cones_indirect_diffuse, vct_trace_cones_indirect_specular,
+                     std::nullopt};
+  if (settings.vct.ambientOcclusion == AmbientOcclusion::on)
+    b.ambientOcclusion = vct_trace_cones_ambient_occlusion;
+  return b;
+}
+
 }  // namespace voxgi::vct

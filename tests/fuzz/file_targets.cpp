@@ -1,8 +1,8 @@
 // The fuzz targets that hand one file to one loader: a bare mesh file to loadScene (Assimp behind
 // voxgi's checks), an image to readImage (references, masks and compare's inputs).
 #include "common/error.h"
-#include "common/image_io.h"
-#include "common/scene_load.h"
+#include "common/io/image_io.h"
+#include "common/scene/scene_load.h"
 #include "tests/fuzz/fuzz_target.h"
 
 namespace voxgi::fuzz {

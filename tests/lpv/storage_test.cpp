@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "common/lpv/sh_buffers.h"
-#include "common/scene_load.h"
+#include "common/scene/scene_load.h"
 #include "shaders/shared/half_float.h"
 #include "tests/test_scenes.h"
 

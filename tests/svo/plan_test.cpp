@@ -1,7 +1,7 @@
 // The octree's effect planner (common/svo/plan.cpp; docs/effect-plan.md).
 #include <gtest/gtest.h>
 
-#include "common/scene_load.h"
+#include "common/scene/scene_load.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

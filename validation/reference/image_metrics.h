@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "common/image_io.h"
+#include "common/image.h"
 
 namespace voxgi::reference {
 

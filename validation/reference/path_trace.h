@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "common/image_io.h"
+#include "common/image.h"
 #include "common/light_terms.h"
 #include "common/scene.h"
 #include "validation/reference/emitters.h"

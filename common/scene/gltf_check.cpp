@@ -1,4 +1,4 @@
-#include "common/gltf_check.h"
+#include "common/scene/gltf_check.h"
 
 #include <cstdint>
 #include <cstring>
@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "common/input_file.h"
+#include "common/io/input_file.h"
 
 namespace voxgi {
 namespace {

@@ -5,11 +5,11 @@
 #include <tbb/blocked_range.h>
 
 #include "common/error.h"
-#include "common/image_io.h"
+#include "common/io/image_io.h"
 #include "common/parallel.h"
-#include "common/point_cloud_ply.h"
-#include "common/point_neighbours.h"
-#include "common/scene_load.h"
+#include "common/scene/point_cloud_ply.h"
+#include "common/scene/point_neighbours.h"
+#include "common/scene/scene_load.h"
 
 namespace voxgi {
 

@@ -1,6 +1,6 @@
-#include "common/buffer_io.h"
+#include "common/io/buffer_io.h"
 
-#include "common/vdb_io.h"
+#include "common/io/vdb_io.h"
 
 namespace voxgi {
 

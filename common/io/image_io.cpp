@@ -1,4 +1,4 @@
-#include "common/image_io.h"
+#include "common/io/image_io.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,22 +17,29 @@
 #include <png.h>
 
 #include "common/error.h"
-#include "common/exr_check.h"
-#include "common/input_file.h"
+#include "common/io/exr_check.h"
+#include "common/io/input_file.h"
 #include "common/memory.h"
-#include "common/output_file.h"
+#include "common/io/output_file.h"
 
 namespace voxgi {
 
-float linearToSrgb(float linear) {
-  const float x = std::clamp(linear, 0.0f, 1.0f);
-  return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+namespace {
+
+// OpenEXR's view of an image's pixels (glm::vec3, row-major) as R, G and B float channels, the
+// pixel (0, 0) at `base`.
+Imf::FrameBuffer rgbFrameBuffer(char* base, int width) {
+  const size_t xs = sizeof(glm::vec3), ys = xs * size_t(width);
+  Imf::FrameBuffer fb;
+  for (int c = 0; c < 3; ++c)
+    fb.insert(c == 0   ? "R"
+              : c == 1 ? "G"
+                       : "B",
+              Imf::Slice(Imf::FLOAT, base + size_t(c) * sizeof(float), xs, ys));
+  return fb;
 }
 
-float srgbToLinear(float encoded) {
-  const float x = std::clamp(encoded, 0.0f, 1.0f);
-  return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
-}
+}  // namespace
 
 void writeExr(const std::string& path, const Image& image) {
   checkOutputPath(path);
@@ -41,14 +48,8 @@ void writeExr(const std::string& path, const Image& image) {
     Imf::Header header(image.width, image.height);
     for (const char* c : {"R", "G", "B"}) header.channels().insert(c, Imf::Channel(Imf::FLOAT));
     Imf::OutputFile file(bytes, header);
-    Imf::FrameBuffer fb;
     auto* base = reinterpret_cast<char*>(const_cast<glm::vec3*>(image.pixels.data()));
-    const size_t xs = sizeof(glm::vec3), ys = xs * size_t(image.width);
-    for (int c = 0; c < 3; ++c)
-      fb.insert(c == 0   ? "R"
-                : c == 1 ? "G"
-                         : "B",
-                Imf::Slice(Imf::FLOAT, base + size_t(c) * sizeof(float), xs, ys));
+    const Imf::FrameBuffer fb = rgbFrameBuffer(base, image.width);
     file.setFrameBuffer(fb);
     file.writePixels(image.height);
   } catch (const std::exception& e) {
@@ -77,15 +78,10 @@ Image readExr(const std::string& path) {
                            ": the file does not hold every pixel (truncated or corrupt)");
     requireMemory(uint64_t(w) * uint64_t(h) * sizeof(glm::vec3), "the image", path, "data window");
     Image image{int(w), int(h)};
-    Imf::FrameBuffer fb;
     const size_t xs = sizeof(glm::vec3), ys = xs * size_t(image.width);
     auto* base = reinterpret_cast<char*>(image.pixels.data()) -
                  (ptrdiff_t(dw.min.x) * ptrdiff_t(xs) + ptrdiff_t(dw.min.y) * ptrdiff_t(ys));
-    for (int c = 0; c < 3; ++c)
-      fb.insert(c == 0   ? "R"
-                : c == 1 ? "G"
-                         : "B",
-                Imf::Slice(Imf::FLOAT, base + size_t(c) * sizeof(float), xs, ys));
+    const Imf::FrameBuffer fb = rgbFrameBuffer(base, image.width);
     file.setFrameBuffer(fb);
     file.readPixels(dw.min.y, dw.max.y);
     return image;

@@ -1,11 +1,11 @@
-#include "common/exr_check.h"
+#include "common/io/exr_check.h"
 
 #include <cstdint>
 #include <fstream>
 #include <set>
 
 #include "common/error.h"
-#include "common/input_file.h"
+#include "common/io/input_file.h"
 
 namespace voxgi {
 namespace {

@@ -1,4 +1,4 @@
-#include "common/input_file.h"
+#include "common/io/input_file.h"
 
 #include <sys/stat.h>
 #include <unistd.h>

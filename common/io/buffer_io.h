@@ -8,8 +8,8 @@
 
 #include "common/buffer.h"
 #include "common/grid.h"
-#include "common/image_io.h"
-#include "common/vdb_io.h"
+#include "common/io/image_io.h"
+#include "common/io/vdb_io.h"
 
 namespace voxgi {
 

@@ -11,10 +11,10 @@
 #include <assimp/scene.h>
 
 #include "common/error.h"
-#include "common/input_file.h"
-#include "common/gltf_check.h"
-#include "common/ply_check.h"
-#include "common/scene_load.h"
+#include "common/io/input_file.h"
+#include "common/scene/gltf_check.h"
+#include "common/scene/ply_check.h"
+#include "common/scene/scene_load.h"
 
 namespace voxgi {
 namespace {
@@ -54,7 +54,7 @@ glm::dmat4 toGlm(const aiMatrix4x4& m) {
 }
 
 // Assimp picks an importer by content whatever the extension, so a file must be what its name says
-// before Assimp sees it; a PLY is checked whole (common/ply_check.h).
+// before Assimp sees it; a PLY is checked whole (common/scene/ply_check.h).
 void checkMeshFileContent(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));

@@ -1,4 +1,4 @@
-#include "common/vdb_io.h"
+#include "common/io/vdb_io.h"
 
 #include <algorithm>
 #include <sstream>
@@ -7,9 +7,9 @@
 #include <openvdb/openvdb.h>
 
 #include "common/error.h"
-#include "common/input_file.h"
+#include "common/io/input_file.h"
 #include "common/mips.h"
-#include "common/output_file.h"
+#include "common/io/output_file.h"
 
 namespace voxgi {
 namespace {

@@ -1,6 +1,6 @@
 // JSON scene files (docs/scene-format.md). Every field is checked; unknown fields are errors so
 // that a typo does not silently fall back to a default.
-#include "common/scene_load.h"
+#include "common/scene/scene_load.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "common/input_file.h"
-#include "common/point_cloud_ply.h"
+#include "common/io/input_file.h"
+#include "common/scene/point_cloud_ply.h"
 #include "common/settings.h"
 
 namespace voxgi {

@@ -1,4 +1,4 @@
-#include "common/ply_check.h"
+#include "common/scene/ply_check.h"
 
 #include <algorithm>
 #include <bit>
@@ -10,7 +10,7 @@
 #include <limits>
 
 #include "common/error.h"
-#include "common/input_file.h"
+#include "common/io/input_file.h"
 
 namespace voxgi {
 namespace {

@@ -1,8 +1,9 @@
 // Point clouds from PLY files (docs/svo.md, "Point clouds"): one `vertex` element of scalar
 // properties, ASCII or binary in either byte order. Assimp reads such files too, but it drops
 // per-point properties it does not know (the radius) and took 485 ms for 1.4 M binary points on
-// top of the 356 ms of the check voxgi runs before any Assimp import (common/ply_check.h); this
-// reader is that check's header parser and value decoding, reading the values in the same pass.
+// top of the 356 ms of the check voxgi runs before any Assimp import (common/scene/ply_check.h);
+// this reader is that check's header parser and value decoding, reading the values in the same
+// pass.
 #pragma once
 
 #include <string>
@@ -10,7 +11,8 @@
 
 #include <glm/glm.hpp>
 
-#include "common/ply_check.h"
+#include "common/scene.h"
+#include "common/scene/ply_check.h"
 
 namespace voxgi {
 
@@ -32,5 +34,10 @@ bool plyIsPointCloud(const PlyHeader& header);
 // zero normal, a float colour outside [0, 1], a radius that is not a positive finite number, or
 // only some of nx/ny/nz or red/green/blue.
 PlyPoints readPlyPoints(const std::string& path);
+
+// The cloud as a binary little-endian PLY: x y z (double), nx ny nz, red green blue (float,
+// sRGB-encoded as PLY colours are), radius (float). Written to a temporary file and renamed
+// (common/io/output_file.h).
+void writePointCloudPly(const PointCloud& cloud, const std::string& path);
 
 }  // namespace voxgi

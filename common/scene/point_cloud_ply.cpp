@@ -1,4 +1,4 @@
-#include "common/point_cloud_ply.h"
+#include "common/scene/point_cloud_ply.h"
 
 #include <algorithm>
 #include <atomic>
@@ -7,11 +7,14 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <sstream>
 
 #include <tbb/blocked_range.h>
 
 #include "common/error.h"
-#include "common/input_file.h"
+#include "common/io/image_io.h"
+#include "common/io/input_file.h"
+#include "common/io/output_file.h"
 #include "common/parallel.h"
 
 namespace voxgi {
@@ -286,6 +289,31 @@ PlyPoints readPlyPoints(const std::string& path) {
   else
     reader.binary(stride);
   return out;
+}
+
+void writePointCloudPly(const PointCloud& cloud, const std::string& path) {
+  std::ostringstream header;
+  header << "ply\nformat binary_little_endian 1.0\ncomment voxgi sample\nelement vertex "
+         << cloud.size()
+         << "\nproperty double x\nproperty double y\nproperty double z\nproperty float nx\n"
+            "property float ny\nproperty float nz\nproperty float red\nproperty float green\n"
+            "property float blue\nproperty float radius\nend_header\n";
+  constexpr size_t kRecord = 3 * 8 + 7 * 4;
+  std::string bytes = header.str();
+  const size_t start = bytes.size();
+  bytes.resize(start + cloud.size() * kRecord);
+  static_assert(std::endian::native == std::endian::little, "writes little-endian PLY natively");
+  parallelFor(size_t(0), cloud.size(), [&](size_t i) {
+    char* at = bytes.data() + start + i * kRecord;
+    const double p[3] = {cloud.positions[i].x, cloud.positions[i].y, cloud.positions[i].z};
+    const glm::vec3 l = cloud.colors.empty() ? glm::vec3(0.8f) : cloud.colors[i];
+    const glm::vec3 c(linearToSrgb(l.x), linearToSrgb(l.y), linearToSrgb(l.z));
+    const float rest[7] = {
+        cloud.normals[i].x, cloud.normals[i].y, cloud.normals[i].z, c.x, c.y, c.z, cloud.radii[i]};
+    std::memcpy(at, p, sizeof p);
+    std::memcpy(at + sizeof p, rest, sizeof rest);
+  });
+  writeFileAtomically(path, bytes);
 }
 
 }  // namespace voxgi

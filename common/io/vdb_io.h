@@ -14,24 +14,9 @@
 
 #include "common/buffer.h"
 #include "common/grid.h"
+#include "common/sparse_layout.h"
 
 namespace voxgi {
-
-// Where a sparse buffer's elements lie (BufferShape::sparse: an octree's pools, whose places only
-// the tree knows; common/svo/level_layout.h): per element its pyramid level (0 the finest, grid
-// voxel size h 2^level; -1 for an element that is not a voxel) and voxel coordinate there, and
-// which components make which grid (NAME + suffix, then _L<level> above level 0).
-struct SparseLayout {
-  struct Group {
-    int first, count;  // count 1, 3 or 4 (rgb + alpha)
-    std::string suffix;
-  };
-  std::vector<int8_t> level;
-  std::vector<glm::ivec3> coord;
-  std::vector<Group> groups;
-  std::map<std::string, std::string> metadata;  // added to each of the buffer's grids
-};
-using SparseLayouts = std::map<BufferId, SparseLayout>;
 
 // Throws std::logic_error for a sparse buffer without its layout in `sparse`.
 void writeVdb(const std::string& path, const std::vector<const Buffer*>& buffers,
