@@ -4,7 +4,7 @@
 #include <tbb/blocked_range.h>
 
 #include "common/parallel.h"
-#include "common/vct/kernel_params.h"
+#include "common/vct/bounce.h"
 #include "common/vct/radiance_buffers.h"
 #include "cpu/vct/cone_volumes.h"
 #include "cpu/vct/pyramid.h"

@@ -3,7 +3,7 @@
 #include <tbb/blocked_range.h>
 
 #include "common/parallel.h"
-#include "common/vct/kernel_params.h"
+#include "common/vct/light_voxels.h"
 #include "cpu/stages.h"
 
 namespace voxgi::cpu {

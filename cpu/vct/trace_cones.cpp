@@ -7,7 +7,7 @@
 #include <tbb/blocked_range2d.h>
 
 #include "common/parallel.h"
-#include "common/vct/kernel_params.h"
+#include "common/vct/trace_cones.h"
 #include "common/vct/radiance_buffers.h"
 #include "cpu/vct/cone_lanes.h"
 #include "cpu/stages.h"

@@ -1,7 +1,7 @@
 // GPU bounce stage: shaders/vct/bounce.comp per voxel, then the pyramid again with mip.comp
 // (gpu/vct/pyramid.cpp), bounce.count times, all on the GPU; the last radiance and pyramid are read
 // back.
-#include "common/vct/kernel_params.h"
+#include "common/vct/bounce.h"
 #include "common/mips.h"
 #include "common/vct/radiance_buffers.h"
 #include "gpu/program.h"

@@ -1,6 +1,6 @@
 // GPU light_voxels stage: shaders/vct/light_voxels.comp runs the shared kernel per voxel on the
 // voxelize buffers uploaded as textures; the radiance volume is read back.
-#include "common/vct/kernel_params.h"
+#include "common/vct/light_voxels.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
 #include "gpu/volumes.h"

@@ -2,7 +2,7 @@
 // uploaded gbuffer, radiance volume and pyramid; the light terms are read back.
 #include <vector>
 
-#include "common/vct/kernel_params.h"
+#include "common/vct/trace_cones.h"
 #include "common/mips.h"
 #include "common/vct/radiance_buffers.h"
 #include "gpu/program.h"

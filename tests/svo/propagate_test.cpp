@@ -9,7 +9,7 @@
 #include "common/svo/stage_inputs.h"
 #include "common/stage.h"
 #include "common/vct/cone_sets.h"
-#include "common/vct/kernel_params.h"
+#include "common/vct/bounce.h"
 #include "cpu/svo/leaf_light.h"
 #include "cpu/vct/cone_volumes.h"
 #include "shaders/shared/vct/bounce_kernel.h"

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "common/scene/scene_load.h"
-#include "common/vct/kernel_params.h"
+#include "common/vct/trace_cones.h"
 #include "common/vct/radiance_buffers.h"
 #include "cpu/vct/cone_lanes.h"
 #include "tests/test_scenes.h"

@@ -7,7 +7,7 @@
 
 VOXGI_NAMESPACE_BEGIN
 
-// std430; common/vct/kernel_params.cpp fills it from the settings.
+// std430; common/vct/trace_cones.cpp fills it from the settings.
 struct ConeTraceParams {
   ivec4 grid;     // x: N, y: pyramid levels (log2 N), z: 1 directional pyramid, w: diffuse cones
   ivec4 modes;    // x: lights, y: 1 first-hit diffuse, z: 1 Kahl shadow falloff, w: 1 light-angle

@@ -1,16 +1,36 @@
-#include "common/vct/kernel_params.h"
+#include "common/vct/trace_cones.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include "common/camera_geometry.h"
-#include "common/vct/cone_sets.h"
 #include "common/lights.h"
 #include "common/mips.h"
+#include "common/vct/cone_sets.h"
 
 namespace voxgi {
 namespace {
+
+// docs/stages/vct/trace_cones.md: the specular cone holds half the Phong lobe's energy.
+std::vector<shared::ObjectData> objectData(const Scene& scene, bool everyObject) {
+  // Object ids: meshes from 1, then the point clouds (gbuffer's numbering).
+  std::vector<uint32_t> materials;
+  for (const Mesh& m : scene.meshes) materials.push_back(m.material);
+  for (const PointCloud& c : scene.pointClouds) materials.push_back(c.material);
+  std::vector<shared::ObjectData> out(materials.size() + 1, {glm::vec4(0.0f)});
+  for (size_t o = 0; o < materials.size(); ++o) {
+    const Material& mat = scene.materials.at(materials[o]);
+    if (!mat.glossy() && !everyObject) continue;
+    // P(cos alpha > c) = 1 - c^(n+1) for a Phong lobe cos^n: half the energy within c =
+    // 2^(-1/(n+1)).
+    const double c = std::pow(2.0, -1.0 / (double(mat.shininess) + 1.0));
+    out[o + 1].specular = glm::vec4(float(std::sqrt(1.0 - c * c) / c), mat.shininess, 0.0f, 0.0f);
+  }
+  return out;
+}
+
+}  // namespace
 
 shared::ConeTraceParams coneTraceParams(const StageContext& ctx, int lightCount, int coneCount,
                                         glm::vec3 cameraPosition) {
@@ -43,44 +63,6 @@ shared::ConeTraceParams coneTraceParams(const StageContext& ctx, int lightCount,
           glm::vec4(s.coneClearance, 0.0f, 0.0f, 0.0f)};
 }
 
-// docs/stages/vct/trace_cones.md: the specular cone holds half the Phong lobe's energy.
-std::vector<shared::ObjectData> objectData(const Scene& scene, bool everyObject) {
-  // Object ids: meshes from 1, then the point clouds (gbuffer's numbering).
-  std::vector<uint32_t> materials;
-  for (const Mesh& m : scene.meshes) materials.push_back(m.material);
-  for (const PointCloud& c : scene.pointClouds) materials.push_back(c.material);
-  std::vector<shared::ObjectData> out(materials.size() + 1, {glm::vec4(0.0f)});
-  for (size_t o = 0; o < materials.size(); ++o) {
-    const Material& mat = scene.materials.at(materials[o]);
-    if (!mat.glossy() && !everyObject) continue;
-    // P(cos alpha > c) = 1 - c^(n+1) for a Phong lobe cos^n: half the energy within c =
-    // 2^(-1/(n+1)).
-    const double c = std::pow(2.0, -1.0 / (double(mat.shininess) + 1.0));
-    out[o + 1].specular = glm::vec4(float(std::sqrt(1.0 - c * c) / c), mat.shininess, 0.0f, 0.0f);
-  }
-  return out;
-}
-
-}  // namespace
-
-shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount,
-                                            bool emission) {
-  const VctSettings& s = ctx.settings.vct;
-  return {glm::ivec4(ctx.scene.grid.resolution, lightCount,
-                     s.attenuation == LightAttenuation::normal_weighted ? 1 : 0,
-                     static_cast<int>(s.voxelShadow)),
-          glm::vec4(static_cast<float>(ctx.scene.grid.voxelSize()), s.voxelShadowKappa,
-                    s.voxelShadowOffset, emission ? 1.0f : 0.0f)};
-}
-
-LightVoxelsSetup prepareLightVoxels(const StageContext& ctx, bool emissionVolume) {
-  const EmitterLighting emitters = emittersFor(ctx.scene, ctx.settings.vct.emitters);
-  LightVoxelsSetup s{sceneLights(ctx.scene, emitters), {}};
-  s.params = lightVoxelsParams(ctx, int(s.lights.size()),
-                               emissionVolume && emitters == EmitterLighting::voxels);
-  return s;
-}
-
 ConeTraceSetup prepareConeTrace(const StageContext& ctx) {
   ConeTraceSetup s{sceneLights(ctx.scene, ctx.settings.vct.emitters),
                    coneData(diffuseCones(ctx.settings.vct.cones)),
@@ -88,13 +70,6 @@ ConeTraceSetup prepareConeTrace(const StageContext& ctx) {
                    {}};
   s.params =
       coneTraceParams(ctx, int(s.lights.size()), int(s.cones.size()), cameraRays(ctx.scene).origin);
-  return s;
-}
-
-ConeTraceSetup prepareBounce(const StageContext& ctx) {
-  ConeTraceSetup s{{}, coneData(diffuseCones(ctx.settings.vct.cones)), {}, {}};
-  s.params = coneTraceParams(ctx, 0, int(s.cones.size()), glm::vec3(0.0f));
-  s.params.limits.x = 0;  // no ambient occlusion
   return s;
 }
 
