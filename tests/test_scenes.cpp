@@ -133,6 +133,16 @@ Scene sampledCloudScene(const std::string& file, size_t points, bool glossy) {
   return scene;
 }
 
+testing::AssertionResult sameWords(const BufferSet& a, BufferId ia, const BufferSet& b,
+                                   BufferId ib) {
+  const Buffer &x = a.at(ia), &y = b.at(ib);
+  if (x.words == y.words)
+    return testing::AssertionSuccess()
+           << x.spec->qualifiedName() << " = " << y.spec->qualifiedName();
+  return testing::AssertionFailure()
+         << x.spec->qualifiedName() << " differs from " << y.spec->qualifiedName();
+}
+
 glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v) {
   const int n = b.extent.x;
   const size_t e = size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z));

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "common/buffer.h"
 #include "common/io/image_io.h"
 #include "common/scene.h"
@@ -51,6 +53,12 @@ Scene cornellBoxCloud(size_t points, bool glossy = false);
 Scene sampledCloudScene(const std::string& file, size_t points, bool glossy);
 // Voxel v's components of a volume buffer.
 glm::vec4 voxelValue(const Buffer& b, glm::ivec3 v);
+// Whether buffer `ia` of `a` and buffer `ib` of `b` hold the same words (naming both when not).
+testing::AssertionResult sameWords(const BufferSet& a, BufferId ia, const BufferSet& b,
+                                   BufferId ib);
+inline testing::AssertionResult sameWords(const BufferSet& a, const BufferSet& b, BufferId id) {
+  return sameWords(a, id, b, id);
+}
 // FNV-1a over every buffer's qualified name and words.
 uint64_t hashBuffers(const BufferSet& buffers);
 std::string sourcePath(const std::string& relative);  // relative to the project root

@@ -1,4 +1,5 @@
-// bounce's host preparation: the cone kernels' parameters without lights (common/vct/trace_cones.h).
+// bounce's host preparation: the cone kernels' parameters without lights
+// (common/vct/trace_cones.h).
 #pragma once
 
 #include "common/vct/trace_cones.h"

@@ -77,18 +77,25 @@ Settings anisotropicMip() {
   return settings;
 }
 
+// The closed box at 2^depth, its dense CPU run up to `last`, and an octree whose leaves hold the
+// dense grid's occupied voxels, with the bounce's cone setup for a tree of that depth.
 struct DenseTree {
+  Scene scene;
+  Settings settings;
   BufferSet dense;
   std::vector<shared::SvoSample> samples;
   Octree octree;
   Leaves leaves;
   LeafRadiance radiance;
+  ConeTraceSetup bounce;
 };
 
-DenseTree denseTree(const Scene& scene, const Settings& settings, int depth, const char* last) {
+DenseTree denseTree(int depth, const char* last) {
   const int n = 1 << depth;
   DenseTree t;
-  t.dense = runCpuUntil(scene, settings, last);
+  t.scene = closedBox(n);
+  t.settings = anisotropicMip();
+  t.dense = runCpuUntil(t.scene, t.settings, last);
   for (int z = 0; z < n; ++z)
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x)
@@ -106,6 +113,9 @@ DenseTree denseTree(const Scene& scene, const Settings& settings, int depth, con
     t.leaves.normal[slot] = glm::vec3(voxelValue(t.dense.at(BufferId::common_voxelize_normal), v));
     t.radiance[slot] = voxelValue(t.dense.at(BufferId::vct_light_voxels_radiance), v);
   });
+  const auto tris = prepareVoxelTriangles(t.scene, t.scene.grid);
+  t.bounce = prepareBounce(StageContext(vct(), t.scene, t.settings, tris));
+  t.bounce.params.grid.y = depth - 1;  // the octree's top is the root tile, 2^3 voxels
   return t;
 }
 
@@ -114,9 +124,8 @@ DenseTree denseTree(const Scene& scene, const Settings& settings, int depth, con
 // the same cone results through it at every leaf.
 TEST(SvoLight, OctreeOfADenseGridGivesTheDensePyramidAndConeResults) {
   constexpr int kDepth = 5, kN = 1 << kDepth;
-  const Scene scene = closedBox(kN);
-  const Settings settings = anisotropicMip();
-  const DenseTree t = denseTree(scene, settings, kDepth, "mip");
+  const DenseTree t = denseTree(kDepth, "mip");
+  const Scene& scene = t.scene;
   const BufferSet& dense = t.dense;
   const Buffer& radiance = dense.at(BufferId::vct_light_voxels_radiance);
   const auto& samples = t.samples;
@@ -126,10 +135,7 @@ TEST(SvoLight, OctreeOfADenseGridGivesTheDensePyramidAndConeResults) {
   ASSERT_GT(samples.size(), 1000u);
 
   const NodeLevels mips = cpu::svo::mipTree(o, leaves, leafRadiance, FirstStep::plain);
-  const auto tris = prepareVoxelTriangles(scene, scene.grid);
-  const StageContext ctx(vct(), scene, settings, tris);
-  ConeTraceSetup setup = prepareBounce(ctx);
-  setup.params.grid.y = kDepth - 1;  // the octree's top is the root tile, 2^3 voxels
+  const ConeTraceSetup& setup = t.bounce;
   const cpu::ConeVolumes pyramid(radiance, dense.at(BufferId::vct_mip_radiance_mips6),
                                  MipMode::anisotropic, kN, setup.lights, setup.cones);
   const SvoVolumes tree{o, leaves, &leafRadiance, &mips, &leafRadiance, nullptr, &setup.cones};
@@ -160,20 +166,15 @@ TEST(SvoLight, OctreeOfADenseGridGivesTheDensePyramidAndConeResults) {
 // sum of T^j(direct) for j <= t, with T one gather of the previous frame (linear for fixed
 // geometry), and the increments shrink geometrically; clearing every frame gives one bounce.
 TEST(SvoLight, ProgressiveBouncesAreTheExplicitSumAndConverge) {
-  constexpr int kDepth = 4, kN = 1 << kDepth;
-  const Scene scene = closedBox(kN);
-  const Settings settings = anisotropicMip();
-  const DenseTree t = denseTree(scene, settings, kDepth, "light_voxels");
+  constexpr int kDepth = 4;
+  const DenseTree t = denseTree(kDepth, "light_voxels");
   const Octree& o = t.octree;
   const Leaves& leaves = t.leaves;
   const LeafRadiance& direct = t.radiance;
   const size_t slots = direct.size();
   LeafRadiance zero(slots, glm::vec4(0.0f));  // T alone: no direct term, the leaves' opacity
   for (size_t slot = 0; slot < slots; ++slot) zero[slot].a = direct[slot].a;
-  const auto tris = prepareVoxelTriangles(scene, scene.grid);
-  const StageContext ctx(vct(), scene, settings, tris);
-  ConeTraceSetup setup = prepareBounce(ctx);
-  setup.params.grid.y = kDepth - 1;
+  const ConeTraceSetup& setup = t.bounce;
   const auto T = [&](const LeafRadiance& x) {
     return cpu::svo::bounceOnce(o, leaves, zero, x, setup.cones, setup.params, FirstStep::plain);
   };
