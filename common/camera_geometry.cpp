@@ -67,7 +67,7 @@ CameraGeometry prepareCameraGeometry(const Scene& scene) {
       const glm::dvec3 n = glm::cross(b - a, c - a);
       const double len = glm::length(n);
       g.triangles.push_back({glm::vec4(len > 0.0 ? glm::vec3(n / len) : glm::vec3(0.0f), 0.0f),
-                             glm::uvec4(uint32_t(m) + 1u, mesh.material, 0u, 0u)});
+                             uint32_t(m) + 1u, mesh.material, 0u, 0u});
       for (const glm::dvec3& p : {a, b, c}) {
         const glm::dvec3 v = grid.toVoxel(p);
         g.vertices.emplace_back(v);
@@ -79,12 +79,13 @@ CameraGeometry prepareCameraGeometry(const Scene& scene) {
   for (size_t c = 0; c < scene.pointClouds.size(); ++c) {
     const PointCloud& cloud = scene.pointClouds[c];
     const glm::vec3 albedo = scene.materials.at(cloud.material).albedo;
-    const glm::uvec4 info(uint32_t(scene.meshes.size() + c) + 1u, cloud.material, 0u, 0u);
+    const uint32_t object = uint32_t(scene.meshes.size() + c) + 1u;
     for (size_t i = 0; i < cloud.size(); ++i) {
       const glm::dvec3 v = grid.toVoxel(cloud.positions[i]);
       const double r = double(cloud.radii[i]) * scale;
       g.discs.push_back({glm::vec4(glm::vec3(v), float(r)), glm::vec4(cloud.normals[i], 0.0f),
-                         glm::vec4(cloud.colors.empty() ? albedo : cloud.colors[i], 0.0f), info});
+                         glm::vec4(cloud.colors.empty() ? albedo : cloud.colors[i], 0.0f), object,
+                         cloud.material, 0u, 0u});
       farthest = std::max(farthest, glm::length(v - glm::dvec3(g.camera.origin)) + r);
     }
   }

@@ -5,6 +5,7 @@
 #include "shaders/shared/vct/compose_kernel.h"
 
 namespace voxgi {
+
 std::string_view termName(LightTerm term) {
   switch (term) {
     case LightTerm::emission:

@@ -22,7 +22,8 @@ std::vector<shared::LightData> voxelLights(const Scene& scene) {
     const uint32_t type = l.type == Light::Type::point  ? shared::kLightPoint
                           : l.type == Light::Type::spot ? shared::kLightSpot
                                                         : shared::kLightDirectional;
-    d.info = glm::uvec4(type, l.castsShadows ? 1u : 0u, 0u, 0u);
+    d.kind = type;
+    d.castsShadows = l.castsShadows ? 1u : 0u;
     out.push_back(d);
   }
   return out;
@@ -64,7 +65,8 @@ std::vector<shared::LightData> areaLights(const Scene& scene) {
       d.direction = glm::vec4(glm::vec3(b), float(radius));
       d.falloff = glm::vec4(glm::vec3(c), 0.0f);
       d.intensity = glm::vec4(m.emission, 0.0f);
-      d.info = glm::uvec4(shared::kLightTriangle, 1u, 0u, 0u);
+      d.kind = shared::kLightTriangle;
+      d.castsShadows = 1u;
       out.push_back(d);
     }
   }

@@ -45,7 +45,8 @@ struct Technique {
   const std::vector<Preset>& (*presets)();  // "default" first
   // Which of its stages, buffers and effects the scene needs, and why (common/effect_plan.h).
   EffectPlan (*plan)(const Scene& scene, const Settings& settings);
-  // Where the elements of its sparse buffers in a run lie as grids (common/io/vdb_io.h), for dumps.
+  // Where the elements of its sparse buffers in a run lie as grids (common/sparse_layout.h), for
+  // dumps.
   SparseLayouts (*sparseLayouts)(const BufferSet& run, const GridSpec& grid);
   // Which buffers hold its light terms under these settings.
   LightTermBuffers (*lightTerms)(const Settings& settings);

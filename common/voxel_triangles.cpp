@@ -67,7 +67,8 @@ void emitTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
                        static_cast<float>(area / (double(subdivision) * subdivision)));
   t.emission =
       glm::vec4(emissionScale > 0.0f ? material.emission / emissionScale : glm::vec3(0.0f), 0.0f);
-  t.info = glm::uvec4(axis, subdivision, 0u, 0u);
+  t.dominantAxis = axis;
+  t.subdivision = subdivision;
   out.push_back(t);
 }
 

@@ -14,7 +14,7 @@ namespace voxgi {
 // sink(const glm::ivec3& voxel, const shared::VoxelContribution& c), once per voxel.
 template <class Sink>
 void conservativeWalk(const shared::VoxelTriangle& t, int n, Sink&& sink) {
-  const unsigned axis = t.info.x;
+  const unsigned axis = t.dominantAxis;
   const glm::vec3 p0 = shared::toDominant(glm::vec3(t.v0), axis);
   const glm::vec3 p1 = shared::toDominant(glm::vec3(t.v1), axis);
   const glm::vec3 p2 = shared::toDominant(glm::vec3(t.v2), axis);
@@ -42,7 +42,7 @@ void antialiasedWalk(const shared::VoxelTriangle& t, int n, Sink&& sink) {
   const auto inside = [n](const glm::ivec3& v) {
     return v.x >= 0 && v.y >= 0 && v.z >= 0 && v.x < n && v.y < n && v.z < n;
   };
-  for (int i = 0; i < int(t.info.y); ++i)
+  for (int i = 0; i < int(t.subdivision); ++i)
     for (int k = 0; k < shared::antialiasedRowSamples(t, i); ++k) {
       const glm::vec3 p = shared::antialiasedRowSample(t, i, k);
       const glm::ivec3 base = shared::tentBase(p);

@@ -45,10 +45,13 @@ void common::gbuffer(const StageContext& ctx, BufferSet& buffers) {
       const RayScene::Hit hit = rays.intersect(cam.origin, d);
       if (!hit.found) continue;
       const bool disc = hit.geometry == 1;
-      const glm::uvec4 info = disc ? g.discs[hit.primitive].info : g.triangles[hit.primitive].info;
+      const uint32_t object =
+          disc ? g.discs[hit.primitive].objectId : g.triangles[hit.primitive].objectId;
+      const uint32_t material =
+          disc ? g.discs[hit.primitive].material : g.triangles[hit.primitive].material;
       const glm::vec3 surfaceNormal(disc ? g.discs[hit.primitive].normal
                                          : g.triangles[hit.primitive].normal);
-      const Material& m = ctx.scene.materials[info.y];
+      const Material& m = ctx.scene.materials[material];
       const glm::vec3 a = disc ? glm::vec3(g.discs[hit.primitive].albedo) : m.albedo;
       const size_t e = size_t(y) * size_t(cam.width) + size_t(x);
       const glm::vec3 p = cam.origin + d * hit.t;
@@ -61,7 +64,7 @@ void common::gbuffer(const StageContext& ctx, BufferSet& buffers) {
         if (emissive) emission.set(e, c, m.emission[c]);
       }
       specular.set(e, 3, m.shininess);
-      objectId.set<uint32_t>(e, 0, info.x);
+      objectId.set<uint32_t>(e, 0, object);
       primitiveId.set<uint32_t>(e, 0, (disc ? triangleCount : 0u) + hit.primitive + 1u);
     }
   });

@@ -46,10 +46,10 @@ void splatAntialiased(const Gl& gl, const StageContext& ctx, int n, bool emissiv
   const auto& tris = ctx.triangles.triangles;
   std::vector<uint32_t> firstRow(tris.size() + 1, 0u);
   for (size_t i = 0; i < tris.size(); ++i) {
-    if (uint64_t(firstRow[i]) + tris[i].info.y > 0xFFFFFFFFull - 64u)
+    if (uint64_t(firstRow[i]) + tris[i].subdivision > 0xFFFFFFFFull - 64u)
       throw InputError(ctx.scene.file, "meshes",
                        "too many antialiasing sample rows for one dispatch");
-    firstRow[i + 1] = firstRow[i] + tris[i].info.y;
+    firstRow[i + 1] = firstRow[i] + tris[i].subdivision;
   }
   GlBuffer rows(gl, createBuffer(gl, firstRow.size() * sizeof(uint32_t), firstRow.data()));
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, rows.get());

@@ -24,13 +24,13 @@ layout(location = 6) out uint outPrimitiveId;
 
 void main() {
   SurfaceTriangle t = triangles[gl_PrimitiveID];
-  MaterialData m = materials[t.info.y];
+  MaterialData m = materials[t.material];
   vec3 d = pixelDirection(uForward, uRight, uUp, uTanHalfFov, uAspect, gl_FragCoord.xy, uSize);
   outPosition = vec4(vPosition, 0.0f);
   outNormal = vec4(facingNormal(t.normal.xyz, d), 0.0f);
   outAlbedo = m.albedo;
   outSpecular = m.specular;
   outEmission = m.emission;
-  outObjectId = t.info.x;
+  outObjectId = t.objectId;
   outPrimitiveId = uint(gl_PrimitiveID) + 1u;
 }

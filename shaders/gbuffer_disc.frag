@@ -35,12 +35,12 @@ void main() {
   precise vec3 p = uOrigin + dir * t;
   vec3 off = p - d.center.xyz;
   if (t <= 0.0f || dot(off, off) > d.center.w * d.center.w) discard;
-  MaterialData m = materials[d.info.y];
+  MaterialData m = materials[d.material];
   outPosition = vec4(p, 0.0f);
   outNormal = vec4(facingNormal(n, dir), 0.0f);
   outAlbedo = d.albedo;
   outSpecular = m.specular;
   outEmission = m.emission;
-  outObjectId = d.info.x;
+  outObjectId = d.objectId;
   outPrimitiveId = uTriangleCount + uint(vDisc) + 1u;
 }

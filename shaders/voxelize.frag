@@ -15,7 +15,7 @@ void main() {
   VoxelTriangle t = triangles[gTriangle];
   ivec2 layers = columnLayers(t, column, uResolution);
   for (int k = layers.x; k <= layers.y; ++k) {
-    ivec3 voxel = fromDominant(ivec3(column, k), t.info.x);
+    ivec3 voxel = fromDominant(ivec3(column, k), t.dominantAxis);
     VoxelContribution c;
     if (conservativeContribution(t, voxel, c)) accumulate(voxel, c);
   }

@@ -17,7 +17,7 @@ flat out int gTriangle;
 flat out ivec4 gColumns;  // inclusive column range (u0, w0, u1, w1), as cpu/voxelize.cpp
 
 void main() {
-  uint axis = triangles[gl_PrimitiveIDIn].info.x;
+  uint axis = triangles[gl_PrimitiveIDIn].dominantAxis;
   vec2 p[3];
   for (int i = 0; i < 3; ++i) p[i] = toDominant(gl_in[i].gl_Position.xyz, axis).xy;
   vec2 lo = min(p[0], min(p[1], p[2]));

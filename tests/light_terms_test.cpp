@@ -16,8 +16,6 @@ namespace {
 using reference::pathTrace;
 using reference::PathTraceOptions;
 
-constexpr double kPi = 3.14159265358979;
-
 // Mean over pixels and channels.
 double channelMean(const Image& image) {
   const glm::dvec3 m = meanOf(image);

@@ -18,7 +18,6 @@ namespace voxgi::reference {
 namespace {
 
 using glm::dvec3;
-constexpr double kPi = std::numbers::pi;
 
 // Girard's theorem: a spherical triangle's solid angle is its angle sum minus pi. The interior
 // angle at a is between the planes (x, a, b) and (x, a, c). A formula independent of the
@@ -29,14 +28,14 @@ double girard(dvec3 x, dvec3 p0, dvec3 p1, dvec3 p2) {
                 nb = glm::normalize(glm::cross(a - x, c - x));
     return std::acos(std::clamp<long double>(glm::dot(na, nb), -1.0L, 1.0L));
   };
-  return double(angle(p0, p1, p2) + angle(p1, p2, p0) + angle(p2, p0, p1) - kPi);
+  return double(angle(p0, p1, p2) + angle(p1, p2, p0) + angle(p2, p0, p1) - std::numbers::pi);
 }
 
 TEST(SphericalSampling, SolidAnglesAreTheKnownOnes) {
   // An octant: pi/2, either winding.
   const dvec3 o(0.0), ex(1, 0, 0), ey(0, 1, 0), ez(0, 0, 1);
-  EXPECT_NEAR(SphericalTriangle::make(o, ex, ey, ez)->solidAngle(), kPi / 2.0, 1e-14);
-  EXPECT_NEAR(SphericalTriangle::make(o, ex, ez, ey)->solidAngle(), kPi / 2.0, 1e-14);
+  EXPECT_NEAR(SphericalTriangle::make(o, ex, ey, ez)->solidAngle(), std::numbers::pi / 2.0, 1e-14);
+  EXPECT_NEAR(SphericalTriangle::make(o, ex, ez, ey)->solidAngle(), std::numbers::pi / 2.0, 1e-14);
   // An a x b rectangle seen from height h above a corner: atan(ab / (h sqrt(a² + b² + h²))).
   const double a = 1.0, b = 2.0, h = 0.5;
   const auto corner = [](double w, double l, double z) {
@@ -183,7 +182,8 @@ TEST(SphericalSampling, MapsTheUnitSquareUniformlyOntoTheSolidAngle) {
     EXPECT_LT(worstOutside, 1e-9);
     const double total = double(kGrid) * kGrid;
     for (size_t k = 0; k < 4; ++k) EXPECT_NEAR(count[k] / total, share[k], 2e-3) << "part " << k;
-    EXPECT_NEAR(omega * cosineSum / total / (kPi * test::polygonFormFactor(v, c.x, n)), 1.0, 1e-4);
+    EXPECT_NEAR(omega * cosineSum / total / (std::numbers::pi * test::polygonFormFactor(v, c.x, n)),
+                1.0, 1e-4);
   }
 }
 

@@ -1,7 +1,9 @@
 #include "tests/test_scenes.h"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -68,7 +70,25 @@ double polygonFormFactor(const std::vector<glm::dvec3>& v, glm::dvec3 p, glm::dv
     const glm::dvec3 c = glm::cross(a, b);
     sum += std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) * glm::dot(n, glm::normalize(c));
   }
-  return std::abs(sum) / (2.0 * 3.14159265358979323846);
+  return std::abs(sum) / (2.0 * std::numbers::pi);
+}
+
+Scene closedBox(int n, const Material& walls) {
+  std::vector<Triangle> tris;
+  const double lo = 2.5 / n, hi = (n - 2.5) / n;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (const Triangle& t : quad(axis, lo, {lo, lo}, {hi, hi})) tris.push_back(t);
+    for (Triangle t : quad(axis, hi, {lo, lo}, {hi, hi})) {
+      std::swap(t[1], t[2]);  // facing -axis, into the box
+      tris.push_back(t);
+    }
+  }
+  return makeScene(tris, unitGrid(n), walls);
+}
+
+double squareFormFactor(double s, double h) {
+  const double a = s / h, ra = std::sqrt(1.0 + a * a);
+  return 4.0 * (2.0 * a / ra * std::atan(a / ra)) / (2.0 * std::numbers::pi);
 }
 
 glm::dvec3 meanOf(const Image& image) {

@@ -23,6 +23,9 @@ Scene makeScene(const std::vector<Triangle>& triangles, const GridSpec& grid,
 std::vector<Triangle> quad(int axis, double at, glm::dvec2 lo, glm::dvec2 hi);
 // A unit grid [0, size]^3 with N^3 voxels.
 GridSpec unitGrid(int n, double size = 1.0);
+// A closed box in the unit grid of n voxels: six inward-facing walls through the centres of voxels
+// 2 and n - 3 on each axis, all of one material (emitting in the radiosity tests that use it).
+Scene closedBox(int n, const Material& walls);
 // `scene` seen from `position` toward `lookAt` through a square image of `size` pixels.
 Scene withCamera(Scene scene, glm::dvec3 position, glm::dvec3 lookAt, glm::dvec3 up, double fov,
                  int size);
@@ -32,6 +35,9 @@ glm::dvec3 meanOf(const Image& image);
 // Lambert's formula: the form factor from a point with unit normal n to the convex polygon v
 // (seen from its front, wholly above the point's plane), in double precision.
 double polygonFormFactor(const std::vector<glm::dvec3>& v, glm::dvec3 p, glm::dvec3 n);
+// The form factor from a point to a parallel square of half-size s centred at distance h above it,
+// facing it: four corner rectangles of Howell's catalogue (configuration B-3).
+double squareFormFactor(double s, double h);
 
 // The voxelize stage on the CPU.
 BufferSet runCpu(const Scene& scene, VoxelizeMode mode);

@@ -71,11 +71,12 @@ StageRun runStages(const SceneOptions& o, const StageSpec* last, bool inspect) {
                chooseBackend(o.backend, gpu::parseGlPlatform(o.gl)),
                {},
                {},
+               {},
                0.0};
   if (!run.backend.note.empty()) std::cerr << "voxgi: " << run.backend.note << "\n";
   const auto start = std::chrono::steady_clock::now();
-  const VoxelTriangles triangles = prepareVoxelTriangles(run.scene, run.scene.grid);
-  const StageContext ctx{technique, run.scene, run.settings, triangles};
+  run.triangles = prepareVoxelTriangles(run.scene, run.scene.grid);
+  const StageContext ctx{technique, run.scene, run.settings, run.triangles};
   runPipeline(run.backend.stages(), ctx, run.buffers, last,
               [&](const StageSpec& stage, double) { run.stages.push_back(&stage); });
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

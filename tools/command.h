@@ -12,6 +12,7 @@
 #include "common/pipeline.h"
 #include "common/scene.h"
 #include "common/settings.h"
+#include "common/voxel_triangles.h"
 #include "tools/backend.h"
 
 namespace voxgi::tools {
@@ -71,6 +72,7 @@ struct StageRun {
   Scene scene;
   Settings settings;
   BackendChoice backend;
+  VoxelTriangles triangles;  // prepareVoxelTriangles(scene, scene.grid), as the stages saw them
   BufferSet buffers;
   std::vector<const StageSpec*> stages;  // those the plan ran
   double seconds = 0.0;                  // running them

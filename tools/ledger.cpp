@@ -106,8 +106,7 @@ int runLedger(const LedgerOptions& o) {
         o.scene.technique + " has no propagation volume; the ledger is lpv's and holpv's");
   if (!o.json.empty()) checkOutputPath(o.json);
   const StageRun run = runStages(o.scene, &propagate, true);
-  const VoxelTriangles triangles = prepareVoxelTriangles(run.scene, run.scene.grid);
-  const StageContext ctx{technique, run.scene, run.settings, triangles};
+  const StageContext ctx{technique, run.scene, run.settings, run.triangles};
   const validation::Ledger ledger = validation::lpvLedger(ctx, run.buffers);
   std::cout << technique.name << " ledger of " << run.scene.file << " ("
             << run.scene.grid.resolution << "^3, " << ledger.steps.size() << " steps, "

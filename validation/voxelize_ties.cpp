@@ -37,12 +37,12 @@ bool conservativeTie(const VoxelTriangle& t, const glm::ivec3& v, float satEpsil
   const float s = shared::satSeparation(a, b, c, true);
   if (std::abs(s) <= satEpsilon) return true;
   if (s > 0.0f) return false;
-  const float area = shared::projectedAreaInVoxel(a, b, c, t.info.x) * t.albedo.w;
+  const float area = shared::projectedAreaInVoxel(a, b, c, t.dominantAxis) * t.albedo.w;
   return contributionNearHalf(t, area * shared::kWeightScale);
 }
 
 bool antialiasedTie(const VoxelTriangle& t, const glm::ivec3& v) {
-  for (int i = 0; i < int(t.info.y); ++i)
+  for (int i = 0; i < int(t.subdivision); ++i)
     for (int k = 0; k < shared::antialiasedRowSamples(t, i); ++k) {
       const glm::vec3 p = shared::antialiasedRowSample(t, i, k);
       const glm::ivec3 base = shared::tentBase(p);

@@ -22,7 +22,7 @@ constexpr double kTriangleViewLift = 0.05;
 // Whether light i of `lights` (sceneLights: the scene's analytic lights, then its emissive
 // triangles) gets six cube faces.
 bool cubeMapped(const Scene& scene, const std::vector<shared::LightData>& lights, size_t i) {
-  if (lights[i].info.x == shared::kLightTriangle) return true;
+  if (lights[i].kind == shared::kLightTriangle) return true;
   const Light& l = scene.lights[i];
   return l.type == Light::Type::point ||
          (l.type == Light::Type::spot && l.spotAngleDeg > kSingleViewSpotDeg);
@@ -45,7 +45,9 @@ shared::RsmView view(dvec3 origin, bool perspective, dvec3 forward, double exten
   v.forward = glm::vec4(glm::vec3(forward), static_cast<float>(extent));
   v.right = glm::vec4(glm::vec3(right), 0.0f);
   v.up = glm::vec4(glm::vec3(up), 0.0f);
-  v.info = glm::ivec4(light, first, count, 0);
+  v.light = light;
+  v.firstView = first;
+  v.viewCount = count;
   return v;
 }
 
@@ -94,7 +96,7 @@ RsmSetup prepareRsm(const Scene& scene, const Settings& s) {
     const shared::LightData& l = out.lights[i];
     const int light = static_cast<int>(i), first = static_cast<int>(out.views.size());
     dvec3 at(glm::vec3(l.position));
-    if (l.info.x == shared::kLightTriangle) {
+    if (l.kind == shared::kLightTriangle) {
       // The centroid, moved kTriangleViewLift cells off the emitting side: a view starting on the
       // triangle would meet it and its neighbours at depth 0, where the rasterizer's near plane
       // (1e-2 cells) and a ray cast disagree.
@@ -108,7 +110,7 @@ RsmSetup prepareRsm(const Scene& scene, const Settings& s) {
         axis[f / 2] = f % 2 == 0 ? 1.0 : -1.0;
         out.views.push_back(view(at, true, axis, 1.0, light, first, 6));
       }
-    } else if (l.info.x == shared::kLightSpot) {
+    } else if (l.kind == shared::kLightSpot) {
       const double tanHalf = std::tan(0.5 * scene.lights[i].spotAngleDeg * M_PI / 180.0);
       out.views.push_back(view(at, true, scene.lights[i].direction, tanHalf, light, first, 1));
     } else {
@@ -158,14 +160,14 @@ glm::dvec3 rsmFluxBound(const Scene& scene, const RsmSetup& rsm) {
   dvec3 total(0.0);
   double tanHalf = -1.0, solidAngle = 0.0;  // the last perspective view's (cube faces share it)
   for (const shared::LightData& l : rsm.lights) {
-    if (l.info.x != shared::kLightTriangle) continue;
+    if (l.kind != shared::kLightTriangle) continue;
     const std::array<dvec3, 3> c = triangleCorners(l);
     const double area = 0.5 * glm::length(glm::cross(c[1] - c[0], c[2] - c[0])) * s * s;
     total += M_PI * dvec3(glm::vec3(l.intensity)) * area;
   }
   for (const shared::RsmView& v : rsm.views) {
-    if (rsm.lights[size_t(v.info.x)].info.x == shared::kLightTriangle) continue;
-    const Light& l = scene.lights[size_t(v.info.x)];
+    if (rsm.lights[size_t(v.light)].kind == shared::kLightTriangle) continue;
+    const Light& l = scene.lights[size_t(v.light)];
     if (v.origin.w == 0.0f) {  // the box's whole cross-section at the light's irradiance
       const double side = 2.0 * double(v.forward.w) * s;
       total += dvec3(l.intensity) * side * side;

@@ -13,8 +13,8 @@ constexpr int kFaces = 6;
 
 // The pyramid of a tree: top level depth - 1, six faces.
 void treeParams(shared::ConeTraceParams& params, int depth) {
-  params.grid.y = depth - 1;
-  params.grid.z = 1;
+  params.topLevel = depth - 1;
+  params.directional = 1;
 }
 
 }  // namespace
@@ -117,7 +117,7 @@ ConeTraceSetup treeConeTrace(const StageContext& ctx, int depth) {
   ConeTraceSetup s = prepareConeTrace(ctx);
   treeParams(s.params, depth);
   s.cones.clear();  // no diffuse cones: the leaves hold the diffuse light
-  s.params.grid.w = 0;
+  s.params.diffuseConeCount = 0;
   return s;
 }
 

@@ -7,11 +7,16 @@ namespace voxgi {
 shared::LightVoxelsParams lightVoxelsParams(const StageContext& ctx, int lightCount,
                                             bool emission) {
   const VctSettings& s = ctx.settings.vct;
-  return {glm::ivec4(ctx.scene.grid.resolution, lightCount,
-                     s.attenuation == LightAttenuation::normal_weighted ? 1 : 0,
-                     static_cast<int>(s.voxelShadow)),
-          glm::vec4(static_cast<float>(ctx.scene.grid.voxelSize()), s.voxelShadowKappa,
-                    s.voxelShadowOffset, emission ? 1.0f : 0.0f)};
+  shared::LightVoxelsParams p{};
+  p.resolution = ctx.scene.grid.resolution;
+  p.lightCount = lightCount;
+  p.normalWeighted = s.attenuation == LightAttenuation::normal_weighted ? 1 : 0;
+  p.voxelShadow = static_cast<int>(s.voxelShadow);
+  p.voxelSize = static_cast<float>(ctx.scene.grid.voxelSize());
+  p.shadowKappa = s.voxelShadowKappa;
+  p.shadowOffset = s.voxelShadowOffset;
+  p.emissive = emission ? 1 : 0;
+  return p;
 }
 
 LightVoxelsSetup prepareLightVoxels(const StageContext& ctx, bool emissionVolume) {

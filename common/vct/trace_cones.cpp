@@ -49,18 +49,31 @@ shared::ConeTraceParams coneTraceParams(const StageContext& ctx, int lightCount,
   const float offset = s.coneOffsetUnit == ConeOffsetUnit::grid64
                            ? s.coneOffset * std::max(1.0f, float(n) / 64.0f)
                            : s.coneOffset;
-  return {glm::ivec4(n, mipLevelCount(n), s.mip == MipMode::anisotropic ? 1 : 0, coneCount),
-          glm::ivec4(lightCount, s.diffuseCones == DiffuseCones::first_hit ? 1 : 0,
-                     s.shadowFalloff == ShadowFalloff::kahl2019 ? 1 : 0,
-                     s.specularBrdf == SpecularBrdf::light_angle ? 1 : 0),
-          glm::ivec4(ctx.plan.on(Effect::ambient_occlusion) ? 1 : 0, steps, 0, 0),
-          glm::vec4(s.coneStep, offset, minStep, maxDistance),
-          glm::vec4(float(std::tan(halfShadow)), s.shadowStrength, s.ambientLambda,
-                    float(ctx.scene.grid.voxelSize())),
-          glm::vec4(s.specularFalloff, 0.008f * std::numbers::pi_v<float>, 0.0f, 0.0f),
-          glm::vec4(ctx.scene.background, 0.0f),
-          glm::vec4(cameraPosition, 0.0f),
-          glm::vec4(s.coneClearance, 0.0f, 0.0f, 0.0f)};
+  shared::ConeTraceParams p{};
+  p.resolution = n;
+  p.topLevel = mipLevelCount(n);
+  p.directional = s.mip == MipMode::anisotropic ? 1 : 0;
+  p.diffuseConeCount = coneCount;
+  p.lightCount = lightCount;
+  p.firstHitDiffuse = s.diffuseCones == DiffuseCones::first_hit ? 1 : 0;
+  p.kahlShadow = s.shadowFalloff == ShadowFalloff::kahl2019 ? 1 : 0;
+  p.lightAngleSpecular = s.specularBrdf == SpecularBrdf::light_angle ? 1 : 0;
+  p.ambientOcclusion = ctx.plan.on(Effect::ambient_occlusion) ? 1 : 0;
+  p.maxSteps = steps;
+  p.coneStep = s.coneStep;
+  p.coneOffset = offset;
+  p.minStep = minStep;
+  p.maxDistance = maxDistance;
+  p.tanHalfShadowAperture = float(std::tan(halfShadow));
+  p.shadowStrength = s.shadowStrength;
+  p.ambientLambda = s.ambientLambda;
+  p.voxelSize = float(ctx.scene.grid.voxelSize());
+  p.specularFalloff = s.specularFalloff;
+  p.specularGrace = 0.008f * std::numbers::pi_v<float>;
+  p.coneClearance = s.coneClearance;
+  p.background = glm::vec4(ctx.scene.background, 0.0f);
+  p.camera = glm::vec4(cameraPosition, 0.0f);
+  return p;
 }
 
 ConeTraceSetup prepareConeTrace(const StageContext& ctx) {

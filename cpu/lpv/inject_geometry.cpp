@@ -40,9 +40,9 @@ Buffer rsmBlockers(const StageContext& ctx, const BufferSet& buffers) {
                &normal = buffers.at(BufferId::lpv_rsm_normal);
   const int r = rsm.params.resolution;
   std::vector<uint32_t> scratch(sums.words.size());
-  for (size_t first = 0; first < rsm.views.size(); first += size_t(rsm.views[first].info.z)) {
+  for (size_t first = 0; first < rsm.views.size(); first += size_t(rsm.views[first].viewCount)) {
     std::fill(scratch.begin(), scratch.end(), 0u);
-    const int rows = r * rsm.views[first].info.z;
+    const int rows = r * rsm.views[first].viewCount;
     parallelFor(0, rows, [&](int row) {
       const shared::RsmView& view = rsm.views[first + size_t(row / r)];
       for (int x = 0; x < r; ++x) {

@@ -26,7 +26,7 @@ void lpv::rsm(const StageContext& ctx, BufferSet& buffers) {
       primitive(lpv_rsm_primitive_id, extent);
   parallelFor(0, r * views, [&](int row) {
     const shared::RsmView& v = setup.views[size_t(row / r)];
-    const shared::LightData& light = lights[size_t(v.info.x)];
+    const shared::LightData& light = lights[size_t(v.light)];
     for (int x = 0; x < r; ++x) {
       glm::vec3 origin, dir;
       shared::rsmTexelRay(v, {x, row % r}, r, origin, dir);
@@ -35,7 +35,7 @@ void lpv::rsm(const StageContext& ctx, BufferSet& buffers) {
       const SurfaceTriangle& s = g.triangles[hit.primitive];
       const glm::vec3 p = origin + dir * hit.t;
       const float footprint = shared::rsmFootprint(v, dir, hit.t, r, voxelSize);
-      const glm::vec3 albedo = ctx.scene.materials[s.info.y].albedo;
+      const glm::vec3 albedo = ctx.scene.materials[s.material].albedo;
       const size_t e = size_t(row) * size_t(r) + size_t(x);
       flux.setVec3(e, shared::rsmFlux(light, p, albedo, footprint, voxelSize));
       normal.setVec3(e, shared::facingNormal(glm::vec3(s.normal), dir));

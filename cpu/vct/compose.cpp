@@ -1,7 +1,10 @@
 // CPU compose stage: the shared kernel (shaders/shared/vct/compose_kernel.h) per pixel.
+#include <optional>
+
 #include <tbb/blocked_range.h>
 
 #include "common/parallel.h"
+#include "common/technique.h"
 #include "cpu/stages.h"
 #include "shaders/shared/vct/compose_kernel.h"
 
@@ -10,10 +13,10 @@ void vct::compose(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, StageId::vct_compose);
   using enum BufferId;
   const Buffer& objectId = buffers.at(common_gbuffer_object_id);
-  // AO is applied only when asked (plan.mode=full computes it anyway).
-  const Buffer* ambient = ctx.settings.vct.ambientOcclusion == AmbientOcclusion::on
-                              ? buffers.find(vct_trace_cones_ambient_occlusion)
-                              : nullptr;
+  // AO is applied only where the technique's light terms say so (plan.mode=full computes it
+  // whether asked for or not).
+  const std::optional<BufferId> ao = ctx.technique.lightTerms(ctx.settings).ambientOcclusion;
+  const Buffer* ambient = ao ? buffers.find(*ao) : nullptr;
   const Buffer *albedo = buffers.find(common_gbuffer_pixel_albedo),
                *specular = buffers.find(common_gbuffer_pixel_specular),
                *emission = buffers.find(common_gbuffer_pixel_emission),

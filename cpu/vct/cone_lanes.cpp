@@ -136,7 +136,7 @@ Texel tapAt(const uint32_t* voxel, size_t face) {
 Texel sampleLevel(const ConeVolumes& volumes, int level, const shared::TrilinearCell& c,
                   const LaneCone& cone, const shared::ConeTraceParams& params) {
   if (volumes.cellEmpty(level, c.base)) return Texel(0.0f);
-  const bool directional = level > 0 && params.grid.z != 0;
+  const bool directional = level > 0 && params.directional != 0;
   const CellTaps taps = cellTaps(volumes, level, c, directional ? 4 * size_t(volumes.faces) : 4);
   if (!directional) return blendCell(taps, 0, c.f);
   Texel sum(0.0f);
@@ -192,9 +192,9 @@ struct LaneState {
 
 void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int kind,
                 const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits) {
-  const float n = float(params.grid.x);
-  const float beta = params.march.x;
-  const bool ambient = params.limits.x == 1 && kind <= shared::kMarchFirstHit;
+  const float n = float(params.resolution);
+  const float beta = params.coneStep;
+  const bool ambient = params.ambientOcclusion == 1 && kind <= shared::kMarchFirstHit;
   const bool radiance = kind <= shared::kMarchFirstHit;
   LaneState st;
   size_t next = 0;
@@ -243,7 +243,7 @@ void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int k
     for (int o = 0; o < kLanes; o += kWidth) {
       const Lanes t = Lanes::load_aligned(st.t + o);
       const int stop = bitsOf(t > Lanes::load_aligned(st.maxDistance + o) ||
-                              Lanes::load_aligned(st.steps + o) >= Lanes(float(params.limits.y)));
+                              Lanes::load_aligned(st.steps + o) >= Lanes(float(params.maxSteps)));
       Lanes q[3];
       LaneMask outside(false);
       for (int k = 0; k < 3; ++k) {
@@ -253,12 +253,12 @@ void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int k
       over |= stop << o;
       exited |= (bitsOf(outside) & ~stop) << o;
       Lanes width = Lanes(2.0f) * t * Lanes::load_aligned(st.tanHalf + o);
-      if (params.surface.x > 0.0f) {
-        const Lanes height = Lanes(params.march.y) + t * Lanes::load_aligned(st.rise + o);
-        width = glmMin(width, height * Lanes(params.surface.x));
+      if (params.coneClearance > 0.0f) {
+        const Lanes height = Lanes(params.coneOffset) + t * Lanes::load_aligned(st.rise + o);
+        width = glmMin(width, height * Lanes(params.coneClearance));
       }
       const Lanes diameter = glmMax(width, Lanes(1.0f));
-      const Lanes level = glmMin(log2Lanes(diameter), Lanes(float(params.grid.y)));
+      const Lanes level = glmMin(log2Lanes(diameter), Lanes(float(params.topLevel)));
       const Lanes l0 = floorLanes(level);
       diameter.store_aligned(diameters + o);
       l0.store_aligned(l0s + o);
@@ -296,8 +296,8 @@ void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int k
       if (xsimd::any(seen)) {
         Lanes corrected;
         if (kind == shared::kMarchShadowKahl) {
-          const Lanes x =
-              xsimd::sqrt(t) * Lanes(params.shadow.y) / Lanes::load_aligned(st.maxDistance + o);
+          const Lanes x = xsimd::sqrt(t) * Lanes(params.shadowStrength) /
+                          Lanes::load_aligned(st.maxDistance + o);
           const Lanes c = glmMin(glmMax(x, Lanes(0.0f)), Lanes(1.0f));
           corrected = a * (c * c * (Lanes(3.0f) - Lanes(2.0f) * c));
         } else if (beta == 1.0f) {
@@ -332,7 +332,7 @@ void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int k
         }
         if (ambient) {
           const Lanes falloff =
-              Lanes(1.0f) / (Lanes(1.0f) + Lanes(params.shadow.z) * (Lanes(0.5f) * diameter));
+              Lanes(1.0f) / (Lanes(1.0f) + Lanes(params.ambientLambda) * (Lanes(0.5f) * diameter));
           const Lanes before = Lanes::load_aligned(st.ambient + o);
           xsimd::select(seen, before + (Lanes(1.0f) - before) * corrected * falloff, before)
               .store_aligned(st.ambient + o);
@@ -341,7 +341,7 @@ void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int k
         occluded.store_aligned(st.occlusion + o);
         ended |= bitsOf(seen && occluded >= Lanes(0.999f)) << o;
       }
-      (t + glmMax(Lanes(beta) * diameter, Lanes(params.march.z))).store_aligned(st.t + o);
+      (t + glmMax(Lanes(beta) * diameter, Lanes(params.minStep))).store_aligned(st.t + o);
       (Lanes::load_aligned(st.steps + o) + Lanes(1.0f)).store_aligned(st.steps + o);
     }
     for (int j = 0; j < kLanes; ++j) {

@@ -63,7 +63,7 @@ class TileTracer {
   // Direct light, one light at a time in the kernel's order.
   void addDirectLight(std::vector<Pixel>& pixels) {
     std::vector<shared::LightPath> paths(pixels.size());
-    for (int i = 0; i < params_.modes.x; ++i) {
+    for (int i = 0; i < params_.lightCount; ++i) {
       jobs_.clear();
       for (size_t k = 0; k < pixels.size(); ++k) {
         const Pixel& px = pixels[k];
@@ -87,14 +87,14 @@ class TileTracer {
 
   // The diffuse cones, cone by cone: a lane's next cone is its neighbour's, much like it.
   std::vector<shared::DiffuseSum> diffuse(const std::vector<Pixel>& pixels) {
-    const int coneCount = params_.grid.w;
+    const int coneCount = params_.diffuseConeCount;
     jobs_.clear();
     for (int c = 0; c < coneCount; ++c)
       for (const Pixel& px : pixels) {
         const shared::ConeData cone = volumes_.coneAt(c);
         jobs_.push_back({px.origin,
                          shared::diffuseConeDirection(px.tangent, px.bitangent, px.n, cone),
-                         cone.direction.z, cone.direction.w, params_.march.w});
+                         cone.direction.z, cone.direction.w, params_.maxDistance});
       }
     march(shared::diffuseMarchKind(params_));
     std::vector<shared::DiffuseSum> sums(pixels.size(), shared::noDiffuse());
@@ -112,7 +112,7 @@ class TileTracer {
     for (const Pixel& px : pixels)
       if (px.object.specular.x > 0.0f)
         jobs_.push_back({px.origin, px.mirror, shared::dot3(px.n, px.mirror), px.object.specular.x,
-                         params_.march.w});
+                         params_.maxDistance});
     march(shared::kMarchRadiance);
     size_t specular = 0;
     for (size_t k = 0; k < pixels.size(); ++k) {

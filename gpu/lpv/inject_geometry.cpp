@@ -55,8 +55,8 @@ void lpv::inject_geometry(GlContext& context, const StageContext& ctx, BufferSet
     Program scatter(gl, {&shaders::lpv_inject_geometry_rsm_comp});
     scatter.set("uResolution", n);
     const int r = rsm.params.resolution;
-    for (size_t first = 0; first < rsm.views.size(); first += size_t(rsm.views[first].info.z)) {
-      const int count = rsm.views[first].info.z;
+    for (size_t first = 0; first < rsm.views.size(); first += size_t(rsm.views[first].viewCount)) {
+      const int count = rsm.views[first].viewCount;
       gl.ClearNamedBufferData(scratchBlock.get(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT,
                               nullptr);
       scatter.use();

@@ -1,7 +1,9 @@
 // GPU compose stage: shaders/vct/compose.comp runs the shared final-colour kernel per pixel on the
 // gbuffer's materials and trace_cones' terms, packed per pixel on the host.
+#include <optional>
 #include <vector>
 
+#include "common/technique.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
 #include "gpu/volumes.h"
@@ -32,8 +34,9 @@ void vct::compose(GlContext& context, const StageContext& ctx, BufferSet& buffer
     if (term == nullptr) continue;
     for (size_t e = 0; e < pixels; ++e) inputs[e].*field = glm::vec4(term->vec3At(e), 0.0f);
   }
-  if (const Buffer* ao = buffers.find(vct_trace_cones_ambient_occlusion);
-      ao != nullptr && ctx.settings.vct.ambientOcclusion == AmbientOcclusion::on)
+  // AO only where the technique's light terms apply it, as on the CPU.
+  const std::optional<BufferId> aoId = ctx.technique.lightTerms(ctx.settings).ambientOcclusion;
+  if (const Buffer* ao = aoId ? buffers.find(*aoId) : nullptr; ao != nullptr)
     for (size_t e = 0; e < pixels; ++e) inputs[e].ambientOcclusion.x = ao->get<float>(e, 0);
 
   GlBuffer ids(gl, createBuffer(gl, objectId.words.size() * 4, objectId.words.data()));

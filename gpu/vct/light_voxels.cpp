@@ -13,7 +13,7 @@ void vct::light_voxels(GlContext& context, const StageContext& ctx, BufferSet& b
   const Buffer* emission = buffers.find(BufferId::common_voxelize_emission);
   // Under emitters.mode=area_lights the emission volume is not read, so not uploaded.
   const LightVoxelsSetup setup = prepareLightVoxels(ctx, emission != nullptr);
-  const bool emissive = setup.params.values.w != 0.0f;
+  const bool emissive = setup.params.emissive == 1;
 
   GlBuffer lightBlock(gl, createBlock(gl, setup.params, setup.lights));
   GlTexture opacity(gl, uploadVolume(gl, buffers.at(BufferId::common_voxelize_opacity)));

@@ -28,8 +28,8 @@ void main() {
   rsmTexelRay(v, ivec2(gl_FragCoord.xy), resolution, origin, dir);
   precise float depth = dot3(vPosition - vec3(v.origin), vec3(v.forward));
   float footprint = rsmFootprint(v, dir, depth, resolution, voxelSize);
-  vec3 albedo = materials[t.info.y].albedo.rgb;
-  outFlux = vec4(rsmFlux(lights[v.info.x], vPosition, albedo, footprint, voxelSize), 0.0f);
+  vec3 albedo = materials[t.material].albedo.rgb;
+  outFlux = vec4(rsmFlux(lights[v.light], vPosition, albedo, footprint, voxelSize), 0.0f);
   outNormal = vec4(facingNormal(t.normal.xyz, dir), 0.0f);
   outDepth = vec4(depth, 0.0f, 0.0f, 0.0f);
   outPrimitiveId = uint(gl_PrimitiveID) + 1u;

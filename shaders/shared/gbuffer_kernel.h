@@ -10,18 +10,24 @@ VOXGI_NAMESPACE_BEGIN
 // One triangle's surface (std430), indexed by gl_PrimitiveID on the GPU and by Embree's primitive
 // id on the CPU.
 struct SurfaceTriangle {
-  vec4 normal;  // xyz: unit normal (right-handed winding), 0 if degenerate
-  uvec4 info;   // x: object id (mesh index + 1), y: material index
+  vec4 normal;    // xyz: unit normal (right-handed winding), 0 if degenerate
+  uint objectId;  // mesh index + 1
+  uint material;  // index into the materials
+  uint pad0;
+  uint pad1;
 };
 
 // One point of a cloud as the disc the gbuffer sees (std430), after the scene's triangles in the
 // primitive numbering: Embree's oriented disc on the CPU, a quad in its plane cut to the circle on
 // the GPU (shaders/gbuffer_disc.vert).
 struct SurfaceDisc {
-  vec4 center;  // xyz: voxel-local centre; w: radius in voxels
-  vec4 normal;  // xyz: unit normal
-  vec4 albedo;  // rgb: the point's colour, or its material's albedo
-  uvec4 info;   // x: object id (mesh count + cloud index + 1), y: material index
+  vec4 center;    // xyz: voxel-local centre; w: radius in voxels
+  vec4 normal;    // xyz: unit normal
+  vec4 albedo;    // rgb: the point's colour, or its material's albedo
+  uint objectId;  // mesh count + cloud index + 1
+  uint material;  // index into the materials
+  uint pad0;
+  uint pad1;
 };
 
 // One material (std430).

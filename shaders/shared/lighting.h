@@ -26,7 +26,10 @@ struct LightData {
   vec4 intensity;  // rgb: W/sr (point, spot) or irradiance (directional)
   vec4
       falloff;  // xyz: constant, linear, quadratic (world units); w: 1 polynomial, 0 inverse square
-  uvec4 info;   // x: kLight*; y: 1 if it casts shadows; zw: 0
+  uint kind;    // kLight*
+  uint castsShadows;  // 1: a shadow ray or cone tests it
+  uint pad0;
+  uint pad1;
 };
 
 // Irradiance on a plane facing the light at p (voxel-local), without the cosine. `toLight` gets
@@ -34,7 +37,7 @@ struct LightData {
 // directional light). `voxelSize` converts voxels to world units for the falloff.
 VOXGI_FN vec3 lightIrradiance(LightData l, vec3 p, float voxelSize, OUT(vec3) toLight,
                               OUT(float) distance) {
-  if (l.info.x == kLightDirectional) {
+  if (l.kind == kLightDirectional) {
     toLight = -vec3(l.direction);
     distance = 1e30f;
     return vec3(l.intensity);
@@ -46,8 +49,7 @@ VOXGI_FN vec3 lightIrradiance(LightData l, vec3 p, float voxelSize, OUT(vec3) to
     return vec3(0.0f);
   }
   toLight = d / distance;
-  if (l.info.x == kLightSpot && dot3(-toLight, vec3(l.direction)) < l.direction.w)
-    return vec3(0.0f);
+  if (l.kind == kLightSpot && dot3(-toLight, vec3(l.direction)) < l.direction.w) return vec3(0.0f);
   precise float r = distance * voxelSize;
   precise float att = l.falloff.w == 0.0f
                           ? 1.0f / (r * r)

@@ -119,7 +119,7 @@ const float kLayerMargin = 0.0078125f;
 // triangle's plane over the column's square, widened by kLayerMargin (the separating-axis test
 // decides).
 VOXGI_FN ivec2 columnLayers(VoxelTriangle t, ivec2 col, int resolution) {
-  uint axis = t.info.x;
+  uint axis = t.dominantAxis;
   precise vec3 p0 = toDominant(vec3(t.v0), axis);
   precise vec3 p1 = toDominant(vec3(t.v1), axis);
   precise vec3 p2 = toDominant(vec3(t.v2), axis);
@@ -171,7 +171,7 @@ VOXGI_FN bool conservativeContribution(VoxelTriangle t, ivec3 voxel, OUT(VoxelCo
   precise vec3 b = vec3(t.v1) - centre;
   precise vec3 d = vec3(t.v2) - centre;
   if (satSeparation(a, b, d, false) > 0.0f) return false;
-  precise float area = projectedAreaInVoxel(a, b, d, t.info.x) * t.albedo.w;
+  precise float area = projectedAreaInVoxel(a, b, d, t.dominantAxis) * t.albedo.w;
   c = weightedContribution(t, max(1u, quantize(area * kWeightScale)));
   return true;
 }
@@ -179,7 +179,7 @@ VOXGI_FN bool conservativeContribution(VoxelTriangle t, ivec3 voxel, OUT(VoxelCo
 // Antialiased mode: the triangle is split into n*n congruent sub-triangles (row i, column j,
 // pointing up or down); each sub-triangle's centroid is one sample of area t.normal.w.
 VOXGI_FN vec3 antialiasedSample(VoxelTriangle t, int i, int j, bool up) {
-  precise float n = float(t.info.y);
+  precise float n = float(t.subdivision);
   precise float offset = up ? 0.33333334f : 0.6666667f;
   precise float b1 = (float(i) + offset) / n;
   precise float b2 = (float(j) + offset) / n;
@@ -192,7 +192,7 @@ VOXGI_FN vec3 antialiasedSample(VoxelTriangle t, int i, int j, bool up) {
 // use: cell j's upward sub-triangle (k = 2j), then its downward one (k = 2j + 1); the last cell of
 // a row has only the upward half.
 VOXGI_FN int antialiasedRowSamples(VoxelTriangle t, int i) {
-  return 2 * (int(t.info.y) - i) - 1;
+  return 2 * (int(t.subdivision) - i) - 1;
 }
 VOXGI_FN vec3 antialiasedRowSample(VoxelTriangle t, int i, int k) {
   return antialiasedSample(t, i, k / 2, k % 2 == 0);

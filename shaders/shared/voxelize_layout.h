@@ -15,7 +15,10 @@ struct VoxelTriangle {
   vec4 albedo;    // rgb: albedo; w: area scale = true area / area projected on the dominant plane
   vec4 normal;    // xyz: unit geometric normal (world space); w: area of one antialiasing sample
   vec4 emission;  // rgb: emission / emission scale, in [0, 1]
-  uvec4 info;     // x: dominant axis (0,1,2); y: antialiasing subdivision n (n*n samples); zw: 0
+  uint dominantAxis;  // 0, 1 or 2: the axis the triangle is projected along
+  uint subdivision;   // antialiasing subdivision n (n*n samples)
+  uint pad0;
+  uint pad1;
 };
 
 // Fixed point: one unit of the weight sum is 2^-16 voxel faces (h^2) of surface area.

@@ -26,6 +26,6 @@ LightData lightAt(int i) { return lights[i]; }
 
 void main() {
   ivec3 v = ivec3(gl_GlobalInvocationID);
-  if (any(greaterThanEqual(v, ivec3(params.config.x)))) return;
+  if (any(greaterThanEqual(v, ivec3(params.resolution)))) return;
   imageStore(uRadiance, v, lightVoxel(v, params));
 }

@@ -16,7 +16,7 @@ namespace {
 // keeps one light's surfaces, so the total stays near that area instead of doubling (above it by
 // what the larger of two samplings of a cell adds: measured +6.6 %).
 TEST(InjectGeometry, RsmBlockersAreTheSurfacesTheLightsSee) {
-  Scene scene = makeScene(closedBox(0.2, 0.8), unitGrid(16), grey(glm::vec3(0.5f)));
+  Scene scene = makeScene(cubeFaces(0.2, 0.8), unitGrid(16), grey(glm::vec3(0.5f)));
   scene.lights.push_back(pointLight({0.5, 0.5, 0.5}, glm::vec3(1.0f)));
   Settings settings;
   settings.lpv.rsmResolution = 64;

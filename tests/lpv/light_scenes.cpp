@@ -6,7 +6,7 @@ const Technique& lpvTechnique() {
   return findTechnique("lpv");
 }
 
-std::vector<Triangle> closedBox(double lo, double hi) {
+std::vector<Triangle> cubeFaces(double lo, double hi) {
   std::vector<Triangle> out;
   for (int axis = 0; axis < 3; ++axis)
     for (double at : {lo, hi})

@@ -13,7 +13,7 @@ namespace voxgi::test {
 const Technique& lpvTechnique();
 
 // The six faces of the cube [lo, hi]^3.
-std::vector<Triangle> closedBox(double lo, double hi);
+std::vector<Triangle> cubeFaces(double lo, double hi);
 
 Material grey(glm::vec3 albedo);
 

@@ -9,7 +9,7 @@ namespace voxgi::test {
 namespace {
 
 TEST(LpvPlan, RsmRunsForAnalyticLightsAndAreaLights) {
-  Scene scene = makeScene(closedBox(0.2, 0.8), unitGrid(16), grey(glm::vec3(0.5f)));
+  Scene scene = makeScene(cubeFaces(0.2, 0.8), unitGrid(16), grey(glm::vec3(0.5f)));
   const Technique& t = lpvTechnique();
   Settings settings = techniqueDefaults(t);
   EffectPlan plan = t.plan(scene, settings);

@@ -13,8 +13,6 @@
 namespace voxgi::lpv {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 int l1(const glm::ivec3& o) {
   return std::abs(o.x) + std::abs(o.y) + std::abs(o.z);
 }
@@ -35,7 +33,7 @@ TEST(LpvPropagationFaces, SixDirections) {
                   1e-15);
     }
   }
-  EXPECT_NEAR(sum, 4.0 * kPi, 1e-12);
+  EXPECT_NEAR(sum, 4.0 * std::numbers::pi, 1e-12);
 }
 
 TEST(LpvPropagationFaces, TwentySixDirections) {
@@ -48,7 +46,7 @@ TEST(LpvPropagationFaces, TwentySixDirections) {
     EXPECT_NEAR(f.solidAngle, expected[l1(f.offset)], 1e-12);
     EXPECT_NE(glm::dot(glm::dvec3(f.offset), f.normal), 0.0);  // faces outwards
   }
-  EXPECT_NEAR(sum, 4.0 * kPi, 1e-12);
+  EXPECT_NEAR(sum, 4.0 * std::numbers::pi, 1e-12);
 }
 
 // [Martin 2012, App. A]: each face's square pyramid from the source centre as two triangular ones.
@@ -78,7 +76,8 @@ TEST(LpvPropagationFaces, QuadratureMoments) {
       double moment = 0.0;
       for (const PropagationFace& f : faces)
         moment += f.solidAngle * shared::shBasis(i, glm::vec3(f.direction));
-      EXPECT_NEAR(moment, i == 0 ? 2.0 * std::sqrt(kPi) : 0.0, 1e-6) << directions << " " << i;
+      EXPECT_NEAR(moment, i == 0 ? 2.0 * std::sqrt(std::numbers::pi) : 0.0, 1e-6)
+          << directions << " " << i;
     }
     glm::dvec3 first(0.0);
     glm::dmat3 second(0.0);
@@ -89,7 +88,7 @@ TEST(LpvPropagationFaces, QuadratureMoments) {
     for (int a = 0; a < 3; ++a) {
       EXPECT_NEAR(first[a], 0.0, 1e-14);
       for (int b = 0; b < 3; ++b)
-        EXPECT_NEAR(second[a][b], a == b ? 4.0 * kPi / 3.0 : 0.0, 1e-14) << directions;
+        EXPECT_NEAR(second[a][b], a == b ? 4.0 * std::numbers::pi / 3.0 : 0.0, 1e-14) << directions;
     }
   }
 }

@@ -59,7 +59,7 @@ TEST(Rsm, TiltedPlaneReflectsTheCosineOnce) {
 // independently of the stage), so 2e-4 bounds float rounding on top.
 TEST(Rsm, PointLightCubeMapCatchesAllItsFlux) {
   const glm::vec3 albedo(0.7f, 0.5f, 0.3f), intensity(3.0f, 1.0f, 2.0f);
-  Scene scene = makeScene(closedBox(0.2, 0.8), unitGrid(16), grey(albedo));
+  Scene scene = makeScene(cubeFaces(0.2, 0.8), unitGrid(16), grey(albedo));
   scene.lights.push_back(pointLight({0.43, 0.55, 0.61}, intensity));
   Settings settings;
   settings.lpv.rsmResolution = 64;
@@ -97,7 +97,7 @@ TEST(Rsm, PointLightCubeMapCatchesAllItsFlux) {
 TEST(Rsm, SpotMapCatchesItsCone) {
   const glm::vec3 albedo(0.6f, 0.6f, 0.6f), intensity(5.0f, 5.0f, 5.0f);
   for (double angle : {40.0, 100.0, 150.0}) {
-    Scene scene = makeScene(closedBox(0.1, 0.9), unitGrid(16), grey(albedo));
+    Scene scene = makeScene(cubeFaces(0.1, 0.9), unitGrid(16), grey(albedo));
     Light spot = pointLight({0.5, 0.5, 0.5}, intensity);
     spot.type = Light::Type::spot;
     spot.direction = glm::normalize(glm::dvec3(0.2, -1.0, 0.1));
@@ -122,7 +122,7 @@ TEST(Rsm, SpotMapCatchesItsCone) {
 // VPLs of their own: the volume holds the texels' flux alone.
 TEST(Rsm, EmissiveTrianglesMapsCatchTheirFlux) {
   const glm::vec3 albedo(0.7f, 0.5f, 0.3f), radiance(4.0f, 2.0f, 1.0f);
-  Scene scene = makeScene(closedBox(0.2, 0.8), unitGrid(16), grey(albedo));
+  Scene scene = makeScene(cubeFaces(0.2, 0.8), unitGrid(16), grey(albedo));
   addEmitter(scene, downwardSquare(0.7, 0.45, 0.55), radiance);
   Settings settings;
   settings.lpv.rsmResolution = 64;

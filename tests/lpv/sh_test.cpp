@@ -13,8 +13,6 @@ namespace {
 using shared::shBasis;
 using shared::shCosineLobe;
 
-constexpr double kPi = std::numbers::pi;
-
 glm::vec3 direction(double theta, double phi) {
   return glm::vec3(float(std::sin(theta) * std::cos(phi)), float(std::sin(theta) * std::sin(phi)),
                    float(std::cos(theta)));
@@ -24,7 +22,7 @@ glm::vec3 direction(double theta, double phi) {
 template <class F>
 double integrate(const F& f, int rows = 400) {
   const int cols = 2 * rows;
-  const double dt = kPi / rows, dp = 2.0 * kPi / cols;
+  const double dt = std::numbers::pi / rows, dp = 2.0 * std::numbers::pi / cols;
   double sum = 0.0;
   for (int r = 0; r < rows; ++r) {
     const double theta = (r + 0.5) * dt, weight = std::sin(theta) * dt * dp;
@@ -63,10 +61,10 @@ TEST(LpvSh, ReconstructedLobeValues) {  // T3
   const struct {
     double theta, twoBands, threeBands;
   } rows[] = {{0.0, 0.75, 1.0625},
-              {kPi / 3, 0.5, 0.4609375},
-              {kPi / 2, 0.25, 0.09375},
-              {2 * kPi / 3, 0.0, -0.0390625},
-              {kPi, -0.25, 0.0625}};
+              {std::numbers::pi / 3, 0.5, 0.4609375},
+              {std::numbers::pi / 2, 0.25, 0.09375},
+              {2 * std::numbers::pi / 3, 0.0, -0.0390625},
+              {std::numbers::pi, -0.25, 0.0625}};
   const glm::vec3 z(0, 0, 1);
   for (const auto& row : rows) {
     const glm::vec3 d = direction(row.theta, 0.7);

@@ -83,7 +83,7 @@ TEST_P(GpuSvoLight, InjectionMipAndGatherAgreeWithTheCpu) {
   }
 
   ConeTraceSetup bounce = prepareBounce(ctx);
-  bounce.params.grid.y = kDepth - 1;
+  bounce.params.topLevel = kDepth - 1;
   cpu::svo::FrameOutputs cpuFrame, gpuFrame;
   const cpu::svo::LeafRadiance cpuNext =
       cpu::svo::bounceOnce(o, leaves, direct, direct, bounce.cones, bounce.params,

@@ -26,21 +26,12 @@ using cpu::svo::NodeLevels;
 using cpu::svo::Octree;
 using cpu::svo::SvoVolumes;
 
-// Six inward-facing walls of a closed box, every one emitting (as tests/vct/bounce_test.cpp).
-Scene closedBox(int n) {
-  std::vector<Triangle> tris;
-  const double lo = 2.5 / n, hi = (n - 2.5) / n;
-  for (int axis = 0; axis < 3; ++axis) {
-    for (const Triangle& t : quad(axis, lo, {lo, lo}, {hi, hi})) tris.push_back(t);
-    for (Triangle t : quad(axis, hi, {lo, lo}, {hi, hi})) {
-      std::swap(t[1], t[2]);
-      tris.push_back(t);
-    }
-  }
+// The furnace: a closed box whose walls all emit (as tests/vct/bounce_test.cpp).
+Scene furnace(int n) {
   Material m;
   m.albedo = glm::vec3(0.5f, 0.6f, 0.7f);
   m.emission = glm::vec3(1.0f, 0.5f, 0.25f);
-  return makeScene(tris, unitGrid(n), m);
+  return closedBox(n, m);
 }
 
 // The dense side of the oracle: the bounce kernel's reads from the voxelize, light_voxels and
@@ -93,7 +84,7 @@ struct DenseTree {
 DenseTree denseTree(int depth, const char* last) {
   const int n = 1 << depth;
   DenseTree t;
-  t.scene = closedBox(n);
+  t.scene = furnace(n);
   t.settings = anisotropicMip();
   t.dense = runCpuUntil(t.scene, t.settings, last);
   for (int z = 0; z < n; ++z)
@@ -115,7 +106,7 @@ DenseTree denseTree(int depth, const char* last) {
   });
   const auto tris = prepareVoxelTriangles(t.scene, t.scene.grid);
   t.bounce = prepareBounce(StageContext(vct(), t.scene, t.settings, tris));
-  t.bounce.params.grid.y = depth - 1;  // the octree's top is the root tile, 2^3 voxels
+  t.bounce.params.topLevel = depth - 1;  // the octree's top is the root tile, 2^3 voxels
   return t;
 }
 
@@ -234,13 +225,13 @@ TEST(SvoLight, FurnaceReflectsAlbedoTimesTheShellsRadiance) {
     shell[slot] = glm::vec4(radiance, 1.0f);
     direct[slot].a = 1.0f;
   });
-  const Scene scene = closedBox(kN);  // the cone set and parameters of the technique's defaults
+  const Scene scene = furnace(kN);  // the cone set and parameters of the technique's defaults
   Settings settings;
   settings.vct.mip = MipMode::anisotropic;
   const auto tris = prepareVoxelTriangles(scene, scene.grid);
   const StageContext ctx(vct(), scene, settings, tris);
   ConeTraceSetup setup = prepareBounce(ctx);
-  setup.params.grid.y = kDepth - 1;
+  setup.params.topLevel = kDepth - 1;
   for (const FirstStep first : {FirstStep::plain, FirstStep::ndf}) {
     const LeafRadiance out =
         cpu::svo::bounceOnce(o, leaves, direct, shell, setup.cones, setup.params, first);
@@ -281,9 +272,14 @@ TEST(SvoLight, InjectionIsTheAnalyticDirectLightAndTheSplattedEmission) {
   shared::LightData light{};
   light.position = glm::vec4(5.5f, 9.5f, 7.5f, 0.0f);  // 6 leaves above leaf (5, 3, 7)'s centre
   light.intensity = glm::vec4(36.0f, 36.0f, 36.0f, 0.0f);
-  light.info = glm::uvec4(shared::kLightPoint, 1u, 0u, 0u);
-  const shared::LightVoxelsParams params{glm::ivec4(16, 1, 0, shared::kVoxelShadowHard),
-                                         glm::vec4(1.0f, 0.0f, 1.0f, 0.0f)};
+  light.kind = shared::kLightPoint;
+  light.castsShadows = 1u;
+  shared::LightVoxelsParams params{};
+  params.resolution = 16;
+  params.lightCount = 1;
+  params.voxelShadow = shared::kVoxelShadowHard;
+  params.voxelSize = 1.0f;
+  params.shadowOffset = 1.0f;
   const LeafRadiance l = cpu::svo::injectLeaves(o, leaves, {light}, params);
   bool found = false;
   cpu::svo::forEachRealLeaf(o, [&](size_t slot, glm::ivec3 v) {

@@ -12,24 +12,15 @@
 namespace voxgi::test {
 namespace {
 
-constexpr int kN = 32;
+constexpr int kResolution = 32;
 constexpr float kEmission = 1.0f;
 
-// Six inward-facing walls through the centres of voxels 2 and N - 3 on each axis.
-Scene closedBox(float albedo) {
-  std::vector<Triangle> tris;
-  const double lo = 2.5 / kN, hi = (kN - 2.5) / kN;
-  for (int axis = 0; axis < 3; ++axis) {
-    for (const Triangle& t : quad(axis, lo, {lo, lo}, {hi, hi})) tris.push_back(t);
-    for (Triangle t : quad(axis, hi, {lo, lo}, {hi, hi})) {
-      std::swap(t[1], t[2]);  // facing -axis, into the box
-      tris.push_back(t);
-    }
-  }
+// The furnace: a closed box whose walls all emit.
+Scene furnace(float albedo) {
   Material m;
   m.albedo = glm::vec3(albedo);
   m.emission = glm::vec3(kEmission);
-  return makeScene(tris, unitGrid(kN), m);
+  return closedBox(kResolution, m);
 }
 
 // Outgoing radiance (opacity 1, so the premultiplied value) at the middle of the floor.
@@ -41,12 +32,12 @@ float floorRadiance(const Scene& scene, MipMode mip, int bounces) {
   const BufferSet b = runCpuUntil(scene, settings, "bounce");
   const BufferId radiance =
       bounces == 0 ? BufferId::vct_light_voxels_radiance : BufferId::vct_bounce_radiance;
-  return voxelValue(b.at(radiance), glm::ivec3(kN / 2, 2, kN / 2)).x;
+  return voxelValue(b.at(radiance), glm::ivec3(kResolution / 2, 2, kResolution / 2)).x;
 }
 
 TEST(Bounce, ClosedBoxApproachesRadiosity) {
   const float rho = 0.5f;
-  const Scene scene = closedBox(rho);
+  const Scene scene = furnace(rho);
   for (const MipMode mip : {MipMode::isotropic, MipMode::anisotropic}) {
     const float l0 = floorRadiance(scene, mip, 0);
     const float l1 = floorRadiance(scene, mip, 1);
@@ -71,7 +62,7 @@ TEST(Bounce, ClosedBoxApproachesRadiosity) {
 
 // A black surface reflects nothing: bounce leaves light_voxels' radiance bit for bit.
 TEST(Bounce, ZeroAlbedoLeavesTheRadianceUnchanged) {
-  const Scene scene = closedBox(0.0f);
+  const Scene scene = furnace(0.0f);
   Settings settings;
   const BufferSet direct = runCpuUntil(scene, settings, "mip");
   settings.vct.bounceCount = 2;
@@ -88,11 +79,11 @@ TEST(Bounce, ZeroAlbedoLeavesTheRadianceUnchanged) {
 // exact first bounce (the dense directional pyramid: 0.83), then 0.39 and 0.39 of the one before.
 TEST(Bounce, OctreeClosedBoxApproachesRadiosity) {
   const float rho = 0.5f;
-  Scene scene = closedBox(rho);
+  Scene scene = furnace(rho);
   scene.camera.width = scene.camera.height = 16;
   const Technique& svo = findTechnique("svo");
   int depth = 0;
-  while ((1 << depth) < kN) ++depth;
+  while ((1 << depth) < kResolution) ++depth;
   float l[4];
   for (int frames = 0; frames < 4; ++frames) {
     const Settings settings =
@@ -100,7 +91,7 @@ TEST(Bounce, OctreeClosedBoxApproachesRadiosity) {
                         {"propagate.frames=" + std::to_string(frames), "emitters.mode=voxels"});
     const BufferSet b = runCpuUntil(svo, scene, settings, "propagate");
     const cpu::svo::Octree o = cpu::svo::octreeFromWords(svo::treeWords(b, false), depth);
-    const glm::uvec3 leaf(kN / 2, 2, kN / 2);
+    const glm::uvec3 leaf(kResolution / 2, 2, kResolution / 2);
     const uint32_t tile = o.findTile(depth, shared::mortonEncode(leaf >> 1u));
     ASSERT_NE(tile, shared::kSvoNull);
     // Radiance per unit of the leaf's opacity: sampling puts 4 points per leaf face on average,

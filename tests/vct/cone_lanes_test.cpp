@@ -77,8 +77,8 @@ TEST(ConeLanes, BitIdenticalToTheSharedMarch) {
     const StageContext ctx{vct(), scene, settings, triangles};
     const ConeTraceSetup setup = prepareConeTrace(ctx);
     shared::ConeTraceParams params = setup.params;
-    if (c.maxSteps > 0) params.limits.y = c.maxSteps;
-    params.shadow.y = 1.5f;  // Kahl's strength, so that the falloff is not a constant
+    if (c.maxSteps > 0) params.maxSteps = c.maxSteps;
+    params.shadowStrength = 1.5f;  // Kahl's strength, so that the falloff is not a constant
     const RadianceBuffers lit = finalRadiance(ctx);
     const cpu::ConeVolumes volumes(buffers.at(lit.radiance), buffers.at(lit.pyramid), c.mip,
                                    scene.grid.resolution, setup.lights, setup.cones);

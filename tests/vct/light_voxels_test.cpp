@@ -2,6 +2,7 @@
 // soft voxel shadows behind a blocker, the spot cut-off, emission, an emissive square as an area
 // light, and Villegas' attenuation.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -15,7 +16,6 @@ namespace {
 
 constexpr int kN = 16;
 constexpr double kH = 1.0 / kN;
-constexpr double kPi = 3.14159265358979323846;
 const glm::dvec3 kLight(0.5, 0.9, 0.5);
 
 // A floor at y = 0.27 (voxel layer 4) under a point light, optionally with a blocker at y = 0.6.
@@ -41,7 +41,7 @@ glm::dvec3 expectedFloor(const BufferSet& b, int i, int k) {
   const glm::dvec3 d = kLight - p;
   const double r = glm::length(d);
   const double cosine = std::max(glm::dot(glm::normalize(n), d / r), 0.0);
-  return glm::dvec3(0.5, 0.25, 1.0) / kPi * 2.0 * cosine / (r * r);
+  return glm::dvec3(0.5, 0.25, 1.0) / std::numbers::pi * 2.0 * cosine / (r * r);
 }
 
 void expectRadiance(const BufferSet& b, glm::ivec3 v, glm::dvec3 expected) {
@@ -136,13 +136,6 @@ TEST(LightVoxels, EmissionIsAddedWithoutLights) {
   EXPECT_NEAR(r.g, 2.0f, 3.0f / 65536.0f);
   EXPECT_NEAR(r.b, 1.0f, 3.0f / 65536.0f);
   EXPECT_EQ(r.a, 1.0f);
-}
-
-// Point-to-square form factor, the receiver at distance h below the centre of a parallel square of
-// half-size s (Howell's B-3).
-double squareFormFactor(double s, double h) {
-  const double a = s / h, ra = std::sqrt(1.0 + a * a);
-  return 4.0 * (2.0 * a / ra * std::atan(a / ra)) / (2.0 * kPi);
 }
 
 // emitters.mode=area_lights: a floor voxel under an emitting square facing down takes albedo x L x

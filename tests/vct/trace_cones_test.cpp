@@ -17,8 +17,6 @@
 namespace voxgi::test {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 // Radiance volumes (level 0 and pyramid) of a scene, up to the mip stage.
 struct Volumes {
   Scene scene;
@@ -105,15 +103,6 @@ TEST(TraceCones, SkyLitFloorSeesTheWholeSkyWhenCoarseSamplesClearIt) {
     }
 }
 
-// Point-to-square form factor: the receiver at distance h below the centre of a parallel square
-// of half-size s; four corner rectangles (Howell's catalogue, configuration B-3).
-double squareFormFactor(double s, double h) {
-  const double a = s / h, b = s / h;
-  const double ra = std::sqrt(1.0 + a * a), rb = std::sqrt(1.0 + b * b);
-  const double corner = (a / ra * std::atan(b / ra) + b / rb * std::atan(a / rb)) / (2.0 * kPi);
-  return 4.0 * corner;
-}
-
 Material emitter() {
   Material m;
   m.albedo = glm::vec3(0.0f);
@@ -131,11 +120,11 @@ TEST(TraceCones, TheStartOffsetStaysPutInTheSceneFrom64Up) {
     const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
     Settings settings;
     settings.vct.coneOffset = 1.5f;
-    EXPECT_EQ(prepareConeTrace(StageContext{vct(), scene, settings, triangles}).params.march.y,
+    EXPECT_EQ(prepareConeTrace(StageContext{vct(), scene, settings, triangles}).params.coneOffset,
               grid64)
         << n;
     settings.vct.coneOffsetUnit = ConeOffsetUnit::voxel;
-    EXPECT_EQ(prepareConeTrace(StageContext{vct(), scene, settings, triangles}).params.march.y,
+    EXPECT_EQ(prepareConeTrace(StageContext{vct(), scene, settings, triangles}).params.coneOffset,
               1.5f)
         << n;
   }
@@ -184,7 +173,7 @@ TEST(TraceCones, AreaLightIsLambertsFormulaAndItsVoxelsAreDark) {
   const auto up = v.trace(p, glm::vec3(0, 1, 0));
   EXPECT_NEAR(up.directDiffuse.x, squareFormFactor(s, top - bottom), 1e-6);
   EXPECT_EQ(up.indirectDiffuse.x, 0.0f);
-  const double angle = 60.0 * kPi / 180.0;
+  const double angle = 60.0 * std::numbers::pi / 180.0;
   const glm::dvec3 tilted(std::sin(angle), std::cos(angle), 0.0);
   double numeric = 0.0;
   const int k = 400;
@@ -195,7 +184,7 @@ TEST(TraceCones, AreaLightIsLambertsFormulaAndItsVoxelsAreDark) {
       const double r2 = glm::dot(d, d), r = std::sqrt(r2);
       const double cosReceiver = glm::dot(tilted, d) / r, cosEmitter = d.y / r;
       if (cosReceiver > 0.0)
-        numeric += cosReceiver * cosEmitter / (kPi * r2) * (2 * s / k) * (2 * s / k);
+        numeric += cosReceiver * cosEmitter / (std::numbers::pi * r2) * (2 * s / k) * (2 * s / k);
     }
   const auto side = v.trace(p, glm::vec3(tilted));
   EXPECT_NEAR(side.directDiffuse.x, numeric, 1e-4);
@@ -252,7 +241,7 @@ TEST(TraceCones, ThinWallLeakFallsWithThicknessAndDirectionalMips) {
 // Parameter extremes on a lit scene with an emitter, a wall and a shadow-casting point light:
 // every term finite and non-negative, AO in [0, 1], and the indirect diffuse term, a weighted
 // mean of radiances, at most the brightest radiance in the scene. Every march is bounded
-// (ConeTraceParams::limits.y), so none of these can hang.
+// (ConeTraceParams::maxSteps), so none of these can hang.
 TEST(TraceCones, ExtremesStayFiniteAndBounded) {
   const int n = 32;
   Scene scene = makeScene(quad(1, 0.75, {0.25, 0.25}, {0.75, 0.75}), unitGrid(n), emitter());

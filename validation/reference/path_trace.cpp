@@ -19,7 +19,6 @@ namespace {
 
 using glm::dvec3;
 using glm::vec3;
-constexpr float kPi = std::numbers::pi_v<float>;
 
 float maxComponent(vec3 c) {
   return std::max({c.x, c.y, c.z});
@@ -253,11 +252,12 @@ class Tracer {
   Lobes evalBsdf(const Shading& m, vec3 n, vec3 wo, vec3 wi) const {
     Lobes f;
     if (glm::dot(n, wi) <= 0.0f) return f;
-    f.diffuse = m.albedo / kPi;
+    f.diffuse = m.albedo / std::numbers::pi_v<float>;
     if (m.shininess > 0.0f && maxComponent(m.specular) > 0.0f) {
       const vec3 r = 2.0f * glm::dot(n, wo) * n - wo;
       const float c = std::max(0.0f, glm::dot(r, wi));
-      f.specular = m.specular * (m.shininess + 2.0f) / (2.0f * kPi) * std::pow(c, m.shininess);
+      f.specular = m.specular * (m.shininess + 2.0f) /
+                   (2.0f * std::numbers::pi_v<float>)*std::pow(c, m.shininess);
     }
     return f;
   }
@@ -266,11 +266,12 @@ class Tracer {
     const float cosTheta = glm::dot(n, wi);
     if (cosTheta <= 0.0f) return 0.0f;
     const float ps = specularProbability(m);
-    float pdf = (1.0f - ps) * cosTheta / kPi;
+    float pdf = (1.0f - ps) * cosTheta / std::numbers::pi_v<float>;
     if (ps > 0.0f) {
       const vec3 r = 2.0f * glm::dot(n, wo) * n - wo;
       const float c = std::max(0.0f, glm::dot(r, wi));
-      pdf += ps * (m.shininess + 1.0f) / (2.0f * kPi) * std::pow(c, m.shininess);
+      pdf +=
+          ps * (m.shininess + 1.0f) / (2.0f * std::numbers::pi_v<float>)*std::pow(c, m.shininess);
     }
     return pdf;
   }
@@ -291,9 +292,10 @@ class Tracer {
     const float u1 = glossy ? stretch(u.x, 0.0f, ps) : stretch(u.x, ps, 1.0f), u2 = u.y;
     if (glossy) {  // Phong lobe around the mirror direction
       const vec3 r = 2.0f * glm::dot(n, wo) * n - wo;
-      wi = around(r, std::pow(u1, 1.0f / (m.shininess + 1.0f)), 2.0f * kPi * u2);
+      wi = around(r, std::pow(u1, 1.0f / (m.shininess + 1.0f)),
+                  2.0f * std::numbers::pi_v<float> * u2);
     } else {  // cosine-weighted hemisphere
-      wi = around(n, std::sqrt(u1), 2.0f * kPi * u2);
+      wi = around(n, std::sqrt(u1), 2.0f * std::numbers::pi_v<float> * u2);
     }
     pdf = bsdfPdf(m, n, wo, wi);
     return evalBsdf(m, n, wo, wi);

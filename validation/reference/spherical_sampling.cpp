@@ -8,7 +8,6 @@ namespace voxgi::reference {
 namespace {
 
 using glm::dvec3;
-constexpr double kPi = std::numbers::pi;
 
 // The angle between two vectors, accurate near 0 and pi where acos of the cosine is not.
 double angleBetween(const dvec3& u, const dvec3& v) {
@@ -100,13 +99,13 @@ std::optional<SphericalRectangle> SphericalRectangle::make(const dvec3& x, const
   // The argument of (a + i b)(c + i e) in [0, 2 pi): a sum of two angles in [0, pi].
   const auto sumOfAngles = [](double a, double b, double c, double e) {
     const double angle = std::atan2(a * e + b * c, a * c - b * e);
-    return angle < 0.0 ? angle + 2.0 * kPi : angle;
+    return angle < 0.0 ? angle + 2.0 * std::numbers::pi : angle;
   };
   const double g01 = sumOfAngles(r.y0_ * r.x1_, z * d10, -r.x1_ * r.y1_, z * d11);
   const double g23 = sumOfAngles(r.x0_ * r.y1_, z * d01, -r.x0_ * r.y0_, z * d00);
   r.b0_ = -r.y0_ / std::sqrt(z2 + r.y0_ * r.y0_);
   r.b1_ = r.y1_ / std::sqrt(z2 + r.y1_ * r.y1_);
-  r.k_ = 2.0 * kPi - g23;
+  r.k_ = 2.0 * std::numbers::pi - g23;
   r.solidAngle_ = g01 - r.k_;
   if (!(r.solidAngle_ > 0.0)) return std::nullopt;
   return r;

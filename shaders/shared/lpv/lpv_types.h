@@ -50,12 +50,15 @@ struct PropagateParams {
 // spot wider than 120 degrees), a spot's frustum, or a directional light's orthographic box. Its
 // rsm.resolution^2 texels are rows of texel rays, row 0 at the top as the camera's. 80 bytes.
 struct RsmView {
-  vec4 origin;   // xyz: voxel-local position (the light; a directional view's corner plane centre)
-                 // w: 1 perspective, 0 orthographic
-  vec4 forward;  // xyz: unit view axis; w: tan(half field of view) or the box's half width (cells)
-  vec4 right;    // xyz: unit
-  vec4 up;       // xyz: unit
-  ivec4 info;    // x: light index; y: the light's first view; z: its view count (1 or 6); w: 0
+  vec4 origin;    // xyz: voxel-local position (the light; a directional view's corner plane centre)
+                  // w: 1 perspective, 0 orthographic
+  vec4 forward;   // xyz: unit view axis; w: tan(half field of view) or the box's half width (cells)
+  vec4 right;     // xyz: unit
+  vec4 up;        // xyz: unit
+  int light;      // index into the lights
+  int firstView;  // the light's first view (host only)
+  int viewCount;  // the light's views: 1, or 6 for a point light's cube (host only)
+  int pad0;
 };
 
 // The rsm stage's block: the views follow it.

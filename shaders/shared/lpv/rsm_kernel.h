@@ -79,8 +79,8 @@ VOXGI_FN vec3 triangleFacingIrradiance(LightData l, vec3 p) {
 VOXGI_FN vec3 rsmFlux(LightData l, vec3 p, vec3 albedo, float footprint, float voxelSize) {
   vec3 toLight;
   float distance;
-  vec3 e = l.info.x == kLightTriangle ? triangleFacingIrradiance(l, p)
-                                      : lightIrradiance(l, p, voxelSize, toLight, distance);
+  vec3 e = l.kind == kLightTriangle ? triangleFacingIrradiance(l, p)
+                                    : lightIrradiance(l, p, voxelSize, toLight, distance);
   precise vec3 flux = albedo * (e * footprint);
   return flux;
 }

@@ -61,7 +61,7 @@ VOLUME_FN float rsmVisibility(VOLUMES_IN RsmParams rp, int light, vec3 p, float 
   float bestAxis = 0.0f;
   for (int i = 0; i < rp.viewCount; ++i) {
     RsmView v = FETCH(rsmViewAt)(i);
-    if (v.info.x != light) continue;
+    if (v.light != light) continue;
     vec3 q = rsmProject(v, p);
     if (q.z <= 0.0f) continue;
     precise float axis = v.origin.w == 1.0f ? q.z / length3(p - vec3(v.origin)) : 1.0f;
@@ -104,7 +104,7 @@ VOLUME_FN void lpvDirect(VOLUMES_IN vec3 position, vec3 normal, float shininess,
     // cosines are in its form factor already.
     vec3 e;
     float cosine, weight;
-    if (l.info.x == kLightTriangle) {
+    if (l.kind == kLightTriangle) {
       float f = triangleFormFactor(l, position, normal, toLight, distance);
       e = vec3(l.intensity) * (kPi * f);
       cosine = dot3(normal, toLight);
@@ -116,7 +116,7 @@ VOLUME_FN void lpvDirect(VOLUMES_IN vec3 position, vec3 normal, float shininess,
     }
     if (e == vec3(0.0f)) continue;
     if (cosine <= 0.0f) continue;
-    float visibility = l.info.y == 1u ? rsmVisibility(VOLUMES rp, i, position, cosine) : 1.0f;
+    float visibility = l.castsShadows == 1u ? rsmVisibility(VOLUMES rp, i, position, cosine) : 1.0f;
     if (visibility == 0.0f) continue;
     precise vec3 arriving = e * (weight * visibility);
     diffuse = diffuse + arriving * kInvPi;

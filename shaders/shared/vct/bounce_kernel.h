@@ -19,7 +19,7 @@ VOLUME_FN vec3 gatherVoxel(VOLUMES_IN ivec3 v, ConeTraceParams params) {
   if (albedo == vec3(0.0f)) return vec3(0.0f);
   vec3 normalSum = FETCH(normalAt)(v);
   precise vec3 p = vec3(v) + vec3(0.5f);
-  float offset = params.march.y;
+  float offset = params.coneOffset;
   if (normalSum == vec3(0.0f)) {
     // Normals that cancel (the two sides of a thin wall) leave no hemisphere: the mean over the
     // sphere, as two hemispheres about z, as light_voxels lights such a voxel from every side.

@@ -60,10 +60,10 @@ VOLUME_FN vec4 filterCell(VOLUMES_IN int level, int face, TrilinearCell c, int s
 // the isotropic radiance volume in both modes. A cell whose 8 voxels are all +0 filters to
 // exactly +0, so FETCH(cellEmpty) may skip it.
 VOLUME_FN vec4 sampleLevel(VOLUMES_IN int level, vec3 p, vec3 dir, ConeTraceParams params) {
-  int size = params.grid.x >> level;
+  int size = params.resolution >> level;
   TrilinearCell c = trilinearCell(level, p, size);
   if (FETCH(cellEmpty)(level, c.base)) return vec4(0.0f);
-  if (level == 0 || params.grid.z == 0) return filterCell(VOLUMES level, 0, c, size);
+  if (level == 0 || params.directional == 0) return filterCell(VOLUMES level, 0, c, size);
   precise vec3 w = dir * dir;
   precise vec4 sum = vec4(0.0f);
   if (w.x > 0.0f) sum = sum + filterCell(VOLUMES level, dir.x >= 0.0f ? 0 : 1, c, size) * w.x;
@@ -75,7 +75,7 @@ VOLUME_FN vec4 sampleLevel(VOLUMES_IN int level, vec3 p, vec3 dir, ConeTracePara
 // Quadrilinear sample for a cone of `diameter` voxels (>= 1): level log2(diameter), clamped to
 // the top of the pyramid.
 VOLUME_FN vec4 sampleCone(VOLUMES_IN vec3 p, float diameter, vec3 dir, ConeTraceParams params) {
-  precise float level = min(log2Approx(diameter), float(params.grid.y));
+  precise float level = min(log2Approx(diameter), float(params.topLevel));
   precise float l0 = floor(level);
   precise float f = level - l0;
   vec4 a = sampleLevel(VOLUMES int(l0), p, dir, params);
@@ -90,24 +90,24 @@ VOXGI_FN float smoothstep01(float x) {
   return r;
 }
 
-// Marches one cone from `origin`, params.march.y voxels above the surface it leaves, along unit
+// Marches one cone from `origin`, params.coneOffset voxels above the surface it leaves, along unit
 // `dir`, which rises from that surface at `rise` (dir . n) voxels per voxel. Samples lie at
 // t = 1/2, then t += max(beta d, min step) with d = max(2 t tan(aperture/2), 1) voxels; with
-// cones.clearance c > 0 (params.surface.x), d is at most c times the height above the surface,
-// march.y + t rise, so that a wide cone's coarse samples do not hold the voxels of the surface it
-// leaves (docs/stages/vct/trace_cones.md, "Self-occlusion"). Each sample's opacity a is corrected
-// to the step, 1 - (1 - a)^beta. Stops when t passes `maxDistance`, the opacity reaches 0.999, or
-// after params.limits.y steps (enough to leave the grid); a cone that leaves the grid adds the
-// background times its remaining transparency.
+// cones.clearance c > 0 (params.coneClearance), d is at most c times the height above the surface,
+// coneOffset + t rise, so that a wide cone's coarse samples do not hold the voxels of the surface
+// it leaves (docs/stages/vct/trace_cones.md, "Self-occlusion"). Each sample's opacity a is
+// corrected to the step, 1 - (1 - a)^beta. Stops when t passes `maxDistance`, the opacity reaches
+// 0.999, or after params.maxSteps steps (enough to leave the grid); a cone that leaves the grid
+// adds the background times its remaining transparency.
 VOLUME_FN ConeHit marchCone(VOLUMES_IN vec3 origin, vec3 dir, float rise, float tanHalf,
                             float maxDistance, int kind, ConeTraceParams params) {
   ConeHit hit = noConeHit();
-  float n = float(params.grid.x);
-  float beta = params.march.x;
-  bool ambient = params.limits.x == 1 && kind <= kMarchFirstHit;
+  float n = float(params.resolution);
+  float beta = params.coneStep;
+  bool ambient = params.ambientOcclusion == 1 && kind <= kMarchFirstHit;
   bool exited = false;
   precise float t = 0.5f;
-  for (int i = 0; i < params.limits.y; ++i) {
+  for (int i = 0; i < params.maxSteps; ++i) {
     if (t > maxDistance) break;
     precise vec3 q = origin + dir * t;
     if (q.x < 0.0f || q.y < 0.0f || q.z < 0.0f || q.x > n || q.y > n || q.z > n) {
@@ -115,19 +115,19 @@ VOLUME_FN ConeHit marchCone(VOLUMES_IN vec3 origin, vec3 dir, float rise, float 
       break;
     }
     precise float width = 2.0f * t * tanHalf;
-    if (params.surface.x > 0.0f) {
-      precise float height = params.march.y + t * rise;
-      width = min(width, height * params.surface.x);
+    if (params.coneClearance > 0.0f) {
+      precise float height = params.coneOffset + t * rise;
+      width = min(width, height * params.coneClearance);
     }
     precise float diameter = max(width, 1.0f);
     vec4 s = sampleCone(VOLUMES q, diameter, dir, params);
     float a = min(s.a, 1.0f);
     if (a > 0.0f) {
       // Kahl's shadow falloff replaces the step correction ([Kahl 2019, §5.4.4]).
-      precise float corrected = kind == kMarchShadowKahl
-                                    ? a * smoothstep01(sqrt(t) * params.shadow.y / maxDistance)
-                                : beta == 1.0f || a >= 1.0f ? a
-                                                            : 1.0f - powApprox(1.0f - a, beta);
+      precise float corrected =
+          kind == kMarchShadowKahl ? a * smoothstep01(sqrt(t) * params.shadowStrength / maxDistance)
+          : beta == 1.0f || a >= 1.0f ? a
+                                      : 1.0f - powApprox(1.0f - a, beta);
       if (kind == kMarchFirstHit && corrected > 0.01f) {
         precise vec3 surface = vec3(s) / s.a;
         hit.radiance = surface;
@@ -140,7 +140,7 @@ VOLUME_FN ConeHit marchCone(VOLUMES_IN vec3 origin, vec3 dir, float rise, float 
         hit.radiance = hit.radiance + add;
       }
       if (ambient) {
-        precise float falloff = 1.0f / (1.0f + params.shadow.z * (0.5f * diameter));
+        precise float falloff = 1.0f / (1.0f + params.ambientLambda * (0.5f * diameter));
         precise float delta = hit.ambient + (1.0f - hit.ambient) * corrected * falloff;
         hit.ambient = delta;
       }
@@ -148,7 +148,7 @@ VOLUME_FN ConeHit marchCone(VOLUMES_IN vec3 origin, vec3 dir, float rise, float 
       hit.occlusion = next;
       if (hit.occlusion >= 0.999f) return hit;
     }
-    t = t + max(beta * diameter, params.march.z);
+    t = t + max(beta * diameter, params.minStep);
   }
   if (exited && kind <= kMarchFirstHit) {
     precise vec3 sky = vec3(params.background) * (1.0f - hit.occlusion);
@@ -202,18 +202,18 @@ VOXGI_FN float diffuseAmbientOcclusion(DiffuseSum s) {
   return s.weights > 0.0f ? s.ambient / s.weights : 0.0f;
 }
 
-// The diffuse cone set (FETCH(coneAt), params.grid.w cones in the tangent frame) around unit n from
-// `origin`. Each cone rises from the surface at its direction's component along n.
+// The diffuse cone set (FETCH(coneAt), params.diffuseConeCount cones in the tangent frame) around
+// unit n from `origin`. Each cone rises from the surface at its direction's component along n.
 VOLUME_FN DiffuseSum gatherDiffuse(VOLUMES_IN vec3 origin, vec3 n, int kind,
                                    ConeTraceParams params) {
   vec3 t;
   vec3 b;
   tangentFrame(n, t, b);
   DiffuseSum s = noDiffuse();
-  for (int k = 0; k < params.grid.w; ++k) {
+  for (int k = 0; k < params.diffuseConeCount; ++k) {
     ConeData c = FETCH(coneAt)(k);
     ConeHit h = marchCone(VOLUMES origin, diffuseConeDirection(t, b, n, c), c.direction.z,
-                          c.direction.w, params.march.w, kind, params);
+                          c.direction.w, params.maxDistance, kind, params);
     s = addDiffuseCone(s, h, c);
   }
   return s;

@@ -7,21 +7,37 @@
 
 VOXGI_NAMESPACE_BEGIN
 
-// std430; common/vct/trace_cones.cpp fills it from the settings.
+// The cone marcher's parameters (std430, 128 bytes), shared by vct's trace_cones and bounce and
+// the octree's gather and shade; common/vct/trace_cones.cpp fills them from the settings. Lengths
+// are in voxels unless named otherwise.
 struct ConeTraceParams {
-  ivec4 grid;     // x: N, y: pyramid levels (log2 N), z: 1 directional pyramid, w: diffuse cones
-  ivec4 modes;    // x: lights, y: 1 first-hit diffuse, z: 1 Kahl shadow falloff, w: 1 light-angle
-                  // specular
-  ivec4 limits;   // x: 1 ambient occlusion, y: steps per cone at most, zw: 0
-  vec4 march;     // x: step factor beta, y: start offset along the normal (voxels), z: min step, w:
-                  // max distance
-  vec4 shadow;    // x: tan(half shadow aperture), y: Kahl strength, z: AO lambda, w: voxel size
-                  // (world)
-  vec4 specular;  // x: Kahl falloff exponent q, y: Kahl angular grace per unit shininess
+  int resolution;          // N voxels per axis
+  int topLevel;            // the coarsest pyramid level a cone samples: log2 N (octree: depth - 1)
+  int directional;         // 1: the levels above 0 hold six directional faces (mip=anisotropic)
+  int diffuseConeCount;    // cones of the diffuse set (FETCH(coneAt)); 0: none traced
+  int lightCount;          // analytic lights (FETCH(lightAt))
+  int firstHitDiffuse;     // 1: cones.diffuse=first_hit
+  int kahlShadow;          // 1: shadow.falloff=kahl2019
+  int lightAngleSpecular;  // 1: specular.brdf=light_angle
+  int ambientOcclusion;    // 1: diffuse cones accumulate ambient occlusion
+  int maxSteps;            // steps per cone at most, enough to leave the grid
+  int pad0;
+  int pad1;
+  float coneStep;               // beta: a step is beta times the cone's diameter (cones.step)
+  float coneOffset;             // a cone starts this far above its surface
+  float minStep;                // no step is shorter
+  float maxDistance;            // no cone goes further
+  float tanHalfShadowAperture;  // the shadow cone's tan(half aperture) (shadow.aperture)
+  float shadowStrength;         // Kahl's strength (shadow.strength)
+  float ambientLambda;          // the occlusion falloff lambda (ao.lambda)
+  float voxelSize;              // world units per voxel, for the lights' falloff
+  float specularFalloff;        // Kahl's light-angle exponent q (specular.falloff)
+  float specularGrace;          // Kahl's angular grace per unit of shininess (radians)
+  float coneClearance;  // the largest sampled voxel per voxel of height above the cone's own
+                        // surface (cones.clearance; 0: no bound)
+  float pad2;
   vec4 background;  // rgb: radiance where a cone leaves the grid
-  vec4 camera;      // xyz: camera position, voxel-local
-  vec4 surface;     // x: cones.clearance, the largest sampled voxel per voxel of height above
-                    // the cone's own surface (0: no bound)
+  vec4 camera;      // xyz: the camera's position, voxel-local
 };
 
 // One diffuse cone (std430): direction in the tangent frame (z along the normal).

@@ -11,10 +11,14 @@ VOXGI_NAMESPACE_BEGIN
 
 // std430-compatible, uploaded in front of the lights.
 struct LightVoxelsParams {
-  ivec4
-      config;   // x: resolution N, y: light count, z: 1 normal-weighted attenuation, w: VoxelShadow
-  vec4 values;  // x: voxel size (world units), y: soft-shadow kappa, z: offset (voxels), w: 1
-                // emissive
+  int resolution;      // N voxels per axis
+  int lightCount;      // analytic lights (FETCH(lightAt))
+  int normalWeighted;  // 1: light.attenuation=normal_weighted
+  int voxelShadow;     // kVoxelShadow* (voxel_shadow.mode)
+  float voxelSize;     // world units per voxel, for the lights' falloff
+  float shadowKappa;   // the soft shadow's kappa (voxel_shadow.kappa)
+  float shadowOffset;  // voxels along the normal a shadow ray starts (voxel_shadow.offset)
+  int emissive;        // 1: the voxels' own emission is added
 };
 
 const int kVoxelShadowNone = 0;
@@ -26,10 +30,10 @@ const int kVoxelShadowSoft = 2;
 // ceil(sqrt(3) N) + 2 steps, so it always ends.
 VOLUME_FN float voxelVisibility(VOLUMES_IN vec3 p, vec3 n, vec3 toLight, float distance,
                                 LightVoxelsParams params) {
-  int mode = params.config.w;
+  int mode = params.voxelShadow;
   if (mode == kVoxelShadowNone) return 1.0f;
-  int res = params.config.x;
-  float offset = params.values.z;
+  int res = params.resolution;
+  float offset = params.shadowOffset;
   precise vec3 origin = p + n * offset;
   int maxSteps = int(ceil(1.7320508f * float(res))) + 2;
   float occlusion = 0.0f;
@@ -46,7 +50,7 @@ VOLUME_FN float voxelVisibility(VOLUMES_IN vec3 p, vec3 n, vec3 toLight, float d
     } else {
       // [Villegas 2017, §2.2.1]: nu += (1 - nu) kappa / t per collision, scaled by the voxel's
       // opacity.
-      precise float hit = min(params.values.y * a / (t + offset), 1.0f);
+      precise float hit = min(params.shadowKappa * a / (t + offset), 1.0f);
       precise float next = occlusion + (1.0f - occlusion) * hit;
       occlusion = next;
       if (occlusion >= 1.0f) return 0.0f;
@@ -64,11 +68,11 @@ VOLUME_FN vec4 lightVoxel(VOLUMES_IN ivec3 v, LightVoxelsParams params) {
   vec3 n = normalize3(FETCH(normalAt)(v));
   precise vec3 p = vec3(v) + vec3(0.5f);
   precise vec3 irradiance = vec3(0.0f);
-  for (int i = 0; i < params.config.y; ++i) {
+  for (int i = 0; i < params.lightCount; ++i) {
     LightData l = FETCH(lightAt)(i);
     vec3 toLight;
     float distance;
-    if (l.info.x == kLightTriangle) {
+    if (l.kind == kLightTriangle) {
       // pi L F, F the form factor (cosine included). A voxel whose normals cancel faces the
       // triangle's centroid. The visibility ray stops 1.5 voxels short of the centroid, outside
       // the triangle's own voxels.
@@ -82,20 +86,21 @@ VOLUME_FN vec4 lightVoxel(VOLUMES_IN ivec3 v, LightVoxelsParams params) {
       irradiance = irradiance + add;
       continue;
     }
-    vec3 e = lightIrradiance(l, p, params.values.x, toLight, distance);
+    vec3 e = lightIrradiance(l, p, params.voxelSize, toLight, distance);
     if (e == vec3(0.0f)) continue;
     // A voxel whose normals cancel has no preferred side: it takes the light unattenuated.
     float att = 1.0f;
     if (n != vec3(0.0f))
-      att = params.config.z == 1 ? normalWeightedAttenuation(n, toLight)
-                                 : max(dot3(n, toLight), 0.0f);
+      att = params.normalWeighted == 1 ? normalWeightedAttenuation(n, toLight)
+                                       : max(dot3(n, toLight), 0.0f);
     if (att <= 0.0f) continue;
-    float vis = l.info.y == 1u ? voxelVisibility(VOLUMES p, n, toLight, distance, params) : 1.0f;
+    float vis =
+        l.castsShadows == 1u ? voxelVisibility(VOLUMES p, n, toLight, distance, params) : 1.0f;
     precise vec3 add = e * (att * vis);
     irradiance = irradiance + add;
   }
   precise vec3 radiance = albedo * irradiance * kInvPi;
-  if (params.values.w != 0.0f) radiance = radiance + FETCH(emissionAt)(v);
+  if (params.emissive == 1) radiance = radiance + FETCH(emissionAt)(v);
   precise vec3 premultiplied = radiance * a;
   return vec4(premultiplied, a);
 }

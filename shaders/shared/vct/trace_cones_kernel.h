@@ -13,9 +13,9 @@ VOXGI_NAMESPACE_BEGIN
 // origin and mirror direction, per light a LightPath, its shadow cone's march and addLight, per
 // diffuse cone its march and addDiffuseCone, the specular cone's march, then finishPixel.
 
-// The point all of a pixel's cones start from: params.march.y voxels above p along n.
+// The point all of a pixel's cones start from: params.coneOffset voxels above p along n.
 VOXGI_FN vec3 coneOrigin(vec3 p, vec3 n, ConeTraceParams params) {
-  precise vec3 origin = p + n * params.march.y;
+  precise vec3 origin = p + n * params.coneOffset;
   return origin;
 }
 
@@ -44,37 +44,37 @@ VOXGI_FN LightPath lightPath(LightData l, vec3 p, vec3 n, ConeTraceParams params
   LightPath path;
   float distance;
   float shadowLength;
-  path.tanHalf = params.shadow.x;
+  path.tanHalf = params.tanHalfShadowAperture;
   path.arrives = true;
-  if (l.info.x == kLightTriangle) {
+  if (l.kind == kLightTriangle) {
     float f = triangleFormFactor(l, p, n, path.toLight, distance);
     path.arrives = !(f <= 0.0f);
     path.cosine = max(dot3(n, path.toLight), 0.0f);
     path.radiance = vec3(l.intensity);
     path.weight = kPi * f;
-    if (path.arrives) path.tanHalf = min(l.direction.w / distance, params.shadow.x);
+    if (path.arrives) path.tanHalf = min(l.direction.w / distance, params.tanHalfShadowAperture);
     shadowLength = path.arrives ? triangleShadowLength(distance, l.direction.w) : 0.0f;
   } else {
-    path.radiance = lightIrradiance(l, p, params.shadow.w, path.toLight, distance);
+    path.radiance = lightIrradiance(l, p, params.voxelSize, path.toLight, distance);
     path.cosine = dot3(n, path.toLight);
     path.arrives = path.radiance != vec3(0.0f) && !(path.cosine <= 0.0f);
     path.weight = path.cosine;
     shadowLength = distance;
   }
-  path.shadowLength = path.arrives && l.info.y == 1u && shadowLength > 0.0f
-                          ? min(shadowLength, params.march.w)
+  path.shadowLength = path.arrives && l.castsShadows == 1u && shadowLength > 0.0f
+                          ? min(shadowLength, params.maxDistance)
                           : 0.0f;
   return path;
 }
 
 // The kind of march of the shadow cones: opacity only, or with Kahl's falloff.
 VOXGI_FN int shadowMarchKind(ConeTraceParams params) {
-  return params.modes.z == 1 ? kMarchShadowKahl : kMarchShadow;
+  return params.kahlShadow == 1 ? kMarchShadowKahl : kMarchShadow;
 }
 
 // The kind of march of the diffuse cones: composited radiance, or Kahl's first hit.
 VOXGI_FN int diffuseMarchKind(ConeTraceParams params) {
-  return params.modes.y == 1 ? kMarchFirstHit : kMarchRadiance;
+  return params.firstHitDiffuse == 1 ? kMarchFirstHit : kMarchRadiance;
 }
 
 // Direct light summed over the lights so far.
@@ -104,10 +104,10 @@ VOXGI_FN DirectLight addLight(DirectLight d, LightPath path, float visibility, v
     float shininess = object.specular.y;
     precise float rl = dot3(mirror, path.toLight);
     d.specular = d.specular + arriving * phongLobe(rl, shininess);
-    if (params.modes.w == 1) {
+    if (params.lightAngleSpecular == 1) {
       // [Kahl 2019, eq. 5.6]: (1 - max(0, angle - grace) / pi)^q with grace = 0.008 pi shininess.
-      precise float late = max(acosApprox(rl) - params.specular.y * shininess, 0.0f);
-      d.lightAngle = d.lightAngle + powApprox(1.0f - late * kInvPi, params.specular.x);
+      precise float late = max(acosApprox(rl) - params.specularGrace * shininess, 0.0f);
+      d.lightAngle = d.lightAngle + powApprox(1.0f - late * kInvPi, params.specularFalloff);
     }
   }
   return d;
@@ -123,11 +123,11 @@ VOXGI_FN PixelLight finishPixel(DirectLight d, DiffuseSum diffuse, ConeHit specu
   r.indirectDiffuse = diffuse.radiance;
   r.ambientOcclusion = diffuseAmbientOcclusion(diffuse);
   // [Kahl 2019, eq. 5.9] darkens first-hit diffuse light by the smallest shadow-cone visibility.
-  if (params.modes.y == 1) r.indirectDiffuse = r.indirectDiffuse * d.minVisibility;
+  if (params.firstHitDiffuse == 1) r.indirectDiffuse = r.indirectDiffuse * d.minVisibility;
   r.indirectSpecular = vec3(0.0f);
   if (object.specular.x > 0.0f)
     r.indirectSpecular =
-        params.modes.w == 1 ? specularHit.radiance * d.lightAngle : specularHit.radiance;
+        params.lightAngleSpecular == 1 ? specularHit.radiance * d.lightAngle : specularHit.radiance;
   return r;
 }
 
@@ -139,7 +139,7 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
   vec3 origin = coneOrigin(p, n, params);
   vec3 mirror = mirrorDirection(p, n, params);
   DirectLight d = noDirectLight();
-  for (int i = 0; i < params.modes.x; ++i) {
+  for (int i = 0; i < params.lightCount; ++i) {
     LightPath path = lightPath(FETCH(lightAt)(i), p, n, params);
     if (!path.arrives) continue;
     float visibility = 1.0f;
@@ -153,7 +153,7 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
   ConeHit specularHit = noConeHit();
   if (object.specular.x > 0.0f)
     specularHit = marchCone(VOLUMES origin, mirror, dot3(n, mirror), object.specular.x,
-                            params.march.w, kMarchRadiance, params);
+                            params.maxDistance, kMarchRadiance, params);
   return finishPixel(d, diffuse, specularHit, object, params);
 }
 
