@@ -83,9 +83,14 @@ CameraGeometry prepareCameraGeometry(const Scene& scene) {
     for (size_t i = 0; i < cloud.size(); ++i) {
       const glm::dvec3 v = grid.toVoxel(cloud.positions[i]);
       const double r = double(cloud.radii[i]) * scale;
-      g.discs.push_back({glm::vec4(glm::vec3(v), float(r)), glm::vec4(cloud.normals[i], 0.0f),
-                         glm::vec4(cloud.colors.empty() ? albedo : cloud.colors[i], 0.0f), object,
-                         cloud.material, 0u, 0u});
+      SurfaceDisc d{};
+      d.center = glm::vec3(v);
+      d.radius = float(r);
+      d.normal = cloud.normals[i];
+      d.albedo = cloud.colors.empty() ? albedo : cloud.colors[i];
+      d.objectId = object;
+      d.material = cloud.material;
+      g.discs.push_back(d);
       farthest = std::max(farthest, glm::length(v - glm::dvec3(g.camera.origin)) + r);
     }
   }

@@ -12,13 +12,13 @@ std::vector<shared::LightData> voxelLights(const Scene& scene) {
   std::vector<shared::LightData> out;
   for (const Light& l : scene.lights) {
     shared::LightData d{};
-    d.position = glm::vec4(glm::vec3(scene.grid.toVoxel(l.position)), 1.0f);
+    d.position = glm::vec3(scene.grid.toVoxel(l.position));
     const double halfAngle = 0.5 * l.spotAngleDeg * 3.14159265358979323846 / 180.0;
-    d.direction = glm::vec4(glm::vec3(l.direction), static_cast<float>(std::cos(halfAngle)));
-    d.intensity = glm::vec4(l.intensity, 0.0f);
-    const bool polynomial = l.falloff.kind == Falloff::Kind::polynomial;
-    d.falloff = glm::vec4(l.falloff.constant, l.falloff.linear, l.falloff.quadratic,
-                          polynomial ? 1.0f : 0.0f);
+    d.direction = glm::vec3(l.direction);
+    d.spotCosine = static_cast<float>(std::cos(halfAngle));
+    d.intensity = l.intensity;
+    d.falloff = glm::vec3(l.falloff.constant, l.falloff.linear, l.falloff.quadratic);
+    d.polynomialFalloff = l.falloff.kind == Falloff::Kind::polynomial ? 1 : 0;
     const uint32_t type = l.type == Light::Type::point  ? shared::kLightPoint
                           : l.type == Light::Type::spot ? shared::kLightSpot
                                                         : shared::kLightDirectional;
@@ -61,10 +61,11 @@ std::vector<shared::LightData> areaLights(const Scene& scene) {
       const double radius = std::max(
           {glm::length(a - centroid), glm::length(b - centroid), glm::length(c - centroid)});
       shared::LightData d{};
-      d.position = glm::vec4(glm::vec3(a), 1.0f);
-      d.direction = glm::vec4(glm::vec3(b), float(radius));
-      d.falloff = glm::vec4(glm::vec3(c), 0.0f);
-      d.intensity = glm::vec4(m.emission, 0.0f);
+      d.position = glm::vec3(a);
+      d.boundingRadius = float(radius);
+      d.direction = glm::vec3(b);
+      d.falloff = glm::vec3(c);
+      d.intensity = m.emission;
       d.kind = shared::kLightTriangle;
       d.castsShadows = 1u;
       out.push_back(d);

@@ -50,11 +50,11 @@ void emitTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
   }
   const unsigned axis = dominantAxis(n);
   shared::VoxelTriangle t{};
-  t.v0 = glm::vec4(glm::vec3(a), 0.0f);
-  t.v1 = glm::vec4(glm::vec3(b), 0.0f);
-  t.v2 = glm::vec4(glm::vec3(c), 0.0f);
+  t.v0 = glm::vec3(a);
+  t.v1 = glm::vec3(b);
+  t.v2 = glm::vec3(c);
   // The kernels divide by the float normal's dominant component: it must not vanish.
-  const glm::vec3 nf = shared::cross3(glm::vec3(t.v1 - t.v0), glm::vec3(t.v2 - t.v0));
+  const glm::vec3 nf = shared::cross3(t.v1 - t.v0, t.v2 - t.v0);
   if (nf[static_cast<int>(axis)] == 0.0f) {
     ++counts.degenerate;
     return;
@@ -62,11 +62,11 @@ void emitTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
   const double maxEdge = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
   const auto subdivision = static_cast<unsigned>(std::max(1.0, std::ceil(2.0 * maxEdge)));
   const double area = 0.5 * twiceArea;
-  t.albedo = glm::vec4(material.albedo, static_cast<float>(twiceArea / std::abs(n[int(axis)])));
-  t.normal = glm::vec4(glm::vec3(n / twiceArea),
-                       static_cast<float>(area / (double(subdivision) * subdivision)));
-  t.emission =
-      glm::vec4(emissionScale > 0.0f ? material.emission / emissionScale : glm::vec3(0.0f), 0.0f);
+  t.albedo = material.albedo;
+  t.areaScale = static_cast<float>(twiceArea / std::abs(n[int(axis)]));
+  t.normal = glm::vec3(n / twiceArea);
+  t.sampleArea = static_cast<float>(area / (double(subdivision) * subdivision));
+  t.emission = emissionScale > 0.0f ? material.emission / emissionScale : glm::vec3(0.0f);
   t.dominantAxis = axis;
   t.subdivision = subdivision;
   out.push_back(t);

@@ -24,7 +24,7 @@ void common::gbuffer(const StageContext& ctx, BufferSet& buffers) {
     for (const SurfaceDisc& d : g.discs) {
       centres.emplace_back(d.center);
       normals.emplace_back(d.normal);
-      radii.push_back(d.center.w);
+      radii.push_back(d.radius);
     }
     rays.addDiscs(1, centres, normals, radii);
   }
@@ -49,10 +49,10 @@ void common::gbuffer(const StageContext& ctx, BufferSet& buffers) {
           disc ? g.discs[hit.primitive].objectId : g.triangles[hit.primitive].objectId;
       const uint32_t material =
           disc ? g.discs[hit.primitive].material : g.triangles[hit.primitive].material;
-      const glm::vec3 surfaceNormal(disc ? g.discs[hit.primitive].normal
-                                         : g.triangles[hit.primitive].normal);
+      const glm::vec3 surfaceNormal =
+          disc ? g.discs[hit.primitive].normal : glm::vec3(g.triangles[hit.primitive].normal);
       const Material& m = ctx.scene.materials[material];
-      const glm::vec3 a = disc ? glm::vec3(g.discs[hit.primitive].albedo) : m.albedo;
+      const glm::vec3 a = disc ? g.discs[hit.primitive].albedo : m.albedo;
       const size_t e = size_t(y) * size_t(cam.width) + size_t(x);
       const glm::vec3 p = cam.origin + d * hit.t;
       const glm::vec3 n = shared::facingNormal(surfaceNormal, d);

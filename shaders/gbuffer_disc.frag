@@ -34,11 +34,11 @@ void main() {
   precise float t = dot(d.center.xyz - uOrigin, n) / facing;
   precise vec3 p = uOrigin + dir * t;
   vec3 off = p - d.center.xyz;
-  if (t <= 0.0f || dot(off, off) > d.center.w * d.center.w) discard;
+  if (t <= 0.0f || dot(off, off) > d.radius * d.radius) discard;
   MaterialData m = materials[d.material];
   outPosition = vec4(p, 0.0f);
   outNormal = vec4(facingNormal(n, dir), 0.0f);
-  outAlbedo = d.albedo;
+  outAlbedo = vec4(d.albedo, 0.0f);
   outSpecular = m.specular;
   outEmission = m.emission;
   outObjectId = d.objectId;

@@ -20,6 +20,6 @@ void main() {
   vec3 n = d.normal.xyz;
   vec3 t = normalize(cross(n, abs(n.x) < 0.9f ? vec3(1, 0, 0) : vec3(0, 1, 0)));
   vec3 b = cross(n, t);
-  vec3 p = d.center.xyz + 2.0f * d.center.w * (c.x * t + c.y * b);
+  vec3 p = d.center.xyz + 2.0f * d.radius * (c.x * t + c.y * b);
   gl_Position = uViewProjection * vec4(p, 1.0f);
 }

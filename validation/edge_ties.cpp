@@ -75,7 +75,7 @@ TieClassifier gbufferTies(const StageContext& ctx, const BufferSet& cpu, const B
       const SurfaceDisc& disc = geometry->discs[ids[k] - triangles - 1];
       const glm::vec3 centre(disc.center);
       t[k] = planeDistance(cam.origin, d, centre, glm::vec3(disc.normal));
-      const float q = glm::length(cam.origin + d * t[k] - centre) / disc.center.w;
+      const float q = glm::length(cam.origin + d * t[k] - centre) / disc.radius;
       if (std::abs(q - 1.0f) <= kRim) return true;
     }
     return ids[0] != 0 && ids[1] != 0 &&

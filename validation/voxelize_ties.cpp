@@ -37,7 +37,7 @@ bool conservativeTie(const VoxelTriangle& t, const glm::ivec3& v, float satEpsil
   const float s = shared::satSeparation(a, b, c, true);
   if (std::abs(s) <= satEpsilon) return true;
   if (s > 0.0f) return false;
-  const float area = shared::projectedAreaInVoxel(a, b, c, t.dominantAxis) * t.albedo.w;
+  const float area = shared::projectedAreaInVoxel(a, b, c, t.dominantAxis) * t.areaScale;
   return contributionNearHalf(t, area * shared::kWeightScale);
 }
 

@@ -41,10 +41,12 @@ shared::RsmView view(dvec3 origin, bool perspective, dvec3 forward, double exten
   const dvec3 right = glm::normalize(glm::cross(forward, hint));
   const dvec3 up = glm::cross(right, forward);
   shared::RsmView v{};
-  v.origin = glm::vec4(glm::vec3(origin), perspective ? 1.0f : 0.0f);
-  v.forward = glm::vec4(glm::vec3(forward), static_cast<float>(extent));
-  v.right = glm::vec4(glm::vec3(right), 0.0f);
-  v.up = glm::vec4(glm::vec3(up), 0.0f);
+  v.origin = glm::vec3(origin);
+  v.perspective = perspective ? 1 : 0;
+  v.forward = glm::vec3(forward);
+  v.extent = static_cast<float>(extent);
+  v.right = glm::vec3(right);
+  v.up = glm::vec3(up);
   v.light = light;
   v.firstView = first;
   v.viewCount = count;
@@ -130,8 +132,8 @@ RsmSetup prepareRsm(const Scene& scene, const Settings& s) {
 glm::mat4 rsmViewProjection(const shared::RsmView& v, float farPlane) {
   const glm::mat4 view =
       viewMatrix(glm::vec3(v.origin), glm::vec3(v.forward), glm::vec3(v.right), glm::vec3(v.up));
-  const float extent = v.forward.w;
-  if (v.origin.w == 1.0f) return flippedPerspective(extent, extent, 1e-2f, farPlane) * view;
+  const float extent = v.extent;
+  if (v.perspective == 1) return flippedPerspective(extent, extent, 1e-2f, farPlane) * view;
   // Orthographic: depth [0, far] to [-1, 1], y flipped as the perspective one.
   glm::mat4 proj(0.0f);
   proj[0][0] = 1.0f / extent;
@@ -168,8 +170,8 @@ glm::dvec3 rsmFluxBound(const Scene& scene, const RsmSetup& rsm) {
   for (const shared::RsmView& v : rsm.views) {
     if (rsm.lights[size_t(v.light)].kind == shared::kLightTriangle) continue;
     const Light& l = scene.lights[size_t(v.light)];
-    if (v.origin.w == 0.0f) {  // the box's whole cross-section at the light's irradiance
-      const double side = 2.0 * double(v.forward.w) * s;
+    if (v.perspective == 0) {  // the box's whole cross-section at the light's irradiance
+      const double side = 2.0 * double(v.extent) * s;
       total += dvec3(l.intensity) * side * side;
       continue;
     }
@@ -181,8 +183,8 @@ glm::dvec3 rsmFluxBound(const Scene& scene, const RsmSetup& rsm) {
         f.kind == Falloff::Kind::inverse_square
             ? 1.0
             : r * r / (double(f.constant) + double(f.linear) * r + double(f.quadratic) * r * r);
-    if (double(v.forward.w) != tanHalf) {
-      tanHalf = v.forward.w;
+    if (double(v.extent) != tanHalf) {
+      tanHalf = v.extent;
       solidAngle = viewSolidAngle(tanHalf, resolution);
     }
     total += dvec3(l.intensity) * spread * solidAngle;

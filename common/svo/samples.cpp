@@ -35,11 +35,13 @@ void appendCloud(const Scene& scene, const PointCloud& cloud, double leaf,
                   const double edge = std::sqrt(std::numbers::pi / 2.0) * cloud.radii[i] / leaf;
                   const auto e = float(std::clamp(edge, 1e-6, 1.0));
                   shared::SvoSample& s = out[first + i];
-                  s.position = glm::vec4(glm::vec3((cloud.positions[i] - origin) / leaf), e);
+                  s.position = glm::vec3((cloud.positions[i] - origin) / leaf);
+                  s.edge = e;
                   const glm::vec3 albedo = cloud.colors.empty() ? m.albedo : cloud.colors[i];
-                  s.albedo = glm::vec4(albedo, 1.0f / e);
-                  s.normal = glm::vec4(cloud.normals[i], 0.0f);
-                  s.emission = glm::vec4(m.emission, 0.0f);  // scaled below
+                  s.albedo = albedo;
+                  s.density = 1.0f / e;
+                  s.normal = cloud.normals[i];
+                  s.emission = m.emission;  // scaled below
                 }
               });
 }
@@ -75,7 +77,7 @@ SampleSet prepareSamples(const Scene& scene, int depth, double meshDensity, uint
     const size_t first = set.samples.size();
     appendCloud(scene, sampleSurfaces(scene, sampling), leaf, set.samples);
     if (!meshEmission)
-      for (size_t i = first; i < set.samples.size(); ++i) set.samples[i].emission = glm::vec4(0.0f);
+      for (size_t i = first; i < set.samples.size(); ++i) set.samples[i].emission = glm::vec3(0.0f);
   }
 
   // Emission as a fraction of the largest emission a sample carries.
@@ -96,14 +98,15 @@ SampleSet prepareSamples(const Scene& scene, int depth, double meshDensity, uint
       tbb::blocked_range<size_t>(0, set.samples.size(), 16384),
       [&](const tbb::blocked_range<size_t>& r) {
         for (size_t i = r.begin(); i != r.end(); ++i) {
-          const glm::vec4 p = set.samples[i].position;
-          const uint32_t r2 = std::bit_cast<uint32_t>(p.w * p.w);
+          const glm::vec3 p = set.samples[i].position;
+          const float edge = set.samples[i].edge;
+          const uint32_t r2 = std::bit_cast<uint32_t>(edge * edge);
           uint32_t seen = largest.load();
           while (r2 > seen && !largest.compare_exchange_weak(seen, r2)) {
           }
           glm::ivec3 lo, hi;
           for (int a = 0; a < 3; ++a) {
-            const float half = 0.5f * p.w;
+            const float half = 0.5f * edge;
             lo[a] = int(std::clamp(std::floor((p[a] - half) / blockLeaves), 0.0f, float(side - 1)));
             hi[a] = int(std::clamp(std::floor((p[a] + half) / blockLeaves), 0.0f, float(side - 1)));
           }

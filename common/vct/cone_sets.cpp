@@ -70,9 +70,13 @@ std::vector<Cone> diffuseCones(ConeSet set) {
 
 std::vector<shared::ConeData> coneData(const std::vector<Cone>& cones) {
   std::vector<shared::ConeData> out;
-  for (const Cone& c : cones)
-    out.push_back({glm::vec4(c.direction, float(std::tan(0.5 * double(c.aperture)))),
-                   glm::vec4(c.weight, 0.0f, 0.0f, 0.0f)});
+  for (const Cone& c : cones) {
+    shared::ConeData d{};
+    d.direction = c.direction;
+    d.tanHalfAperture = float(std::tan(0.5 * double(c.aperture)));
+    d.weight = c.weight;
+    out.push_back(d);
+  }
   return out;
 }
 

@@ -18,14 +18,15 @@ std::vector<shared::ObjectData> objectData(const Scene& scene, bool everyObject)
   std::vector<uint32_t> materials;
   for (const Mesh& m : scene.meshes) materials.push_back(m.material);
   for (const PointCloud& c : scene.pointClouds) materials.push_back(c.material);
-  std::vector<shared::ObjectData> out(materials.size() + 1, {glm::vec4(0.0f)});
+  std::vector<shared::ObjectData> out(materials.size() + 1, shared::ObjectData{});
   for (size_t o = 0; o < materials.size(); ++o) {
     const Material& mat = scene.materials.at(materials[o]);
     if (!mat.glossy() && !everyObject) continue;
     // P(cos alpha > c) = 1 - c^(n+1) for a Phong lobe cos^n: half the energy within c =
     // 2^(-1/(n+1)).
     const double c = std::pow(2.0, -1.0 / (double(mat.shininess) + 1.0));
-    out[o + 1].specular = glm::vec4(float(std::sqrt(1.0 - c * c) / c), mat.shininess, 0.0f, 0.0f);
+    out[o + 1].specularTanHalfAperture = float(std::sqrt(1.0 - c * c) / c);
+    out[o + 1].shininess = mat.shininess;
   }
   return out;
 }

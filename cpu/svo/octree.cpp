@@ -68,7 +68,7 @@ bool addSample(const shared::SvoSample& s, int n, glm::ivec3 home, float scale,
   SplatAxis axes[3];
   AxisLeaves leaves[3];
   for (int a = 0; a < 3; ++a) {
-    axes[a] = splatAxis(s.position[a], s.position.w);
+    axes[a] = splatAxis(s.position[a], s.edge);
     leaves[a] = axisLeaves(axes[a], n);
   }
   static_assert(kSumOpacity == 0 && kSumAlbedo == 1 && kSumNormal == 4 && kSumEmission == 7);
@@ -79,7 +79,7 @@ bool addSample(const shared::SvoSample& s, int n, glm::ivec3 home, float scale,
     for (int j = leaves[1].first; j <= leaves[1].last; ++j)
       for (int i = leaves[0].first; i <= leaves[0].last; ++i) {
         const glm::ivec3 leaf(i, j, k);
-        const float w = splatWeight(axes[0], axes[1], axes[2], s.albedo.w,
+        const float w = splatWeight(axes[0], axes[1], axes[2], s.density,
                                     leaf - glm::ivec3(axes[0].lo, axes[1].lo, axes[2].lo));
         const glm::ivec3 o = (leaf >> 1) - home;
         uint32_t* words = window[o.x | o.y << 1 | o.z << 2] + localId(glm::uvec3(leaf)) * kSumWords;
@@ -110,7 +110,7 @@ SampleHomes locateSamples(std::span<const shared::SvoSample> samples, int depth,
                   if (!shared::splatInDomain(glm::vec3(s.position), float(n))) continue;
                   AxisLeaves ax[3];
                   for (int a = 0; a < 3; ++a)
-                    ax[a] = axisLeaves(shared::splatAxis(s.position[a], s.position.w), n);
+                    ax[a] = axisLeaves(shared::splatAxis(s.position[a], s.edge), n);
                   if (ax[0].first < 0 || ax[1].first < 0 || ax[2].first < 0) continue;
                   const glm::uvec3 first(ax[0].first, ax[1].first, ax[2].first);
                   homes.tileKey[i] = shared::mortonEncode(first >> 1u);

@@ -94,7 +94,7 @@ class TileTracer {
         const shared::ConeData cone = volumes_.coneAt(c);
         jobs_.push_back({px.origin,
                          shared::diffuseConeDirection(px.tangent, px.bitangent, px.n, cone),
-                         cone.direction.z, cone.direction.w, params_.maxDistance});
+                         cone.direction.z, cone.tanHalfAperture, params_.maxDistance});
       }
     march(shared::diffuseMarchKind(params_));
     std::vector<shared::DiffuseSum> sums(pixels.size(), shared::noDiffuse());
@@ -110,15 +110,15 @@ class TileTracer {
               TermBuffers& out) {
     jobs_.clear();
     for (const Pixel& px : pixels)
-      if (px.object.specular.x > 0.0f)
-        jobs_.push_back({px.origin, px.mirror, shared::dot3(px.n, px.mirror), px.object.specular.x,
-                         params_.maxDistance});
+      if (px.object.specularTanHalfAperture > 0.0f)
+        jobs_.push_back({px.origin, px.mirror, shared::dot3(px.n, px.mirror),
+                         px.object.specularTanHalfAperture, params_.maxDistance});
     march(shared::kMarchRadiance);
     size_t specular = 0;
     for (size_t k = 0; k < pixels.size(); ++k) {
       const Pixel& px = pixels[k];
       const shared::ConeHit specularHit =
-          px.object.specular.x > 0.0f ? hits_[specular++] : shared::noConeHit();
+          px.object.specularTanHalfAperture > 0.0f ? hits_[specular++] : shared::noConeHit();
       out.write(px.e, shared::finishPixel(px.direct, diffuse[k], specularHit, px.object, params_));
     }
   }

@@ -37,7 +37,7 @@ void vct::compose(GlContext& context, const StageContext& ctx, BufferSet& buffer
   // AO only where the technique's light terms apply it, as on the CPU.
   const std::optional<BufferId> aoId = ctx.technique.lightTerms(ctx.settings).ambientOcclusion;
   if (const Buffer* ao = aoId ? buffers.find(*aoId) : nullptr; ao != nullptr)
-    for (size_t e = 0; e < pixels; ++e) inputs[e].ambientOcclusion.x = ao->get<float>(e, 0);
+    for (size_t e = 0; e < pixels; ++e) inputs[e].ambientOcclusion = ao->get<float>(e, 0);
 
   GlBuffer ids(gl, createBuffer(gl, objectId.words.size() * 4, objectId.words.data()));
   GlBuffer inputBlock(gl, createBuffer(gl, inputs.size() * sizeof(Input), inputs.data()));

@@ -21,13 +21,16 @@ struct SurfaceTriangle {
 // primitive numbering: Embree's oriented disc on the CPU, a quad in its plane cut to the circle on
 // the GPU (shaders/gbuffer_disc.vert).
 struct SurfaceDisc {
-  vec4 center;    // xyz: voxel-local centre; w: radius in voxels
-  vec4 normal;    // xyz: unit normal
-  vec4 albedo;    // rgb: the point's colour, or its material's albedo
+  vec3 center;   // voxel-local
+  float radius;  // voxels
+  vec3 normal;   // unit
+  float pad0;
+  vec3 albedo;  // the point's colour, or its material's albedo
+  float pad1;
   uint objectId;  // mesh count + cloud index + 1
   uint material;  // index into the materials
-  uint pad0;
-  uint pad1;
+  uint pad2;
+  uint pad3;
 };
 
 // One material (std430).

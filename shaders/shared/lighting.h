@@ -18,18 +18,20 @@ const uint kLightTriangle =
 // One light in voxel-local coordinates (common/lights.cpp builds them). 80 bytes, std430. A
 // triangle (kLightTriangle) keeps its three corners in position, direction and falloff (xyz,
 // counter-clockwise seen from the side it emits to), its radiance in intensity and its bounding
-// radius about the centroid in direction.w (shaders/shared/area_light.h).
+// radius (shaders/shared/area_light.h).
 struct LightData {
-  vec4 position;   // xyz: voxel-local position (point, spot)
-  vec4 direction;  // xyz: unit direction the light travels (spot axis, directional); w: cos(half
-                   // spot angle)
-  vec4 intensity;  // rgb: W/sr (point, spot) or irradiance (directional)
-  vec4
-      falloff;  // xyz: constant, linear, quadratic (world units); w: 1 polynomial, 0 inverse square
-  uint kind;    // kLight*
-  uint castsShadows;  // 1: a shadow ray or cone tests it
-  uint pad0;
+  vec3 position;         // voxel-local (point, spot)
+  float boundingRadius;  // a triangle's, about its centroid (voxels)
+  vec3 direction;        // unit direction the light travels (spot axis, directional)
+  float spotCosine;      // cos(half spot angle)
+  vec3 intensity;        // W/sr (point, spot) or irradiance (directional)
+  float pad0;
+  vec3 falloff;           // constant, linear, quadratic coefficients (world units)
+  int polynomialFalloff;  // 1: the polynomial falloff, 0: inverse square
+  uint kind;              // kLight*
+  uint castsShadows;      // 1: a shadow ray or cone tests it
   uint pad1;
+  uint pad2;
 };
 
 // Irradiance on a plane facing the light at p (voxel-local), without the cosine. `toLight` gets
@@ -49,9 +51,9 @@ VOXGI_FN vec3 lightIrradiance(LightData l, vec3 p, float voxelSize, OUT(vec3) to
     return vec3(0.0f);
   }
   toLight = d / distance;
-  if (l.kind == kLightSpot && dot3(-toLight, vec3(l.direction)) < l.direction.w) return vec3(0.0f);
+  if (l.kind == kLightSpot && dot3(-toLight, vec3(l.direction)) < l.spotCosine) return vec3(0.0f);
   precise float r = distance * voxelSize;
-  precise float att = l.falloff.w == 0.0f
+  precise float att = l.polynomialFalloff == 0
                           ? 1.0f / (r * r)
                           : 1.0f / ((l.falloff.x + l.falloff.y * r) + l.falloff.z * (r * r));
   precise vec3 e = vec3(l.intensity) * att;

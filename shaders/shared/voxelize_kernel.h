@@ -171,13 +171,13 @@ VOXGI_FN bool conservativeContribution(VoxelTriangle t, ivec3 voxel, OUT(VoxelCo
   precise vec3 b = vec3(t.v1) - centre;
   precise vec3 d = vec3(t.v2) - centre;
   if (satSeparation(a, b, d, false) > 0.0f) return false;
-  precise float area = projectedAreaInVoxel(a, b, d, t.dominantAxis) * t.albedo.w;
+  precise float area = projectedAreaInVoxel(a, b, d, t.dominantAxis) * t.areaScale;
   c = weightedContribution(t, max(1u, quantize(area * kWeightScale)));
   return true;
 }
 
 // Antialiased mode: the triangle is split into n*n congruent sub-triangles (row i, column j,
-// pointing up or down); each sub-triangle's centroid is one sample of area t.normal.w.
+// pointing up or down); each sub-triangle's centroid is one sample of area t.sampleArea.
 VOXGI_FN vec3 antialiasedSample(VoxelTriangle t, int i, int j, bool up) {
   precise float n = float(t.subdivision);
   precise float offset = up ? 0.33333334f : 0.6666667f;
@@ -210,7 +210,7 @@ VOXGI_FN float tentWeightValue(VoxelTriangle t, vec3 p, ivec3 base, int corner) 
   precise float wx = (corner % 2 == 1) ? f.x : 1.0f - f.x;
   precise float wy = ((corner / 2) % 2 == 1) ? f.y : 1.0f - f.y;
   precise float wz = (corner / 4 == 1) ? f.z : 1.0f - f.z;
-  precise float w = ((wx * wy) * wz) * (t.normal.w * kWeightScale);
+  precise float w = ((wx * wy) * wz) * (t.sampleArea * kWeightScale);
   return w;
 }
 

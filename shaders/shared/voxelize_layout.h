@@ -9,16 +9,22 @@ VOXGI_NAMESPACE_BEGIN
 // One triangle prepared for voxelization (common/voxel_triangles.cpp). Vertices are in voxel-local
 // coordinates: voxel (i,j,k) covers [i,i+1)x[j,j+1)x[k,k+1). 112 bytes, std430-compatible.
 struct VoxelTriangle {
-  vec4 v0;        // xyz: vertex 0
-  vec4 v1;        // xyz: vertex 1
-  vec4 v2;        // xyz: vertex 2
-  vec4 albedo;    // rgb: albedo; w: area scale = true area / area projected on the dominant plane
-  vec4 normal;    // xyz: unit geometric normal (world space); w: area of one antialiasing sample
-  vec4 emission;  // rgb: emission / emission scale, in [0, 1]
+  vec3 v0;
+  float pad0;
+  vec3 v1;
+  float pad1;
+  vec3 v2;
+  float pad2;
+  vec3 albedo;
+  float areaScale;   // true area / area projected on the dominant plane
+  vec3 normal;       // unit geometric normal (world space)
+  float sampleArea;  // area of one antialiasing sample
+  vec3 emission;     // emission / emission scale, in [0, 1]
+  float pad3;
   uint dominantAxis;  // 0, 1 or 2: the axis the triangle is projected along
   uint subdivision;   // antialiasing subdivision n (n*n samples)
-  uint pad0;
-  uint pad1;
+  uint pad4;
+  uint pad5;
 };
 
 // Fixed point: one unit of the weight sum is 2^-16 voxel faces (h^2) of surface area.

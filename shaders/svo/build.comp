@@ -93,9 +93,9 @@ void main() {
   if (uPass == kPassMark || uPass == kPassAccumulate) {
     SvoSample s = samples[i];
     if (!splatInDomain(s.position.xyz, float(n))) return;
-    SplatAxis x = splatAxis(s.position.x, s.position.w);
-    SplatAxis y = splatAxis(s.position.y, s.position.w);
-    SplatAxis z = splatAxis(s.position.z, s.position.w);
+    SplatAxis x = splatAxis(s.position.x, s.edge);
+    SplatAxis y = splatAxis(s.position.y, s.edge);
+    SplatAxis z = splatAxis(s.position.z, s.edge);
     for (int k = 0; k < 8; ++k) {
       ivec3 c = ivec3(k & 1, (k >> 1) & 1, k >> 2);
       ivec3 leaf = cornerLeaf(x, y, z, c, n);
@@ -106,7 +106,7 @@ void main() {
         atomicOr(marks[tileKey >> 2], 1u << (8u * (tileKey & 3u) + (key & 7u)));
         continue;
       }
-      float w = splatWeight(x, y, z, s.albedo.w, c);
+      float w = splatWeight(x, y, z, s.density, c);
       uint tile = svoFindTile(uDepth, uvec3(leaf >> 1));
       int at = int((tile * 8u + (key & 7u)) * uint(kSumWords));
       int opacity = fixedRound(w, 1.0f, uScale);

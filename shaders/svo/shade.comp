@@ -17,7 +17,9 @@ vec4 svoBrickAt(int level, int face, uint tile, uint texel) {
 }
 
 LightData lightAt(int i);  // defined below, after the buffers
-ConeData coneAt(int i) { return ConeData(vec4(0.0f), vec4(0.0f)); }  // no diffuse cones here
+ConeData coneAt(int i) {  // no diffuse cones here
+  return ConeData(vec3(0.0f), 0.0f, 0.0f, 0.0f, 0.0f, 0.0f);
+}
 
 #include "shared/vct/trace_cones_kernel.h"
 #include "shared/svo/shade_kernel.h"

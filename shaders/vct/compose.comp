@@ -15,7 +15,7 @@ void main() {
   ComposeInput i = inputs[e];
   vec3 c = composePixel(ids[e], i.albedo.xyz, i.specular.xyz, i.emission.xyz, i.directDiffuse.xyz,
                         i.directSpecular.xyz, i.indirectDiffuse.xyz, i.indirectSpecular.xyz,
-                        i.ambientOcclusion.x, uBackground);
+                        i.ambientOcclusion, uBackground);
   color[3 * e] = c.x;
   color[3 * e + 1] = c.y;
   color[3 * e + 2] = c.z;

@@ -46,7 +46,7 @@ TEST(Rsm, TiltedPlaneReflectsTheCosineOnce) {
     settings.lpv.rsmResolution = 64;
     const BufferSet out = runCpuUntil(lpvTechnique(), scene, settings, "rsm");
     const lpv::RsmSetup rsm = lpv::prepareRsm(scene, settings);
-    const double side = 2.0 * rsm.views[0].forward.w * scene.grid.voxelSize();
+    const double side = 2.0 * rsm.views[0].extent * scene.grid.voxelSize();
     const glm::dvec3 expected = glm::dvec3(albedo) * 2.0 * side * side;
     const glm::dvec3 sum = fluxSum(out.at(BufferId::lpv_rsm_flux));
     for (int k = 0; k < 3; ++k)

@@ -25,9 +25,11 @@ using shared::SvoSample;
 SvoSample sampleAt(glm::vec3 p, float r, glm::vec3 albedo = glm::vec3(0.5f),
                    glm::vec3 normal = {0, 1, 0}) {
   SvoSample s{};
-  s.position = glm::vec4(p, r);
-  s.albedo = glm::vec4(albedo, 1.0f / r);
-  s.normal = glm::vec4(normal, 0.0f);
+  s.position = p;
+  s.edge = r;
+  s.albedo = albedo;
+  s.density = 1.0f / r;
+  s.normal = normal;
   return s;
 }
 
@@ -57,7 +59,7 @@ std::set<uint64_t> overlappedLeaves(const std::vector<SvoSample>& samples, int d
   const int n = 1 << depth;
   std::set<uint64_t> out;
   for (const SvoSample& s : samples) {
-    const double r = s.position.w;
+    const double r = s.edge;
     glm::ivec3 lo, hi;
     for (int a = 0; a < 3; ++a) {
       const double p = s.position[a];
@@ -218,7 +220,7 @@ TEST(SvoBuild, LeafSumsAreEverySampleCornerAddedOnce) {
   std::map<uint32_t, std::array<int64_t, shared::kSumWords>> expected;
   size_t crossing = 0;
   for (const SvoSample& s : samples) {
-    const float r = s.position.w;
+    const float r = s.edge;
     const shared::SplatAxis a[3] = {shared::splatAxis(s.position.x, r),
                                     shared::splatAxis(s.position.y, r),
                                     shared::splatAxis(s.position.z, r)};
@@ -233,7 +235,7 @@ TEST(SvoBuild, LeafSumsAreEverySampleCornerAddedOnce) {
                  leaf[axis] < n;
       }
       if (!inside) continue;
-      const float w = shared::splatWeight(a[0], a[1], a[2], s.albedo.w, corner);
+      const float w = shared::splatWeight(a[0], a[1], a[2], s.density, corner);
       auto& v = expected[shared::mortonEncode(glm::uvec3(leaf))];
       v[shared::kSumOpacity] += shared::fixedRound(w, 1.0f, scale);
       for (int ch = 0; ch < 3; ++ch) {

@@ -25,10 +25,12 @@ std::vector<shared::SvoSample> scattered(int depth, size_t count, uint32_t seed)
       p = glm::vec3(u(rng), u(rng), u(rng)) * (n + 2.0f) - 1.0f;
     }
     const float r = 0.2f + 0.8f * u(rng);
-    out[i].position = glm::vec4(p, r);
-    out[i].albedo = glm::vec4(u(rng), u(rng), u(rng), 1.0f / r);
-    out[i].normal = glm::vec4(glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) - 0.5f), 0.0f);
-    out[i].emission = glm::vec4(i % 7 == 0 ? glm::vec3(u(rng)) : glm::vec3(0.0f), 0.0f);
+    out[i].position = p;
+    out[i].edge = r;
+    out[i].albedo = glm::vec3(u(rng), u(rng), u(rng));
+    out[i].density = 1.0f / r;
+    out[i].normal = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) - 0.5f);
+    out[i].emission = i % 7 == 0 ? glm::vec3(u(rng)) : glm::vec3(0.0f);
   }
   return out;
 }

@@ -44,7 +44,7 @@ TEST(SvoOpenVdb, LeafColoursEqualOpenVdbPointRasterisation) {
 
   const svo::SampleSet set = svo::prepareSamples(scene, kDepth, 4.0, 1, EmitterLighting::voxels);
   ASSERT_EQ(set.samples.size(), cloud.size());
-  for (const auto& s : set.samples) ASSERT_EQ(s.position.w, 1.0f);
+  for (const auto& s : set.samples) ASSERT_EQ(s.edge, 1.0f);
   const cpu::svo::Octree o = cpu::svo::buildOctree(set.samples, kDepth);
   const Words sums = cpu::svo::accumulateLeaves(o, set.samples, set.weightScale, scene.file);
   const svo::Leaves leaves = svo::resolveLeaves(sums, set.weightScale, set.emissionScale);

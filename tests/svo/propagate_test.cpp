@@ -257,8 +257,8 @@ TEST(SvoLight, InjectionIsTheAnalyticDirectLightAndTheSplattedEmission) {
   for (int z = 0; z < 16; ++z)
     for (int x = 0; x < 16; ++x) {
       shared::SvoSample s = cellSample({x, 3, z});
-      s.albedo = glm::vec4(0.8f, 0.4f, 0.2f, 1.0f);
-      s.emission = glm::vec4(0.25f, 0.5f, 1.0f, 0.0f);  // scaled: emissionScale 4 below
+      s.albedo = glm::vec3(0.8f, 0.4f, 0.2f);
+      s.emission = glm::vec3(0.25f, 0.5f, 1.0f);  // scaled: emissionScale 4 below
       samples.push_back(s);
     }
   const Octree o = cpu::svo::buildOctree(samples, kDepth);
@@ -270,8 +270,8 @@ TEST(SvoLight, InjectionIsTheAnalyticDirectLightAndTheSplattedEmission) {
   EXPECT_NEAR(emitted.z, 256 * 4.0, 1e-3);
 
   shared::LightData light{};
-  light.position = glm::vec4(5.5f, 9.5f, 7.5f, 0.0f);  // 6 leaves above leaf (5, 3, 7)'s centre
-  light.intensity = glm::vec4(36.0f, 36.0f, 36.0f, 0.0f);
+  light.position = glm::vec3(5.5f, 9.5f, 7.5f);  // 6 leaves above leaf (5, 3, 7)'s centre
+  light.intensity = glm::vec3(36.0f);
   light.kind = shared::kLightPoint;
   light.castsShadows = 1u;
   shared::LightVoxelsParams params{};

@@ -7,6 +7,7 @@
 
 #include "cpu/svo/leaf_light.h"
 #include "shaders/shared/svo/shade_kernel.h"
+#include "tests/svo/tree_samples.h"
 
 namespace voxgi {
 namespace {
@@ -27,13 +28,7 @@ FullTree fullTree(const F& f, float opacity) {
   std::vector<shared::SvoSample> samples;
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        shared::SvoSample s{};
-        s.position = glm::vec4(float(i) + 0.5f, float(j) + 0.5f, float(k) + 0.5f, 1.0f);
-        s.albedo = glm::vec4(0.5f, 0.5f, 0.5f, 1.0f);
-        s.normal = glm::vec4(0.0f, 1.0f, 0.0f, 0.0f);
-        samples.push_back(s);
-      }
+      for (int i = 0; i < n; ++i) samples.push_back(test::cellSample({i, j, k}));
   FullTree t{cpu::svo::buildOctree(samples, kDepth), {}, {}};
   const size_t slots = t.octree.leafTileCount() * 8;
   t.leaves.albedo.assign(slots, glm::vec4(0.5f, 0.5f, 0.5f, opacity));

@@ -36,7 +36,7 @@ struct Volumes {
     const cpu::ConeVolumes volumes(buffers.at(lit.radiance), buffers.at(lit.pyramid),
                                    settings.vct.mip, scene.grid.resolution, setup.lights,
                                    setup.cones);
-    return shared::tracePixel(volumes, p, n, shared::ObjectData{glm::vec4(0.0f)}, setup.params);
+    return shared::tracePixel(volumes, p, n, shared::ObjectData{}, setup.params);
   }
 };
 

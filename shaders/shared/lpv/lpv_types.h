@@ -50,15 +50,18 @@ struct PropagateParams {
 // spot wider than 120 degrees), a spot's frustum, or a directional light's orthographic box. Its
 // rsm.resolution^2 texels are rows of texel rays, row 0 at the top as the camera's. 80 bytes.
 struct RsmView {
-  vec4 origin;    // xyz: voxel-local position (the light; a directional view's corner plane centre)
-                  // w: 1 perspective, 0 orthographic
-  vec4 forward;   // xyz: unit view axis; w: tan(half field of view) or the box's half width (cells)
-  vec4 right;     // xyz: unit
-  vec4 up;        // xyz: unit
+  vec3 origin;      // voxel-local position (the light; a directional view's corner plane centre)
+  int perspective;  // 1 perspective, 0 orthographic
+  vec3 forward;     // unit view axis
+  float extent;     // tan(half field of view), or the orthographic box's half width (cells)
+  vec3 right;       // unit
+  float pad0;
+  vec3 up;  // unit
+  float pad1;
   int light;      // index into the lights
   int firstView;  // the light's first view (host only)
   int viewCount;  // the light's views: 1, or 6 for a point light's cube (host only)
-  int pad0;
+  int pad2;
 };
 
 // The rsm stage's block: the views follow it.

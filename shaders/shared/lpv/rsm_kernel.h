@@ -25,8 +25,8 @@ VOXGI_FN vec2 rsmTexelPlane(ivec2 texel, int resolution) {
 // the view's axis (the rsm_depth buffer), in cells.
 VOXGI_FN void rsmTexelRay(RsmView v, ivec2 texel, int resolution, OUT(vec3) origin, OUT(vec3) dir) {
   vec2 plane = rsmTexelPlane(texel, resolution);
-  precise float px = plane.x * v.forward.w, py = plane.y * v.forward.w;
-  if (v.origin.w == 1.0f) {
+  precise float px = plane.x * v.extent, py = plane.y * v.extent;
+  if (v.perspective == 1) {
     origin = vec3(v.origin);
     dir = (vec3(v.forward) + vec3(v.right) * px) + vec3(v.up) * py;
   } else {
@@ -39,12 +39,12 @@ VOXGI_FN void rsmTexelRay(RsmView v, ivec2 texel, int resolution, OUT(vec3) orig
 // texel of side a = 2 tan / R on the plane at depth 1 subtends a^2 / |dir|^3 steradians (the
 // midpoint rule), times the squared distance (t |dir|)^2.
 VOXGI_FN float rsmFootprint(RsmView v, vec3 dir, float depth, int resolution, float voxelSize) {
-  if (v.origin.w == 1.0f) {
-    precise float side = (2.0f * v.forward.w / float(resolution)) * depth * voxelSize;
+  if (v.perspective == 1) {
+    precise float side = (2.0f * v.extent / float(resolution)) * depth * voxelSize;
     precise float area = side * side / length3(dir);
     return area;
   }
-  precise float side = (2.0f * v.forward.w / float(resolution)) * voxelSize;
+  precise float side = (2.0f * v.extent / float(resolution)) * voxelSize;
   return side * side;
 }
 
@@ -105,7 +105,7 @@ VOXGI_FN Vpl rsmVpl(RsmView v, ivec2 texel, int resolution, float depth, vec3 no
 VOXGI_FN vec3 rsmProject(RsmView v, vec3 p) {
   precise vec3 d = p - vec3(v.origin);
   precise float z = dot3(d, vec3(v.forward));
-  precise float scale = v.origin.w == 1.0f ? z * v.forward.w : v.forward.w;
+  precise float scale = v.perspective == 1 ? z * v.extent : v.extent;
   if (!(scale > 0.0f)) return vec3(0.0f, 0.0f, -1.0f);
   precise vec2 xy = vec2(dot3(d, vec3(v.right)), dot3(d, vec3(v.up))) / scale;
   return vec3(xy, z);

@@ -64,7 +64,7 @@ VOLUME_FN float rsmVisibility(VOLUMES_IN RsmParams rp, int light, vec3 p, float 
     if (v.light != light) continue;
     vec3 q = rsmProject(v, p);
     if (q.z <= 0.0f) continue;
-    precise float axis = v.origin.w == 1.0f ? q.z / length3(p - vec3(v.origin)) : 1.0f;
+    precise float axis = v.perspective == 1 ? q.z / length3(p - vec3(v.origin)) : 1.0f;
     if (best == -1 || axis > bestAxis) {
       best = i;
       bestAxis = axis;
@@ -79,7 +79,7 @@ VOLUME_FN float rsmVisibility(VOLUMES_IN RsmParams rp, int light, vec3 p, float 
   float depth = FETCH(rsmDepthAt)(best, texel);
   if (depth == 0.0f) return 1.0f;
   precise float footprint =
-      2.0f * v.forward.w / float(resolution) * (v.origin.w == 1.0f ? at.z : 1.0f);
+      2.0f * v.extent / float(resolution) * (v.perspective == 1 ? at.z : 1.0f);
   precise float bias = rp.biasTexels * footprint / max(cosine, 0.1f);
   return at.z <= depth + bias ? 1.0f : 0.0f;
 }

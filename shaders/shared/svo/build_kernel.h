@@ -18,11 +18,14 @@ struct alignas(64) SvoSample {
 #else
 struct SvoSample {
 #endif
-  vec4 position;  // xyz: leaf voxel units (leaf (i,j,k) covers [i,i+1) x ...); w: RoI edge r in (0,
-                  // 1]
-  vec4 albedo;    // rgb: albedo in [0, 1]; w: opacity density (1 / r: a surface's samples sum to 1)
-  vec4 normal;    // xyz: unit surface normal; w: 0
-  vec4 emission;  // rgb: emission / the build's emission scale, in [0, 1]; w: 0
+  vec3 position;  // leaf voxel units (leaf (i,j,k) covers [i,i+1) x ...)
+  float edge;     // the edge r of the sample's region of influence (RoI), in (0, 1]
+  vec3 albedo;    // in [0, 1]
+  float density;  // opacity density (1 / r: a surface's samples sum to 1)
+  vec3 normal;    // unit surface normal
+  float pad0;
+  vec3 emission;  // emission / the build's emission scale, in [0, 1]
+  float pad1;
 };
 
 // Fixed point: a leaf's sums count units of 1/scale of opacity x cell volume, with a power-of-two

@@ -13,14 +13,17 @@ VOXGI_NAMESPACE_BEGIN
 // One pixel's inputs for shaders/vct/compose.comp (std430, 128 bytes), packed on the host from
 // the gbuffer's and trace_cones' buffers; a buffer the plan does not produce leaves its term 0.
 struct ComposeInput {
-  vec4 albedo;            // rgb: gbuffer.pixel_albedo
-  vec4 specular;          // rgb: gbuffer.pixel_specular's colour
-  vec4 emission;          // rgb: gbuffer.pixel_emission
-  vec4 directDiffuse;     // rgb: trace_cones' terms
-  vec4 directSpecular;    // rgb
-  vec4 indirectDiffuse;   // rgb
-  vec4 indirectSpecular;  // rgb
-  vec4 ambientOcclusion;  // x: trace_cones' AO where ao.mode=on, else 0
+  vec4 albedo;             // rgb: gbuffer.pixel_albedo
+  vec4 specular;           // rgb: gbuffer.pixel_specular's colour
+  vec4 emission;           // rgb: gbuffer.pixel_emission
+  vec4 directDiffuse;      // rgb: trace_cones' terms
+  vec4 directSpecular;     // rgb
+  vec4 indirectDiffuse;    // rgb
+  vec4 indirectSpecular;   // rgb
+  float ambientOcclusion;  // trace_cones' AO where the light terms apply it, else 0
+  float pad0;
+  float pad1;
+  float pad2;
 };
 
 VOXGI_FN vec3 composePixel(uint objectId, vec3 albedo, vec3 specular, vec3 emission,

@@ -189,9 +189,9 @@ VOXGI_FN vec3 diffuseConeDirection(vec3 t, vec3 b, vec3 n, ConeData c) {
 }
 
 VOXGI_FN DiffuseSum addDiffuseCone(DiffuseSum s, ConeHit h, ConeData c) {
-  precise vec3 radiance = s.radiance + h.radiance * c.weight.x;
-  precise float ambient = s.ambient + h.ambient * c.weight.x;
-  precise float weights = s.weights + c.weight.x;
+  precise vec3 radiance = s.radiance + h.radiance * c.weight;
+  precise float ambient = s.ambient + h.ambient * c.weight;
+  precise float weights = s.weights + c.weight;
   s.radiance = radiance;
   s.ambient = ambient;
   s.weights = weights;
@@ -213,7 +213,7 @@ VOLUME_FN DiffuseSum gatherDiffuse(VOLUMES_IN vec3 origin, vec3 n, int kind,
   for (int k = 0; k < params.diffuseConeCount; ++k) {
     ConeData c = FETCH(coneAt)(k);
     ConeHit h = marchCone(VOLUMES origin, diffuseConeDirection(t, b, n, c), c.direction.z,
-                          c.direction.w, params.maxDistance, kind, params);
+                          c.tanHalfAperture, params.maxDistance, kind, params);
     s = addDiffuseCone(s, h, c);
   }
   return s;

@@ -42,13 +42,20 @@ struct ConeTraceParams {
 
 // One diffuse cone (std430): direction in the tangent frame (z along the normal).
 struct ConeData {
-  vec4 direction;  // xyz: unit direction; w: tan(half aperture)
-  vec4 weight;     // x: weight of the cone's mean radiance in E / pi
+  vec3 direction;  // unit
+  float tanHalfAperture;
+  float weight;  // of the cone's mean radiance in E / pi
+  float pad0;
+  float pad1;
+  float pad2;
 };
 
 // Per object id (mesh index + 1; 0 is the background), std430.
 struct ObjectData {
-  vec4 specular;  // x: tan(half aperture) of the specular cone, 0 for none; y: Phong shininess
+  float specularTanHalfAperture;  // the specular cone's; 0: none traced
+  float shininess;                // Phong
+  float pad0;
+  float pad1;
 };
 
 // What trace_cones leaves for compose: irradiance terms still to be multiplied by the material.

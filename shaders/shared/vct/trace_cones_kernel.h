@@ -52,8 +52,8 @@ VOXGI_FN LightPath lightPath(LightData l, vec3 p, vec3 n, ConeTraceParams params
     path.cosine = max(dot3(n, path.toLight), 0.0f);
     path.radiance = vec3(l.intensity);
     path.weight = kPi * f;
-    if (path.arrives) path.tanHalf = min(l.direction.w / distance, params.tanHalfShadowAperture);
-    shadowLength = path.arrives ? triangleShadowLength(distance, l.direction.w) : 0.0f;
+    if (path.arrives) path.tanHalf = min(l.boundingRadius / distance, params.tanHalfShadowAperture);
+    shadowLength = path.arrives ? triangleShadowLength(distance, l.boundingRadius) : 0.0f;
   } else {
     path.radiance = lightIrradiance(l, p, params.voxelSize, path.toLight, distance);
     path.cosine = dot3(n, path.toLight);
@@ -100,8 +100,8 @@ VOXGI_FN DirectLight addLight(DirectLight d, LightPath path, float visibility, v
   d.minVisibility = min(d.minVisibility, visibility);
   precise vec3 arriving = path.radiance * (path.weight * visibility);
   d.diffuse = d.diffuse + arriving * kInvPi;
-  if (object.specular.x > 0.0f) {
-    float shininess = object.specular.y;
+  if (object.specularTanHalfAperture > 0.0f) {
+    float shininess = object.shininess;
     precise float rl = dot3(mirror, path.toLight);
     d.specular = d.specular + arriving * phongLobe(rl, shininess);
     if (params.lightAngleSpecular == 1) {
@@ -125,7 +125,7 @@ VOXGI_FN PixelLight finishPixel(DirectLight d, DiffuseSum diffuse, ConeHit specu
   // [Kahl 2019, eq. 5.9] darkens first-hit diffuse light by the smallest shadow-cone visibility.
   if (params.firstHitDiffuse == 1) r.indirectDiffuse = r.indirectDiffuse * d.minVisibility;
   r.indirectSpecular = vec3(0.0f);
-  if (object.specular.x > 0.0f)
+  if (object.specularTanHalfAperture > 0.0f)
     r.indirectSpecular =
         params.lightAngleSpecular == 1 ? specularHit.radiance * d.lightAngle : specularHit.radiance;
   return r;
@@ -151,8 +151,8 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
   }
   DiffuseSum diffuse = gatherDiffuse(VOLUMES origin, n, diffuseMarchKind(params), params);
   ConeHit specularHit = noConeHit();
-  if (object.specular.x > 0.0f)
-    specularHit = marchCone(VOLUMES origin, mirror, dot3(n, mirror), object.specular.x,
+  if (object.specularTanHalfAperture > 0.0f)
+    specularHit = marchCone(VOLUMES origin, mirror, dot3(n, mirror), object.specularTanHalfAperture,
                             params.maxDistance, kMarchRadiance, params);
   return finishPixel(d, diffuse, specularHit, object, params);
 }
