@@ -19,10 +19,9 @@ std::vector<shared::LightData> voxelLights(const Scene& scene) {
     d.intensity = l.intensity;
     d.falloff = glm::vec3(l.falloff.constant, l.falloff.linear, l.falloff.quadratic);
     d.polynomialFalloff = l.falloff.kind == Falloff::Kind::polynomial ? 1 : 0;
-    const uint32_t type = l.type == Light::Type::point  ? shared::kLightPoint
-                          : l.type == Light::Type::spot ? shared::kLightSpot
-                                                        : shared::kLightDirectional;
-    d.kind = type;
+    d.kind = l.type == Light::Type::point  ? shared::kLightPoint
+             : l.type == Light::Type::spot ? shared::kLightSpot
+                                           : shared::kLightDirectional;
     d.castsShadows = l.castsShadows ? 1u : 0u;
     out.push_back(d);
   }

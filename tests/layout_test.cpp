@@ -1,7 +1,8 @@
 // Every std430 block the host fills or reads is laid out in C++ exactly as GLSL lays it out: each
 // field's offset and each array's stride, queried from the linked production programs
 // (program interface queries, OpenGL 4.5 core §7.3.1). A field counts as checked only where a
-// program uses it (unused fields are not active), so every field must be active in some program.
+// program uses it (unused fields are not active), so every listed field must be active in some
+// program; the fields no shader reads (pads, host-only fields) are covered by the array stride.
 #include <cstddef>
 #include <map>
 #include <memory>
