@@ -17,6 +17,18 @@ size_t Scene::pointCount() const {
   return n;
 }
 
+bool Scene::unlit() const {
+  const auto emits = [](const glm::vec3& c) { return c.x > 0.0f || c.y > 0.0f || c.z > 0.0f; };
+  if (emits(background)) return false;
+  for (const Light& l : lights)
+    if (emits(l.intensity)) return false;
+  for (const Mesh& m : meshes)
+    if (!m.triangles.empty() && materials.at(m.material).emissive()) return false;
+  for (const PointCloud& c : pointClouds)
+    if (c.size() > 0 && materials.at(c.material).emissive()) return false;
+  return true;
+}
+
 std::pair<glm::dvec3, glm::dvec3> Scene::bounds() const {
   glm::dvec3 lo(std::numeric_limits<double>::max());
   glm::dvec3 hi(std::numeric_limits<double>::lowest());

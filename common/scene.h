@@ -84,8 +84,13 @@ struct Scene {
   // The file's "settings" as "key=value" (common/settings.h keys, already validated); applied
   // before a --preset and --set.
   std::vector<std::string> settings;
+  // Set when voxgi lit a bare file that has no light of its own (common/scene/default_lights.cpp):
+  // what it added, for `voxgi plan` and `render` to say.
+  std::string defaultLightsNote;
 
   size_t triangleCount() const;
+  // Nothing emits light: no light, no emissive material on a mesh or cloud, a black background.
+  bool unlit() const;
   size_t pointCount() const;
   // Bounds of all mesh vertices and points; min > max when there is no geometry.
   std::pair<glm::dvec3, glm::dvec3> bounds() const;

@@ -255,6 +255,48 @@ TEST(Cli, PlanSaysWhatRunsAndWhy) {
     EXPECT_NE(other.output.find(line), std::string::npos) << line << "\n" << other.output;
 }
 
+// The mean of an image's channels.
+double imageMean(const Image& image) {
+  double sum = 0.0;
+  for (const glm::vec3& p : image.pixels) sum += double(p.x) + double(p.y) + double(p.z);
+  return sum / (3.0 * double(image.pixels.size()));
+}
+
+// A Blender 3.4 export (tests/data/scenes/README.md) renders through its own camera (4:3) and
+// lights, with no default light; --camera names one the file has, or the error lists them.
+TEST(Cli, GltfRendersWithItsCameraAndLights) {
+  const std::string glb = sourcePath("tests/data/scenes/blender_room.glb");
+  const std::string out = testTempDir() + "blender_room.exr";
+  const CommandResult r = voxgi("render " + glb +
+                                " --technique vct --backend cpu --resolution 16"
+                                " --image 64 --out " +
+                                out);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(r.output.find("default"), std::string::npos) << r.output;
+  const Image image = readExr(out);
+  EXPECT_EQ(image.width, 64);
+  EXPECT_EQ(image.height, 48);
+  EXPECT_GT(imageMean(image), 0.01);
+  EXPECT_EQ(voxgi("plan " + glb + " --camera Cam").code, 0);
+  const CommandResult wrong = voxgi("plan " + glb + " --camera Nope");
+  EXPECT_EQ(wrong.code, 2);
+  EXPECT_EQ(wrong.output,
+            "voxgi: " + glb + ": --camera: no camera 'Nope' in its mesh files (they have 'Cam')\n");
+}
+
+// A bare model with no light renders lit by the default lights and says so, after the run.
+TEST(Cli, BareModelIsLitByTheDefaultLights) {
+  const std::string out = testTempDir() + "bunny_lit.exr";
+  const CommandResult r =
+      voxgi("render " + sourcePath("scenes/bunny.obj") +
+            " --technique vct --backend cpu --resolution 16 --image 64 --out " + out);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("default key and fill lights"), std::string::npos) << r.output;
+  EXPECT_GT(imageMean(readExr(out)), 0.01);
+  const CommandResult plan = voxgi("plan " + sourcePath("scenes/bunny.obj"));
+  EXPECT_NE(plan.output.find("  lights: "), std::string::npos) << plan.output;
+}
+
 TEST(Cli, RenderHelpListsEveryParameterWithItsDefault) {
   const CommandResult r = voxgi("render --help");
   EXPECT_EQ(r.code, 0);

@@ -10,12 +10,6 @@
 namespace voxgi::test {
 namespace {
 
-std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = testTempDir() + name;
-  std::ofstream(path) << text;
-  return path;
-}
-
 // The InputError message of loading `json` (with a valid mesh next to it), or "" if it loads.
 std::string errorOf(const std::string& json) {
   writeTemp("tri.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -193,6 +194,12 @@ std::string testTempDir() {
   }
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::string path = testTempDir() + name;
+  std::ofstream(path) << text;
+  return path;
 }
 
 std::string sourcePath(const std::string& relative) {

@@ -71,5 +71,7 @@ std::string sourcePath(const std::string& relative);  // relative to the project
 // A folder of the running test's own (ctest runs tests as parallel processes), emptied when first
 // asked for in a run, ending in '/'.
 std::string testTempDir();
+// Writes `text` to `name` in testTempDir(); returns its path.
+std::string writeTemp(const std::string& name, const std::string& text);
 
 }  // namespace voxgi::test

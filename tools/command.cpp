@@ -3,6 +3,7 @@
 #include <chrono>
 #include <iostream>
 
+#include "common/error.h"
 #include "common/scene/scene_load.h"
 
 namespace voxgi::tools {
@@ -24,6 +25,9 @@ void SceneOptions::add(CLI::App& cmd, Globals& globals, bool withBackend) {
         ->check(CLI::IsMember({"cpu", "gpu", "auto"}));
   cmd.add_option("--threads", globals.threads, "worker threads (default: all cores)")
       ->check(CLI::Range(1, 1024));
+  cmd.add_option("--camera", camera,
+                 "a camera of the scene's glTF files by node name (default: the scene file's, "
+                 "else the first)");
   cmd.add_option("--preset", preset, "parameter preset of the technique (render --help)");
   cmd.add_option("--set", sets, "technique parameter key=value (repeatable; see render --help)");
 }
@@ -34,7 +38,7 @@ void SceneOptions::addTechnique(CLI::App& cmd) {
 }
 
 Scene SceneOptions::load() const {
-  Scene s = loadScene(scene);
+  Scene s = loadScene(scene, {.camera = camera});
   if (resolution != 0) {
     s.grid.resolution = readResolution("--resolution", "", resolution);
     checkGrid(s, "--resolution " + std::to_string(resolution));
@@ -49,6 +53,16 @@ Settings SceneOptions::settings(const Scene& s, bool inspect) const {
   Settings out = resolveSettings(findTechnique(technique), s.settings, s.file, preset, all);
   out.inspect = inspect;
   return out;
+}
+
+std::string lightingNote(const Scene& scene) {
+  if (!scene.defaultLightsNote.empty())
+    return printable(scene.file) + ": " + scene.defaultLightsNote;
+  if (scene.unlit())
+    return "warning: " + printable(scene.file) +
+           ": nothing emits light (no light, no emissive material, a black background), so the "
+           "image is black";
+  return {};
 }
 
 std::vector<std::string> techniqueList() {

@@ -50,6 +50,7 @@ struct SceneOptions {
   std::string backend = "auto";
   std::string gl = "egl";
   std::string preset = "default";
+  std::string camera;             // --camera NAME: a camera of the scene's glTF files
   std::vector<std::string> sets;  // --set key=value, applied last
 
   // The scene and its overrides, --gl, --threads, --preset and --set; --backend when `backend`.
@@ -62,6 +63,10 @@ struct SceneOptions {
   // `inspect` for diff and dump (Settings::inspect).
   Settings settings(const Scene& scene, bool inspect = false) const;
 };
+
+// How the scene is lit when its file does not say (the default lights, or a warning that nothing
+// emits light), for render and plan to print once the run has succeeded; empty otherwise.
+std::string lightingNote(const Scene& scene);
 
 // The technique names of the registry, for --technique's check.
 std::vector<std::string> techniqueList();

@@ -16,6 +16,8 @@ int runPlan(const SceneOptions& o) {
   const EffectPlan plan = technique.plan(scene, o.settings(scene));
   std::cout << technique.name << " plan for " << scene.file << " (" << scene.grid.resolution
             << "^3 grid, " << scene.camera.width << "x" << scene.camera.height << " image):\n";
+  if (const std::string note = lightingNote(scene); !note.empty())
+    std::cout << "  lights: " << note << "\n";
   for (const PlanItem& item : plan.items)
     std::cout << "  " << (item.in ? "in " : "out") << "  " << std::left << std::setw(20)
               << item.name << "  " << item.why << "\n";

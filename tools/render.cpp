@@ -72,6 +72,8 @@ int renderTechnique(const RenderOptions& o) {
   std::cout << technique.name << " rendered " << run.scene.camera.width << "x"
             << run.scene.camera.height << " at " << run.scene.grid.resolution << "^3 ("
             << run.backendName() << ") in " << run.seconds << " s -> " << o.out << "\n";
+  if (const std::string note = lightingNote(run.scene); !note.empty())
+    std::cerr << "voxgi: " << note << "\n";
   return kExitOk;
 }
 
@@ -119,6 +121,8 @@ int renderPath(const RenderOptions& o) {
             << options.spp << " spp in " << result.seconds << " s ("
             << double(result.rays) / result.seconds / 1e6 << " M rays/s) -> " << o.out << " and "
             << reference::variancePath(o.out) << "\n";
+  if (const std::string note = lightingNote(scene); !note.empty())
+    std::cerr << "voxgi: " << note << "\n";
   return kExitOk;
 }
 

@@ -14,6 +14,22 @@ namespace {
 
 using nlohmann::json;
 
+constexpr const char* kGltf1 = "glTF 1.0 is not supported (voxgi reads glTF 2.0)";
+
+// glTF 2.0 requires asset.version; a 1.0 file (no version, or "1.x") is named as such before its
+// other fields, laid out differently, fail a 2.0 check with a message that misleads.
+void checkVersion(const std::string& path, const json& doc) {
+  const auto asset = doc.find("asset");
+  const json* version = nullptr;
+  if (asset != doc.end() && asset->is_object() && asset->contains("version"))
+    version = &asset->at("version");
+  if (version == nullptr || !version->is_string() || version->get<std::string>().starts_with("1"))
+    throw InputError(path, "asset.version", kGltf1);
+  if (!version->get<std::string>().starts_with("2."))
+    throw InputError(path, "asset.version",
+                     "glTF " + version->get<std::string>() + " is not supported (voxgi reads 2.0)");
+}
+
 uint32_t le32(const std::string& bytes, size_t at) {
   uint32_t v = 0;
   for (int i = 3; i >= 0; --i) v = (v << 8) | uint8_t(bytes[at + size_t(i)]);
@@ -81,6 +97,7 @@ GltfContainer readContainer(const std::string& path, const std::string& bytes) {
     return c;
   }
   if (bytes.size() < 20) throw InputError(path, "header", "shorter than a GLB header");
+  if (le32(bytes, 4) == 1) throw InputError(path, "header", kGltf1);
   if (le32(bytes, 4) != 2) throw InputError(path, "header", "not glTF version 2");
   if (le32(bytes, 8) != bytes.size())
     throw InputError(path, "header",
@@ -188,7 +205,7 @@ void checkAccessors(const std::string& path, const json& doc, uint64_t fileBytes
 
 }  // namespace
 
-void checkGltf(const std::string& path) {
+nlohmann::json checkGltf(const std::string& path) {
   const std::string bytes = readInputFile(path, "", "glTF file");
   const GltfContainer container = readContainer(path, bytes);
   json doc;
@@ -198,8 +215,10 @@ void checkGltf(const std::string& path) {
     throw InputError(path, "", std::string("malformed glTF JSON: ") + e.what());
   }
   if (!doc.is_object()) throw InputError(path, "", "not a glTF document (no top-level object)");
+  checkVersion(path, doc);
   const std::vector<uint64_t> bufferBytes = checkBuffers(path, doc, container);
   checkAccessors(path, doc, bytes.size(), checkViews(path, doc, bufferBytes));
+  return doc;
 }
 
 }  // namespace voxgi

@@ -2,13 +2,16 @@
 // what a file's buffers and accessors declare (a 2 KB .glb can ask for 4 GB). Every buffer, view
 // and accessor must fit in the data the file really has — its BIN chunk, a data: URI, or an
 // external file next to it — so what Assimp allocates is bounded by the files' sizes. Throws
-// InputError naming the file and the field (buffers[0].byteLength, accessors[3].count, ...).
+// InputError naming the file and the field (buffers[0].byteLength, accessors[3].count, ...). A
+// glTF 1.0 file is refused as such. Returns the parsed JSON document.
 #pragma once
 
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 namespace voxgi {
 
-void checkGltf(const std::string& path);
+nlohmann::json checkGltf(const std::string& path);
 
 }  // namespace voxgi

@@ -1,4 +1,5 @@
-// Mesh files through Assimp: triangles of every node, in world space, with their materials.
+// Mesh files: OBJ/MTL and mesh PLY through Assimp, glTF through common/scene/gltf_import.h, each
+// checked before it is read.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -13,6 +14,7 @@
 #include "common/error.h"
 #include "common/io/input_file.h"
 #include "common/scene/gltf_check.h"
+#include "common/scene/gltf_import.h"
 #include "common/scene/ply_check.h"
 #include "common/scene/scene_load.h"
 
@@ -26,12 +28,13 @@ glm::vec3 color(const aiMaterial& m, const char* key, unsigned type, unsigned in
   return fallback;
 }
 
+// An OBJ/MTL (or mesh PLY) material as Assimp reads it; glTF's come from
+// common/scene/gltf_authored.h.
 Material convertMaterial(const aiMaterial& m) {
   Material out;
   aiString name;
   if (m.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) out.name = name.C_Str();
   out.albedo = color(m, AI_MATKEY_COLOR_DIFFUSE, out.albedo);
-  out.albedo = color(m, AI_MATKEY_BASE_COLOR, out.albedo);  // glTF metallic-roughness
   out.specular = color(m, AI_MATKEY_COLOR_SPECULAR, out.specular);
   out.emission = color(m, AI_MATKEY_COLOR_EMISSIVE, out.emission);
   float shininess = 0.0f;
@@ -54,8 +57,9 @@ glm::dmat4 toGlm(const aiMatrix4x4& m) {
 }
 
 // Assimp picks an importer by content whatever the extension, so a file must be what its name says
-// before Assimp sees it; a PLY is checked whole (common/scene/ply_check.h).
-void checkMeshFileContent(const std::string& path) {
+// before Assimp sees it; a PLY is checked whole (common/scene/ply_check.h). Returns a glTF file's
+// JSON document.
+std::optional<nlohmann::json> checkMeshFileContent(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   std::ifstream in(path, std::ios::binary);
@@ -66,25 +70,23 @@ void checkMeshFileContent(const std::string& path) {
     checkPly(path);
   } else if (ext == ".glb") {
     if (magic != "glTF") throw InputError(path, "", "not a binary glTF file (no 'glTF' magic)");
-    checkGltf(path);
+    return checkGltf(path);
   } else if (ext == ".gltf") {
     char c = ' ';
     in.seekg(0);
     while (in.get(c) && std::isspace(static_cast<unsigned char>(c))) {
     }
     if (c != '{') throw InputError(path, "", "not a glTF file (JSON starting with '{')");
-    checkGltf(path);
+    return checkGltf(path);
   } else if (ext != ".obj") {
     throw InputError(path, "", "unknown mesh format '" + ext + "' (OBJ, glTF, GLB or PLY)");
   }
+  return std::nullopt;
 }
 
-}  // namespace
-
-void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& transform,
-                    const std::optional<uint32_t>& materialOverride) {
-  requireInputFile(path, "", "mesh file");
-  checkMeshFileContent(path);
+// OBJ and mesh PLY files through Assimp: the triangles of every node, in world space.
+void importWithAssimp(Scene& scene, const std::string& path, const glm::dmat4& transform,
+                      const std::optional<uint32_t>& materialOverride) {
   Assimp::Importer importer;
   // No degenerate-triangle removal here: the voxelizer handles them (and tests that it does).
   // ValidateDataStructure: Assimp's own check of indices, counts and references before voxgi
@@ -95,7 +97,6 @@ void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& tra
   if (ai == nullptr)
     throw InputError(path, "", std::string("cannot import: ") + importer.GetErrorString());
   if (ai->mRootNode == nullptr) throw InputError(path, "", "cannot import: no scene graph");
-  const size_t meshesBefore = scene.meshes.size();
   std::vector<uint32_t> materialOf(ai->mNumMaterials);
   for (unsigned i = 0; i < ai->mNumMaterials; ++i)
     materialOf[i] = materialOverride ? *materialOverride
@@ -129,14 +130,15 @@ void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& tra
         if (am.mFaces[f].mNumIndices == 3)
           mesh.triangles.emplace_back(am.mFaces[f].mIndices[0], am.mFaces[f].mIndices[1],
                                       am.mFaces[f].mIndices[2]);
-      if (materialOf.empty()) {
-        Material fallback;
-        fallback.name = "default";
-        mesh.material = internMaterial(scene, fallback);
-      }
+      if (materialOf.empty()) mesh.material = defaultMaterial(scene);
       scene.meshes.push_back(std::move(mesh));
     }
   }
+}
+
+// A file without triangles, or whose every triangle is degenerate, would render as nothing, and a
+// bare one would get a grid of zero size: refused.
+void checkTriangles(const Scene& scene, const std::string& path, size_t meshesBefore) {
   size_t triangles = 0, withArea = 0;
   for (size_t m = meshesBefore; m < scene.meshes.size(); ++m) {
     const Mesh& mesh = scene.meshes[m];
@@ -154,12 +156,26 @@ void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& tra
     }
   }
   if (triangles == 0) throw InputError(path, "", "no triangles (only points or lines, or nothing)");
-  // A file whose every triangle is degenerate would render as nothing, and a bare one would get a
-  // grid of zero size: refused, as a file without triangles is.
   if (withArea == 0)
     throw InputError(path, "",
                      "every one of its " + std::to_string(triangles) +
                          " triangles has zero area (nothing to render)");
+}
+
+}  // namespace
+
+MeshFileExtras importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& transform,
+                              const std::optional<uint32_t>& materialOverride) {
+  requireInputFile(path, "", "mesh file");
+  const std::optional<nlohmann::json> gltf = checkMeshFileContent(path);
+  const size_t meshesBefore = scene.meshes.size();
+  MeshFileExtras extras;
+  if (gltf)
+    extras = importGltf(scene, path, *gltf, transform, materialOverride);
+  else
+    importWithAssimp(scene, path, transform, materialOverride);
+  checkTriangles(scene, path, meshesBefore);
+  return extras;
 }
 
 }  // namespace voxgi

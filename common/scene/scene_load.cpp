@@ -250,16 +250,6 @@ std::optional<uint32_t> namedMaterial(const Field& f, const Scene& scene, size_t
   f.at("material").fail("unknown material '" + name + "'");
 }
 
-// The material "default" (albedo 0.8), added on first use.
-uint32_t defaultMaterial(Scene& scene) {
-  for (size_t k = 0; k < scene.materials.size(); ++k)
-    if (scene.materials[k].name == "default") return static_cast<uint32_t>(k);
-  Material fallback;
-  fallback.name = "default";
-  scene.materials.push_back(fallback);
-  return static_cast<uint32_t>(scene.materials.size() - 1);
-}
-
 // "point_clouds": [{"file", "material", "transform", "normals", "viewpoint", "colors"}].
 PointCloudOptions readPointCloud(const Field& f, Scene& scene, size_t namedMaterials) {
   f.allowKeys({"file", "material", "transform", "normals", "viewpoint", "colors"});
@@ -299,6 +289,13 @@ PointCloudOptions readPointCloud(const Field& f, Scene& scene, size_t namedMater
 }
 
 }  // namespace
+
+uint32_t defaultMaterial(Scene& scene) {
+  for (size_t k = 0; k < scene.materials.size(); ++k)
+    if (scene.materials[k].name == "default") return static_cast<uint32_t>(k);
+  scene.materials.push_back(Material{.name = "default"});
+  return static_cast<uint32_t>(scene.materials.size() - 1);
+}
 
 void checkGrid(const Scene& scene, const std::string& source) {
   const GridSpec& g = scene.grid;
@@ -361,25 +358,47 @@ void validateGeometry(const Scene& scene) {
 
 namespace {
 
-// A mesh or point-cloud file on its own: its geometry with default materials, a 64^3 grid fitted
-// to it and the camera on +z looking at its centre.
-Scene loadBareFile(const std::string& path) {
+// The camera `options` name among `cameras` (the scene's mesh files'); nullopt when it names none
+// and there are none to choose from. Throws InputError for a name that is not there.
+std::optional<Camera> chosenCamera(const std::string& file, const std::vector<FileCamera>& cameras,
+                                   const SceneLoadOptions& options) {
+  if (options.camera.empty())
+    return cameras.empty() ? std::nullopt : std::optional<Camera>(cameras.front().camera);
+  std::string names;
+  for (const FileCamera& c : cameras) {
+    if (c.name == options.camera) return c.camera;
+    names += (names.empty() ? "" : ", ") + ("'" + c.name + "'");
+  }
+  throw InputError(file, "--camera",
+                   "no camera '" + options.camera + "' in its mesh files (" +
+                       (names.empty() ? "they have none" : "they have " + names) + ")");
+}
+
+// A mesh or point-cloud file on its own: its geometry, materials, lights and camera, a 64^3 grid
+// fitted to it, the camera on +z looking at its centre when the file has none, and the default
+// lights when nothing in it emits light.
+Scene loadBareFile(const std::string& path, const SceneLoadOptions& options) {
   Scene scene;
   scene.file = path;
   requireInputFile(path, "", "mesh file");
+  MeshFileExtras extras;
   if (isPointCloudFile(path)) {
     importPointCloud(scene, path, glm::dmat4(1.0), defaultMaterial(scene), {});
   } else {
-    importMeshFile(scene, path, glm::dmat4(1.0), std::nullopt);
+    extras = importMeshFile(scene, path, glm::dmat4(1.0), std::nullopt);
   }
   validateGeometry(scene);
   scene.grid = fitGrid(scene.bounds(), 64);
   checkGrid(scene, path);
   const auto [lo, hi] = scene.bounds();
-  if (lo.x <= hi.x) {  // look at the mesh from +z
+  if (const std::optional<Camera> camera = chosenCamera(path, extras.cameras, options)) {
+    scene.camera = *camera;
+  } else if (lo.x <= hi.x) {  // look at the mesh from +z
     scene.camera.lookAt = 0.5 * (lo + hi);
     scene.camera.position = scene.camera.lookAt + glm::dvec3(0.0, 0.0, 2.0 * scene.grid.size);
   }
+  scene.lights = extras.lights;
+  if (scene.unlit()) addDefaultLights(scene);
   estimatePointCloudProperties(scene, std::vector<PointCloudOptions>(scene.pointClouds.size()));
   return scene;
 }
@@ -408,10 +427,12 @@ void readMaterials(const Field& root, Scene& scene) {
 }
 
 // Each mesh file with its transform and material; a material of the file whose name matches one
-// of the scene file's (the first `namedMaterials`) takes the scene file's values.
-void readMeshes(const Field& root, Scene& scene, size_t namedMaterials) {
+// of the scene file's (the first `namedMaterials`) takes the scene file's values. Returns the
+// files' lights and cameras, in the order of the files.
+MeshFileExtras readMeshes(const Field& root, Scene& scene, size_t namedMaterials) {
+  MeshFileExtras extras;
   if (!root.has("meshes") && !root.has("point_clouds")) root.at("meshes");  // names what is missing
-  if (!root.has("meshes")) return;
+  if (!root.has("meshes")) return extras;
   const Field meshes = root.at("meshes");
   if (!meshes.value.is_array()) meshes.fail("must be an array");
   for (size_t i = 0; i < meshes.value.size(); ++i) {
@@ -428,12 +449,15 @@ void readMeshes(const Field& root, Scene& scene, size_t namedMaterials) {
     const glm::dmat4 transform =
         m.has("transform") ? readTransform(m.at("transform")) : glm::dmat4(1.0);
     const size_t before = scene.materials.size();
-    importMeshFile(scene, meshPath.string(), transform, material);
+    MeshFileExtras carried = importMeshFile(scene, meshPath.string(), transform, material);
     for (size_t k = before; k < scene.materials.size(); ++k)
       for (size_t j = 0; j < namedMaterials; ++j)
         if (scene.materials[k].name == scene.materials[j].name)
           scene.materials[k] = scene.materials[j];
+    extras.lights.insert(extras.lights.end(), carried.lights.begin(), carried.lights.end());
+    extras.cameras.insert(extras.cameras.end(), carried.cameras.begin(), carried.cameras.end());
   }
+  return extras;
 }
 
 // Calls read(element) for each element of the array `key`, if the scene file has it.
@@ -472,8 +496,8 @@ void readGrid(const Field& root, Scene& scene) {
 
 }  // namespace
 
-Scene loadScene(const std::string& path) {
-  if (fs::path(path).extension().string() != ".json") return loadBareFile(path);
+Scene loadScene(const std::string& path, const SceneLoadOptions& options) {
+  if (fs::path(path).extension().string() != ".json") return loadBareFile(path, options);
   const json doc = parseSceneFile(path);
   Scene scene;
   scene.file = path;
@@ -482,13 +506,20 @@ Scene loadScene(const std::string& path) {
                   "settings", "description"});
   readMaterials(root, scene);
   const size_t namedMaterials = scene.materials.size();
-  readMeshes(root, scene, namedMaterials);
+  const MeshFileExtras extras = readMeshes(root, scene, namedMaterials);
   std::vector<PointCloudOptions> cloudOptions;
   forEachOf(root, "point_clouds", [&](const Field& cloud) {
     cloudOptions.push_back(readPointCloud(cloud, scene, namedMaterials));
   });
-  forEachOf(root, "lights", [&](const Field& light) { scene.lights.push_back(readLight(light)); });
+  // The scene file's lights and camera replace its mesh files' (docs/scene-format.md, "glTF").
+  if (root.has("lights"))
+    forEachOf(root, "lights",
+              [&](const Field& light) { scene.lights.push_back(readLight(light)); });
+  else
+    scene.lights = extras.lights;
+  const std::optional<Camera> fileCamera = chosenCamera(path, extras.cameras, options);
   if (root.has("camera")) scene.camera = readCamera(root.at("camera"));
+  if (fileCamera && (!options.camera.empty() || !root.has("camera"))) scene.camera = *fileCamera;
   if (root.has("background")) scene.background = root.at("background").color(0.0, 1e9);
   if (root.has("settings")) scene.settings = readSettings(root.at("settings"));
   validateGeometry(scene);

@@ -12,8 +12,14 @@
 
 namespace voxgi {
 
+struct SceneLoadOptions {
+  // A camera of the scene's mesh files by name (its glTF node's, or the camera's own); empty: the
+  // scene file's "camera", else the first camera of its mesh files, else the default.
+  std::string camera;
+};
+
 // Throws InputError naming the file and field for anything malformed.
-Scene loadScene(const std::string& path);
+Scene loadScene(const std::string& path, const SceneLoadOptions& options = {});
 
 // Checks a grid resolution (power of two in [1, kMaxResolution]); throws InputError(file, field).
 int readResolution(const std::string& file, const std::string& field, int64_t n);
@@ -33,11 +39,25 @@ void checkGrid(const Scene& scene, const std::string& source);
 // camera's aspect ratio.
 void setImageWidth(Scene& scene, int width, const std::string& source);
 
+// A camera of a mesh file, named by its node (or the camera's own name when the node has none).
+struct FileCamera {
+  std::string name;
+  Camera camera;
+};
+
+// What a mesh file carries besides triangles and materials: a glTF file's KHR_lights_punctual
+// lights and perspective cameras, in world space (none from OBJ and PLY).
+struct MeshFileExtras {
+  std::vector<Light> lights;
+  std::vector<FileCamera> cameras;
+};
+
 // Appends the triangles of a mesh file to `scene`, transformed by `transform`. Materials come from
-// the file unless `materialOverride` names one of scene.materials. Throws InputError; call
-// validateGeometry afterwards (it rejects NaN/Inf vertices and bad materials).
-void importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& transform,
-                    const std::optional<uint32_t>& materialOverride);
+// the file unless `materialOverride` names one of scene.materials. Returns the file's lights and
+// cameras, transformed the same way. Throws InputError; call validateGeometry afterwards (it
+// rejects NaN/Inf vertices and bad materials).
+MeshFileExtras importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& transform,
+                              const std::optional<uint32_t>& materialOverride);
 
 // How a point cloud of the scene file is read (docs/scene-format.md, "point_clouds").
 struct PointCloudOptions {
@@ -53,6 +73,15 @@ struct PointCloudOptions {
 void importPointCloud(Scene& scene, const std::string& path, const glm::dmat4& transform,
                       uint32_t material, const PointCloudOptions& options);
 void estimatePointCloudProperties(Scene& scene, const std::vector<PointCloudOptions>& options);
+
+// The material "default" (albedo 0.8) of `scene`, added on first use: for meshes and clouds whose
+// file gives them none.
+uint32_t defaultMaterial(Scene& scene);
+
+// Lights a scene that has none of its own (a bare mesh or cloud, Scene::unlit) with a key and a
+// fill directional light placed from its camera, and says so in Scene::defaultLightsNote
+// (docs/scene-format.md, "Default lights").
+void addDefaultLights(Scene& scene);
 
 // Checks that every vertex and index of `scene` is usable; throws InputError naming the mesh.
 void validateGeometry(const Scene& scene);

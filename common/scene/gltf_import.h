@@ -1,0 +1,23 @@
+// glTF 2.0 files (.gltf, .glb): their triangles, materials, lights and cameras as the file's
+// default scene places them (docs/scene-format.md, "glTF").
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "common/scene.h"
+#include "common/scene/scene_load.h"
+
+namespace voxgi {
+
+// Appends the triangles of `path` (its JSON `doc`, checked by checkGltf) to `scene`, each
+// primitive a Mesh, placed by `transform` times its node's; materials from the file unless
+// `materialOverride`. Returns the file's lights and cameras. Throws InputError.
+MeshFileExtras importGltf(Scene& scene, const std::string& path, const nlohmann::json& doc,
+                          const glm::dmat4& transform,
+                          const std::optional<uint32_t>& materialOverride);
+
+}  // namespace voxgi
