@@ -297,6 +297,43 @@ TEST(Cli, BareModelIsLitByTheDefaultLights) {
   EXPECT_NE(plan.output.find("  lights: "), std::string::npos) << plan.output;
 }
 
+// Every OBJ, PLY, glTF and GLB file of Debian's assimp-testmodels (Assimp's own corpus of real
+// model files) renders lit, or is refused with exit 2 and one line naming the file.
+TEST(Cli, AssimpTestModelsRenderLitOrAreRefused) {
+  const std::filesystem::path root = "/usr/share/assimp/models";
+  if (!std::filesystem::is_directory(root))
+    GTEST_SKIP() << root << " is absent: apt-get install assimp-testmodels";
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+    std::string ext = entry.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    if (entry.is_regular_file() &&
+        (ext == ".obj" || ext == ".ply" || ext == ".gltf" || ext == ".glb"))
+      files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  EXPECT_GE(files.size(), 80u);
+  const std::string out = testTempDir() + "assimp_model.exr";
+  int rendered = 0;
+  for (const std::string& file : files) {
+    const std::string quoted = "'" + file + "'";  // some names have spaces
+    const CommandResult r = voxgi("render " + quoted +
+                                  " --technique vct --backend cpu"
+                                  " --resolution 16 --image 32 --out " +
+                                  out);
+    if (r.code == 0) {
+      ++rendered;
+      EXPECT_GT(imageMean(readExr(out)), 0.0) << file << "\n" << r.output;
+    } else {
+      EXPECT_EQ(r.code, 2) << file << "\n" << r.output;
+      EXPECT_EQ(r.output.rfind("voxgi: " + file + ":", 0), 0u) << r.output;
+      EXPECT_EQ(std::count(r.output.begin(), r.output.end(), '\n'), 1) << r.output;
+    }
+  }
+  EXPECT_GT(rendered, 0);
+}
+
 TEST(Cli, RenderHelpListsEveryParameterWithItsDefault) {
   const CommandResult r = voxgi("render --help");
   EXPECT_EQ(r.code, 0);

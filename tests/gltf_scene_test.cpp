@@ -52,7 +52,7 @@ std::string authoredGltf() {
                            {"attributes":{"POSITION":0},"material":0}]},
             {"primitives":[{"attributes":{"POSITION":0},"material":1},
                            {"attributes":{"POSITION":0},"material":3,"mode":5}]}],)") +
-                                           kTriangle + "}");
+                                        kTriangle + "}");
 }
 
 const Material& materialNamed(const Scene& s, const std::string& name) {
@@ -94,7 +94,7 @@ TEST(GltfScene, MaterialsMapMetallicRoughnessOntoLambertAndPhong) {
   EXPECT_EQ(s.materials[s.meshes[1].material].name, "materials[3]");
   EXPECT_EQ(s.materials[s.meshes[2].material].name, "metal");
   EXPECT_EQ(s.materials[s.meshes[3].material].name, "lambert");
-  EXPECT_EQ(s.meshes[1].triangles.size(), 1u);  // a strip of 3 vertices
+  EXPECT_EQ(s.meshes[1].triangles.size(), 1u);                  // a strip of 3 vertices
   expectVec(s.meshes[0].positions[1], {12.0 + 2.0, 4.0, 6.0});  // (1, 0, 0) in the bulb's node
 }
 
@@ -114,8 +114,7 @@ TEST(GltfScene, LightsInRadiometricUnitsPlacedByTheirNodes) {
   EXPECT_EQ(spot.type, Light::Type::spot);
   expectVec(spot.direction, {0.0, -1.0, 0.0}, 1e-7);
   expectVec(spot.position, {0.0, 4.0, 0.0}, 1e-7);
-  EXPECT_NEAR(spot.spotAngleDeg, 2.0 * std::acos(1.0 - 0.5 / 3.0) * 180.0 / std::numbers::pi,
-              1e-4);
+  EXPECT_NEAR(spot.spotAngleDeg, 2.0 * std::acos(1.0 - 0.5 / 3.0) * 180.0 / std::numbers::pi, 1e-4);
   expectVec(spot.intensity, glm::dvec3(2.0), 1e-6);
   // 1366 lux is an irradiance of 2 W/m^2, travelling along the node's -z.
   const Light& sun = s.lights[2];
@@ -152,7 +151,8 @@ TEST(GltfScene, SceneFileMovesOrReplacesTheFilesLightsAndCamera) {
   authoredGltf();
   const auto load = [](const std::string& extra, const SceneLoadOptions& options = {}) {
     return loadScene(writeTemp("with_gltf.json", R"({"meshes": [{"file": "authored.gltf",
-      "transform": {"translate": [0, 0, -100]}}])" + extra + "}"),
+      "transform": {"translate": [0, 0, -100]}}])" + extra +
+                                                     "}"),
                      options);
   };
   const Scene moved = load("");
@@ -170,10 +170,10 @@ TEST(GltfScene, SceneFileMovesOrReplacesTheFilesLightsAndCamera) {
 }
 
 TEST(GltfScene, BareModelWithoutLightGetsTheDefaultLights) {
-  const std::string gltf = writeTemp(
-      "bare.gltf", std::string(R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],
+  const std::string gltf =
+      writeTemp("bare.gltf", std::string(R"({"asset":{"version":"2.0"},"scenes":[{"nodes":[0]}],
     "nodes":[{"mesh":0}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],)") +
-                       kTriangle + "}");
+                                 kTriangle + "}");
   for (const std::string& file : {gltf, sourcePath("scenes/bunny.obj")}) {
     const Scene s = loadScene(file);
     EXPECT_FALSE(s.unlit()) << file;
@@ -206,8 +206,9 @@ TEST(GltfScene, BadFieldsAreNamed) {
     }
     return std::string();
   };
-  EXPECT_NE(errorOf(R"({"asset":{"version":"1.0"},"buffers":{}})").find("glTF 1.0 is not supported"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(R"({"asset":{"version":"1.0"},"buffers":{}})").find("glTF 1.0 is not supported"),
+      std::string::npos);
   EXPECT_NE(errorOf(R"({"buffers":{}})").find("asset.version: glTF 1.0 is not supported"),
             std::string::npos);
   const std::string head =
@@ -235,7 +236,8 @@ TEST(GltfScene, MetallicRoughnessConservesEnergy) {
   for (float metallic : {0.0f, 0.3f, 1.0f})
     for (float base : {0.0f, 0.5f, 1.0f})
       for (float f0 : {0.0f, 0.04f, 1.0f}) {
-        const Material m = metallicRoughnessMaterial(glm::vec3(base), metallic, 0.5f, glm::vec3(f0));
+        const Material m =
+            metallicRoughnessMaterial(glm::vec3(base), metallic, 0.5f, glm::vec3(f0));
         EXPECT_LE(m.albedo.x + m.specular.x, 1.0f + 1e-6f) << metallic << " " << base << " " << f0;
       }
   EXPECT_EQ(metallicRoughnessMaterial(glm::vec3(1), 1, 0, glm::vec3(0.04f)).shininess, 1e6f);

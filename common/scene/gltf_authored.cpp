@@ -37,7 +37,9 @@ struct GltfValue {
     if (!value->is_array()) fail("must be an array");
     return value->size();
   }
-  GltfValue at(size_t i) const { return {file, &value->at(i), path + "[" + std::to_string(i) + "]"}; }
+  GltfValue at(size_t i) const {
+    return {file, &value->at(i), path + "[" + std::to_string(i) + "]"};
+  }
   double number(double fallback, double lo, double hi) const {
     if (value == nullptr) return fallback;
     if (!value->is_number()) fail("must be a number");
@@ -85,16 +87,19 @@ Material gltfMaterial(const GltfValue& m, size_t i) {
       specular.member("specularColorFactor").numbers<3>(glm::dvec3(1.0), 0.0, kGltfHuge);
   // KHR_materials_ior (1.5 by default, F0 = 0.04; 0 stands for infinity, a reflectance of 1) and
   // KHR_materials_specular: min(F0(ior) * specularColorFactor, 1) * specularFactor.
-  const double ior = extensions.member("KHR_materials_ior").member("ior").number(1.5, 0.0, kGltfHuge);
-  if (ior > 0.0 && ior < 1.0) extensions.member("KHR_materials_ior").member("ior").fail("must be 0 or at least 1");
+  const double ior =
+      extensions.member("KHR_materials_ior").member("ior").number(1.5, 0.0, kGltfHuge);
+  if (ior > 0.0 && ior < 1.0)
+    extensions.member("KHR_materials_ior").member("ior").fail("must be 0 or at least 1");
   const double f0Ior = ior == 0.0 ? 1.0 : ((ior - 1.0) / (ior + 1.0)) * ((ior - 1.0) / (ior + 1.0));
   const glm::dvec3 f0 = glm::min(f0Ior * specularColor, 1.0) * specularFactor;
-  Material out = metallicRoughnessMaterial(glm::vec3(base), float(metallic), float(roughness),
-                                           glm::vec3(f0));
+  Material out =
+      metallicRoughnessMaterial(glm::vec3(base), float(metallic), float(roughness), glm::vec3(f0));
   const double strength = extensions.member("KHR_materials_emissive_strength")
                               .member("emissiveStrength")
                               .number(1.0, 0.0, kGltfHuge);
-  out.emission = glm::vec3(strength * m.member("emissiveFactor").numbers<3>(glm::dvec3(0.0), 0.0, 1.0));
+  out.emission =
+      glm::vec3(strength * m.member("emissiveFactor").numbers<3>(glm::dvec3(0.0), 0.0, 1.0));
   out.name = m.member("name").string();
   if (out.name.empty()) out.name = "materials[" + std::to_string(i) + "]";
   return out;
@@ -166,10 +171,12 @@ glm::dmat4 nodeTransform(const GltfValue& node) {
   if (matrix.present()) {
     if (matrix.size() != 16) matrix.fail("must be an array of 16 numbers");
     glm::dmat4 m;
-    for (int i = 0; i < 16; ++i) glm::value_ptr(m)[i] = matrix.at(size_t(i)).number(0, -kGltfHuge, kGltfHuge);
+    for (int i = 0; i < 16; ++i)
+      glm::value_ptr(m)[i] = matrix.at(size_t(i)).number(0, -kGltfHuge, kGltfHuge);
     return m;  // column-major in both glTF and glm
   }
-  const glm::dvec3 t = node.member("translation").numbers<3>(glm::dvec3(0.0), -kGltfHuge, kGltfHuge);
+  const glm::dvec3 t =
+      node.member("translation").numbers<3>(glm::dvec3(0.0), -kGltfHuge, kGltfHuge);
   const glm::dvec4 r = node.member("rotation").numbers<4>(glm::dvec4(0, 0, 0, 1), -1.0, 1.0);
   const glm::dvec3 s = node.member("scale").numbers<3>(glm::dvec3(1.0), -kGltfHuge, kGltfHuge);
   const glm::dquat q(r.w, r.x, r.y, r.z);  // glTF stores x, y, z, w; glm takes w first
@@ -230,7 +237,8 @@ GltfAuthored readGltfAuthored(const std::string& path, const json& doc,
   };
   std::vector<Item> stack;
   const GltfValue roots = scenes.at(scene).member("nodes");
-  for (size_t i = roots.size(); i-- > 0;) stack.push_back({roots.at(i).index(nodes.size()), transform});
+  for (size_t i = roots.size(); i-- > 0;)
+    stack.push_back({roots.at(i).index(nodes.size()), transform});
   std::vector<bool> visited(nodes.size(), false);
   while (!stack.empty()) {
     const Item item = stack.back();
@@ -240,7 +248,8 @@ GltfAuthored readGltfAuthored(const std::string& path, const json& doc,
     visited[item.node] = true;
     const glm::dmat4 toWorld = item.parent * nodeTransform(node);
     const GltfValue light = node.member("extensions").member("KHR_lights_punctual").member("light");
-    if (light.present()) out.extras.lights.push_back(gltfLight(lights.at(light.index(lights.size())), toWorld));
+    if (light.present())
+      out.extras.lights.push_back(gltfLight(lights.at(light.index(lights.size())), toWorld));
     const GltfValue mesh = node.member("mesh");
     if (mesh.present()) out.meshes.push_back({mesh.index(root.member("meshes").size()), toWorld});
     const GltfValue camera = node.member("camera");

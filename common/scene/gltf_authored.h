@@ -1,8 +1,9 @@
 // What a glTF 2.0 file says about its scene, read from the file's own JSON: materials
 // (metallic-roughness, KHR_materials_emissive_strength, KHR_materials_specular), and the meshes,
-// KHR_lights_punctual lights and perspective cameras its default scene's nodes place. Debian's Assimp 5.2.5 drops the emissive strength (an emitter reads
-// 17x too dim in a Blender export) and misreads cameras (a full field of view as a half angle, the
-// position counted twice), so voxgi takes none of these from Assimp (docs/scene-format.md, "glTF").
+// KHR_lights_punctual lights and perspective cameras its default scene's nodes place. Debian's
+// Assimp 5.2.5 drops the emissive strength (an emitter reads 17x too dim in a Blender export) and
+// misreads cameras (a full field of view as a half angle, the position counted twice), so voxgi
+// takes none of these from Assimp (docs/scene-format.md, "glTF").
 #pragma once
 
 #include <string>
@@ -23,9 +24,9 @@ struct GltfMeshInstance {
 };
 
 struct GltfAuthored {
-  std::vector<Material> materials;         // by the file's material index
-  std::vector<GltfMeshInstance> meshes;    // in the order the default scene's nodes instance them
-  MeshFileExtras extras;                   // lights and perspective cameras, in the same order
+  std::vector<Material> materials;       // by the file's material index
+  std::vector<GltfMeshInstance> meshes;  // in the order the default scene's nodes instance them
+  MeshFileExtras extras;                 // lights and perspective cameras, in the same order
 };
 
 // Reads `doc` (the JSON of `path`, checked by checkGltf) with every node placed by `transform`

@@ -56,7 +56,11 @@ uint64_t uriBytes(const std::string& path, const std::string& uri, const std::st
     return chars / 4 * 3;  // an upper bound; padding only makes it smaller
   }
   const std::filesystem::path file = std::filesystem::path(path).parent_path() / uri;
-  return requireInputFile(file.string(), field, "glTF buffer file");
+  try {
+    return requireInputFile(file.string(), "", "glTF buffer file");
+  } catch (const InputError& e) {  // named after the glTF file and its field, then the buffer's
+    throw InputError(path, field, e.what());
+  }
 }
 
 size_t componentBytes(uint64_t componentType) {

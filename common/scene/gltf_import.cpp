@@ -56,9 +56,7 @@ class AccessorReader {
     }
     base_ = data.data() + view.byteOffset + a.byteOffset;
   }
-  [[noreturn]] void fail(const std::string& reason) const {
-    throw InputError(field_, "", reason);
-  }
+  [[noreturn]] void fail(const std::string& reason) const { throw InputError(field_, "", reason); }
   const unsigned char* element(size_t i) const { return base_ + i * stride_; }
   // Component `c` of element `i` as an unsigned integer (UNSIGNED_BYTE, _SHORT or _INT).
   uint32_t index(size_t i) const {
@@ -162,12 +160,14 @@ Mesh primitiveMesh(const std::string& path, const tinygltf::Model& model, size_t
   }
   const size_t n = order.size();
   if (p.mode == TINYGLTF_MODE_TRIANGLES || p.mode == -1) {
-    for (size_t i = 0; i + 2 < n; i += 3) mesh.triangles.emplace_back(order[i], order[i + 1], order[i + 2]);
+    for (size_t i = 0; i + 2 < n; i += 3)
+      mesh.triangles.emplace_back(order[i], order[i + 1], order[i + 2]);
   } else if (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
     for (size_t i = 0; i + 2 < n; ++i)  // every other triangle reversed, keeping the winding
       mesh.triangles.emplace_back(order[i], order[i + 1 + (i & 1)], order[i + 2 - (i & 1)]);
   } else if (p.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
-    for (size_t i = 1; i + 1 < n; ++i) mesh.triangles.emplace_back(order[0], order[i], order[i + 1]);
+    for (size_t i = 1; i + 1 < n; ++i)
+      mesh.triangles.emplace_back(order[0], order[i], order[i + 1]);
   }
   return mesh;
 }
@@ -182,8 +182,9 @@ MeshFileExtras importGltf(Scene& scene, const std::string& path, const nlohmann:
   std::vector<std::optional<uint32_t>> materialOf(authored.materials.size());
   for (const GltfMeshInstance& instance : authored.meshes) {
     if (instance.mesh >= model.meshes.size())
-      throw InputError(path, "nodes", "a node names mesh " + std::to_string(instance.mesh) +
-                                          " of " + std::to_string(model.meshes.size()));
+      throw InputError(path, "nodes",
+                       "a node names mesh " + std::to_string(instance.mesh) + " of " +
+                           std::to_string(model.meshes.size()));
     for (size_t k = 0; k < model.meshes[instance.mesh].primitives.size(); ++k) {
       const int material = model.meshes[instance.mesh].primitives[k].material;
       const int mode = model.meshes[instance.mesh].primitives[k].mode;
@@ -203,8 +204,9 @@ MeshFileExtras importGltf(Scene& scene, const std::string& path, const nlohmann:
         }
         mesh.material = *index;
       } else {
-        throw InputError(path, "meshes[" + std::to_string(instance.mesh) + "].primitives[" +
-                                   std::to_string(k) + "].material",
+        throw InputError(path,
+                         "meshes[" + std::to_string(instance.mesh) + "].primitives[" +
+                             std::to_string(k) + "].material",
                          "names no material");
       }
       scene.meshes.push_back(std::move(mesh));

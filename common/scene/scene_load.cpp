@@ -375,7 +375,7 @@ std::optional<Camera> chosenCamera(const std::string& file, const std::vector<Fi
 }
 
 // A mesh or point-cloud file on its own: its geometry, materials, lights and camera, a 64^3 grid
-// fitted to it, the camera on +z looking at its centre when the file has none, and the default
+// fitted to it, a camera looking at its centre when the file has none, and the default
 // lights when nothing in it emits light.
 Scene loadBareFile(const std::string& path, const SceneLoadOptions& options) {
   Scene scene;
@@ -393,9 +393,12 @@ Scene loadBareFile(const std::string& path, const SceneLoadOptions& options) {
   const auto [lo, hi] = scene.bounds();
   if (const std::optional<Camera> camera = chosenCamera(path, extras.cameras, options)) {
     scene.camera = *camera;
-  } else if (lo.x <= hi.x) {  // look at the mesh from +z
+  } else if (lo.x <= hi.x) {
+    // A three-quarter view from the front (+z), right and above: it sees a model that is flat in
+    // any axis plane (one seen from +z alone is edge-on for the planes x or y = const).
     scene.camera.lookAt = 0.5 * (lo + hi);
-    scene.camera.position = scene.camera.lookAt + glm::dvec3(0.0, 0.0, 2.0 * scene.grid.size);
+    scene.camera.position =
+        scene.camera.lookAt + glm::normalize(glm::dvec3(1.0, 1.0, 2.0)) * (2.0 * scene.grid.size);
   }
   scene.lights = extras.lights;
   if (scene.unlit()) addDefaultLights(scene);
