@@ -2,6 +2,7 @@
 // computed by hand from the glTF 2.0 specification and its KHR_lights_punctual,
 // KHR_materials_emissive_strength and KHR_materials_specular extensions.
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 
 #include <gtest/gtest.h>
@@ -241,6 +242,49 @@ TEST(GltfScene, MetallicRoughnessConservesEnergy) {
         EXPECT_LE(m.albedo.x + m.specular.x, 1.0f + 1e-6f) << metallic << " " << base << " " << f0;
       }
   EXPECT_EQ(metallicRoughnessMaterial(glm::vec3(1), 1, 0, glm::vec3(0.04f)).shininess, 1e6f);
+}
+
+// The glTF Asset Generator's Mesh_PrimitiveMode cases (in Debian's assimp-testmodels): the same
+// unit square facing +z as a strip, a fan and triangles, each with and without indices. Every
+// triangle mode must give its area, 1, with every triangle wound towards +z; points and lines have
+// no triangles, so the file is refused.
+TEST(GltfScene, AssetGeneratorPrimitiveModes) {
+  const std::filesystem::path dir =
+      "/usr/share/assimp/models/glTF2/glTF-Asset-Generator/Mesh_PrimitiveMode";
+  if (!std::filesystem::is_directory(dir))
+    GTEST_SKIP() << dir << " is absent: apt-get install assimp-testmodels";
+  // Modes by file: 00-03 and 07-10 points and lines; 04/11 strip, 05/12 fan, 06/13-15 triangles.
+  for (int i = 0; i <= 15; ++i) {
+    const std::string file = (dir / ("Mesh_PrimitiveMode_" + std::string(i < 10 ? "0" : "") +
+                                     std::to_string(i) + ".gltf"))
+                                 .string();
+    const bool triangles = (i >= 4 && i <= 6) || i >= 11;
+    if (!triangles) {
+      EXPECT_THROW(loadScene(file), InputError) << file;
+      continue;
+    }
+    const Scene s = loadScene(file);
+    double area = 0.0;
+    for (const Mesh& m : s.meshes)
+      for (const glm::uvec3& t : m.triangles) {
+        const glm::dvec3 n =
+            glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]);
+        EXPECT_GT(n.z, 0.0) << file;
+        area += 0.5 * glm::length(n);
+      }
+    EXPECT_NEAR(area, 1.0, 1e-6) << file;
+  }
+}
+
+// An OBJ's emission (MTL Ke) makes it its own light: no default lights.
+TEST(GltfScene, ObjEmissionIsALight) {
+  writeTemp("glow.mtl", "newmtl glow\nKd 0.5 0.5 0.5\nKe 2 1 0.5\n");
+  const Scene s = loadScene(
+      writeTemp("glow.obj", "mtllib glow.mtl\nusemtl glow\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"));
+  expectVec(materialNamed(s, "glow").emission, {2.0, 1.0, 0.5}, 1e-7);
+  EXPECT_FALSE(s.unlit());
+  EXPECT_TRUE(s.lights.empty());
+  EXPECT_TRUE(s.defaultLightsNote.empty());
 }
 
 }  // namespace
