@@ -17,6 +17,13 @@ size_t Scene::pointCount() const {
   return n;
 }
 
+std::optional<Light::Type> lightType(std::string_view name) {
+  if (name == "point") return Light::Type::point;
+  if (name == "spot") return Light::Type::spot;
+  if (name == "directional") return Light::Type::directional;
+  return std::nullopt;
+}
+
 bool Scene::unlit() const {
   const auto emits = [](const glm::vec3& c) { return c.x > 0.0f || c.y > 0.0f || c.z > 0.0f; };
   if (emits(background)) return false;

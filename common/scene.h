@@ -5,6 +5,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -64,6 +65,10 @@ struct Light {
   bool castsShadows = true;
 };
 
+// A light type by its name in scene files and glTF ("point", "spot", "directional"); nullopt for
+// any other.
+std::optional<Light::Type> lightType(std::string_view name);
+
 struct Camera {
   glm::dvec3 position{0.0, 0.0, 5.0};
   glm::dvec3 lookAt{0.0};
@@ -84,9 +89,9 @@ struct Scene {
   // The file's "settings" as "key=value" (common/settings.h keys, already validated); applied
   // before a --preset and --set.
   std::vector<std::string> settings;
-  // Set when voxgi lit a bare file that has no light of its own (common/scene/default_lights.cpp):
-  // what it added, for `voxgi plan` and `render` to say.
-  std::string defaultLightsNote;
+  // Set when voxgi lit a bare file that has no light of its own (common/scene/default_lights.cpp),
+  // for `voxgi plan` and `render` to say so.
+  bool defaultLights = false;
 
   size_t triangleCount() const;
   // Nothing emits light: no light, no emissive material on a mesh or cloud, a black background.

@@ -102,7 +102,7 @@ TEST(GltfScene, MaterialsMapMetallicRoughnessOntoLambertAndPhong) {
 TEST(GltfScene, LightsInRadiometricUnitsPlacedByTheirNodes) {
   const Scene s = loadScene(authoredGltf());
   ASSERT_EQ(s.lights.size(), 3u);
-  EXPECT_TRUE(s.defaultLightsNote.empty());
+  EXPECT_FALSE(s.defaultLights);
   // 683 cd of colour (1, 0.5, 0.25) is (1, 0.5, 0.25) W/sr; the node is at parent * (1, 2, 3)
   // with the parent's translation 10 and scale 2.
   const Light& point = s.lights[0];
@@ -179,7 +179,7 @@ TEST(GltfScene, BareModelWithoutLightGetsTheDefaultLights) {
     const Scene s = loadScene(file);
     EXPECT_FALSE(s.unlit()) << file;
     ASSERT_EQ(s.lights.size(), 2u) << file;
-    EXPECT_FALSE(s.defaultLightsNote.empty());
+    EXPECT_TRUE(s.defaultLights);
     // The key light falls on the side the camera sees, from above.
     const glm::dvec3 view = s.camera.lookAt - s.camera.position;
     EXPECT_GT(glm::dot(s.lights[0].direction, view), 0.0);
@@ -195,7 +195,7 @@ TEST(GltfScene, ASceneFileWithoutLightIsUnlitAndStaysSo) {
   const Scene s = loadScene(writeTemp("dark.json", R"({"meshes": [{"file": "tri.obj"}]})"));
   EXPECT_TRUE(s.unlit());
   EXPECT_TRUE(s.lights.empty());
-  EXPECT_TRUE(s.defaultLightsNote.empty());
+  EXPECT_FALSE(s.defaultLights);
 }
 
 TEST(GltfScene, BadFieldsAreNamed) {
@@ -230,6 +230,29 @@ TEST(GltfScene, BadFieldsAreNamed) {
   EXPECT_NE(errorOf(head + R"("scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
       "materials":[{"emissiveFactor":[2,0,0]}]})")
                 .find("materials[0].emissiveFactor[0]: must be in [0, 1], got 2"),
+            std::string::npos);
+  // A file's lights and cameras meet the scene format's bounds, as a scene file's do.
+  const std::string lit = head + R"("scenes":[{"nodes":[0,1]}],"nodes":[{"mesh":0},
+      {"translation":[0,0,T],"extensions":{"KHR_lights_punctual":{"light":0}}}],
+      "extensions":{"KHR_lights_punctual":{"lights":[{"type":"point","intensity":I}]}}})";
+  const auto with = [&](const std::string& t, const std::string& i) {
+    std::string json = lit;
+    json.replace(json.find("T]"), 1, t);
+    json.replace(json.find(":I}"), 2, ":" + i);
+    return json;
+  };
+  EXPECT_EQ(errorOf(with("1", "683e12")), "");
+  EXPECT_NE(errorOf(with("1", "684e12"))
+                .find("extensions.KHR_lights_punctual.lights[0]: color x intensity / 683 must be "
+                      "at most 1e12"),
+            std::string::npos);
+  EXPECT_NE(errorOf(with("2e15", "1"))
+                .find("extensions.KHR_lights_punctual.lights[0]: its node places it beyond 1e15"),
+            std::string::npos);
+  EXPECT_NE(errorOf(head + R"("scenes":[{"nodes":[0,1]}],"nodes":[{"mesh":0},
+      {"translation":[0,0,-2e15],"camera":0}],
+      "cameras":[{"type":"perspective","perspective":{"yfov":0.5}}]})")
+                .find("cameras[0]: its node places it beyond 1e15"),
             std::string::npos);
 }
 
@@ -284,7 +307,7 @@ TEST(GltfScene, ObjEmissionIsALight) {
   expectVec(materialNamed(s, "glow").emission, {2.0, 1.0, 0.5}, 1e-7);
   EXPECT_FALSE(s.unlit());
   EXPECT_TRUE(s.lights.empty());
-  EXPECT_TRUE(s.defaultLightsNote.empty());
+  EXPECT_FALSE(s.defaultLights);
 }
 
 }  // namespace

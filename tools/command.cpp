@@ -56,8 +56,10 @@ Settings SceneOptions::settings(const Scene& s, bool inspect) const {
 }
 
 std::string lightingNote(const Scene& scene) {
-  if (!scene.defaultLightsNote.empty())
-    return printable(scene.file) + ": " + scene.defaultLightsNote;
+  if (scene.defaultLights)
+    return printable(scene.file) +
+           ": nothing in the file emits light: lit by voxgi's default key and fill lights "
+           "(docs/scene-format.md, \"Default lights\")";
   if (scene.unlit())
     return "warning: " + printable(scene.file) +
            ": nothing emits light (no light, no emissive material, a black background), so the "

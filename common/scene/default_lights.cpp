@@ -23,9 +23,7 @@ void addDefaultLights(Scene& scene) {
   fill.intensity = glm::vec3(float(0.25 * std::numbers::pi));
   fill.castsShadows = false;
   scene.lights = {key, fill};
-  scene.defaultLightsNote =
-      "nothing in the file emits light: lit by voxgi's default key and fill lights "
-      "(docs/scene-format.md, \"Default lights\")";
+  scene.defaultLights = true;
 }
 
 }  // namespace voxgi

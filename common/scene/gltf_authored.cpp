@@ -105,21 +105,27 @@ Material gltfMaterial(const GltfValue& m, size_t i) {
   return out;
 }
 
+// Where a node puts a light or camera: within voxgi's bound on positions (docs/scene-format.md).
+glm::dvec3 placedPoint(const GltfValue& what, const glm::dmat4& toWorld) {
+  const glm::dvec3 p(toWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+  if (!(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= kMaxCoordinate))
+    what.fail("its node places it beyond 1e15 of the origin (after the scene's transform)");
+  return p;
+}
+
 Light gltfLight(const GltfValue& l, const glm::dmat4& toWorld) {
   Light out;
   const std::string type = l.member("type").string();
-  if (type == "point")
-    out.type = Light::Type::point;
-  else if (type == "spot")
-    out.type = Light::Type::spot;
-  else if (type == "directional")
-    out.type = Light::Type::directional;
-  else
-    l.member("type").fail("must be point, spot or directional, got '" + type + "'");
+  const std::optional<Light::Type> kind = lightType(type);
+  if (!kind) l.member("type").fail("must be point, spot or directional, got '" + type + "'");
+  out.type = *kind;
   const glm::dvec3 color = l.member("color").numbers<3>(glm::dvec3(1.0), 0.0, kGltfHuge);
   const double intensity = l.member("intensity").number(1.0, 0.0, kGltfHuge);
-  out.intensity = glm::vec3(color * intensity / kLumensPerWatt);
-  out.position = glm::dvec3(toWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+  const glm::dvec3 radiometric = color * intensity / kLumensPerWatt;
+  if (std::max({radiometric.x, radiometric.y, radiometric.z}) > kMaxLightIntensity)
+    l.fail("color x intensity / 683 must be at most 1e12 (voxgi's bound on a light's intensity)");
+  out.intensity = glm::vec3(radiometric);
+  out.position = placedPoint(l, toWorld);
   // A light shines along its node's -z.
   const glm::dvec3 axis = glm::dvec3(toWorld * glm::dvec4(0.0, 0.0, -1.0, 0.0));
   if (!(glm::length(axis) > 0.0)) l.fail("its node's transform has no -z axis (scale 0)");
@@ -153,7 +159,7 @@ std::optional<Camera> gltfCamera(const GltfValue& c, const glm::dmat4& toWorld) 
   const double aspect = p.member("aspectRatio").number(1.0, 1.0 / 16384.0, 16384.0);
   out.width = 256;
   out.height = int(std::clamp(std::lround(256.0 / aspect), 1l, 16384l));
-  out.position = glm::dvec3(toWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+  out.position = placedPoint(c, toWorld);
   const glm::dvec3 forward = glm::dvec3(toWorld * glm::dvec4(0.0, 0.0, -1.0, 0.0));
   const glm::dvec3 up = glm::dvec3(toWorld * glm::dvec4(0.0, 1.0, 0.0, 0.0));
   const double f = glm::length(forward), u = glm::length(up);

@@ -209,8 +209,8 @@ void checkAccessors(const std::string& path, const json& doc, uint64_t fileBytes
 
 }  // namespace
 
-nlohmann::json checkGltf(const std::string& path) {
-  const std::string bytes = readInputFile(path, "", "glTF file");
+GltfFile checkGltf(const std::string& path) {
+  std::string bytes = readInputFile(path, "", "glTF file");
   const GltfContainer container = readContainer(path, bytes);
   json doc;
   try {
@@ -222,7 +222,7 @@ nlohmann::json checkGltf(const std::string& path) {
   checkVersion(path, doc);
   const std::vector<uint64_t> bufferBytes = checkBuffers(path, doc, container);
   checkAccessors(path, doc, bytes.size(), checkViews(path, doc, bufferBytes));
-  return doc;
+  return {std::move(bytes), std::move(doc)};
 }
 
 }  // namespace voxgi

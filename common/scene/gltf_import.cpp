@@ -4,7 +4,7 @@
 // happens to load them, so its material indices cannot be matched with the file's.
 #include <cstring>
 #include <filesystem>
-#include <fstream>
+#include <limits>
 #include <string_view>
 
 #include "common/scene/tinygltf.h"
@@ -101,7 +101,11 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
   }
 }
 
-tinygltf::Model loadModel(const std::string& path) {
+// The model tinygltf parses from the checked bytes; external buffers are read through voxgi's
+// file access, next to the glTF file.
+tinygltf::Model loadModel(const std::string& path, const std::string& bytes) {
+  if (bytes.size() > std::numeric_limits<unsigned int>::max())
+    throw InputError(path, "", "larger than 4 GiB, tinygltf's limit");
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({[](const std::string& file, void*) {
                            std::error_code ec;
@@ -114,10 +118,13 @@ tinygltf::Model loadModel(const std::string& path) {
   loader.SetImageLoader(keepImageUndecoded, nullptr);
   tinygltf::Model model;
   std::string err, warn;
-  std::string head(4, '\0');
-  std::ifstream(path, std::ios::binary).read(head.data(), 4);
-  const bool ok = head == "glTF" ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                                 : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+  const std::string dir = std::filesystem::path(path).parent_path().string();
+  const auto length = static_cast<unsigned int>(bytes.size());
+  const bool ok = bytes.starts_with("glTF")
+                      ? loader.LoadBinaryFromMemory(
+                            &model, &err, &warn,
+                            reinterpret_cast<const unsigned char*>(bytes.data()), length, dir)
+                      : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), length, dir);
   if (!ok) {
     const std::string first = err.substr(0, err.find('\n'));
     throw InputError(path, "", "cannot import: " + (first.empty() ? "tinygltf failed" : first));
@@ -174,11 +181,11 @@ Mesh primitiveMesh(const std::string& path, const tinygltf::Model& model, size_t
 
 }  // namespace
 
-MeshFileExtras importGltf(Scene& scene, const std::string& path, const nlohmann::json& doc,
+MeshFileExtras importGltf(Scene& scene, const std::string& path, const GltfFile& file,
                           const glm::dmat4& transform,
                           const std::optional<uint32_t>& materialOverride) {
-  const GltfAuthored authored = readGltfAuthored(path, doc, transform);
-  const tinygltf::Model model = loadModel(path);
+  const GltfAuthored authored = readGltfAuthored(path, file.json, transform);
+  const tinygltf::Model model = loadModel(path, file.bytes);
   std::vector<std::optional<uint32_t>> materialOf(authored.materials.size());
   for (const GltfMeshInstance& instance : authored.meshes) {
     if (instance.mesh >= model.meshes.size())

@@ -6,17 +6,17 @@
 #include <string>
 
 #include <glm/glm.hpp>
-#include <nlohmann/json.hpp>
 
 #include "common/scene.h"
+#include "common/scene/gltf_check.h"
 #include "common/scene/scene_load.h"
 
 namespace voxgi {
 
-// Appends the triangles of `path` (its JSON `doc`, checked by checkGltf) to `scene`, each
+// Appends the triangles of `path` (`file`, as checkGltf read it) to `scene`, each
 // primitive a Mesh, placed by `transform` times its node's; materials from the file unless
 // `materialOverride`. Returns the file's lights and cameras. Throws InputError.
-MeshFileExtras importGltf(Scene& scene, const std::string& path, const nlohmann::json& doc,
+MeshFileExtras importGltf(Scene& scene, const std::string& path, const GltfFile& file,
                           const glm::dmat4& transform,
                           const std::optional<uint32_t>& materialOverride);
 

@@ -57,9 +57,9 @@ glm::dmat4 toGlm(const aiMatrix4x4& m) {
 }
 
 // Assimp picks an importer by content whatever the extension, so a file must be what its name says
-// before Assimp sees it; a PLY is checked whole (common/scene/ply_check.h). Returns a glTF file's
-// JSON document.
-std::optional<nlohmann::json> checkMeshFileContent(const std::string& path) {
+// before Assimp sees it; a PLY is checked whole (common/scene/ply_check.h). Returns a glTF file as
+// checked.
+std::optional<GltfFile> checkMeshFileContent(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
   std::ifstream in(path, std::ios::binary);
@@ -167,7 +167,7 @@ void checkTriangles(const Scene& scene, const std::string& path, size_t meshesBe
 MeshFileExtras importMeshFile(Scene& scene, const std::string& path, const glm::dmat4& transform,
                               const std::optional<uint32_t>& materialOverride) {
   requireInputFile(path, "", "mesh file");
-  const std::optional<nlohmann::json> gltf = checkMeshFileContent(path);
+  const std::optional<GltfFile> gltf = checkMeshFileContent(path);
   const size_t meshesBefore = scene.meshes.size();
   MeshFileExtras extras;
   if (gltf)

@@ -21,7 +21,6 @@ namespace voxgi {
 namespace {
 
 // How far from the origin a light or the camera may be (as the grid's corner, checkGrid).
-constexpr double kMaxCoordinate = 1e15;
 
 using nlohmann::json;
 namespace fs = std::filesystem;
@@ -142,17 +141,12 @@ Light readLight(const Field& f) {
       {"type", "position", "direction", "intensity", "spot_angle_deg", "falloff", "casts_shadows"});
   Light l;
   const std::string type = f.at("type").string();
-  if (type == "point")
-    l.type = Light::Type::point;
-  else if (type == "spot")
-    l.type = Light::Type::spot;
-  else if (type == "directional")
-    l.type = Light::Type::directional;
-  else
-    f.at("type").fail("must be point, spot or directional, got '" + type + "'");
+  const std::optional<Light::Type> kind = lightType(type);
+  if (!kind) f.at("type").fail("must be point, spot or directional, got '" + type + "'");
+  l.type = *kind;
   if (l.type != Light::Type::directional) l.position = f.at("position").position();
   if (l.type != Light::Type::point) l.direction = f.at("direction").direction();
-  l.intensity = f.at("intensity").color(0.0, 1e12);
+  l.intensity = f.at("intensity").color(0.0, kMaxLightIntensity);
   if (f.has("spot_angle_deg"))
     l.spotAngleDeg = static_cast<float>(f.at("spot_angle_deg").number(1e-3, 179.9));
   if (f.has("casts_shadows")) l.castsShadows = f.at("casts_shadows").boolean();

@@ -12,6 +12,11 @@
 
 namespace voxgi {
 
+// Bounds of the scene format (docs/scene-format.md) that files other than the scene JSON meet too:
+// positions after their transform, and a light's intensity (W/sr or W/m^2).
+constexpr double kMaxCoordinate = 1e15;
+constexpr double kMaxLightIntensity = 1e12;
+
 struct SceneLoadOptions {
   // A camera of the scene's mesh files by name (its glTF node's, or the camera's own); empty: the
   // scene file's "camera", else the first camera of its mesh files, else the default.
@@ -79,7 +84,7 @@ void estimatePointCloudProperties(Scene& scene, const std::vector<PointCloudOpti
 uint32_t defaultMaterial(Scene& scene);
 
 // Lights a scene that has none of its own (a bare mesh or cloud, Scene::unlit) with a key and a
-// fill directional light placed from its camera, and says so in Scene::defaultLightsNote
+// fill directional light placed from its camera, and says so in Scene::defaultLights
 // (docs/scene-format.md, "Default lights").
 void addDefaultLights(Scene& scene);
 
