@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "common/grid.h"
+#include "common/texture.h"
 
 namespace voxgi {
 
@@ -20,6 +21,13 @@ struct Material {
   glm::vec3 specular{0.0f};  // specular colour, [0, 1]
   float shininess = 0.0f;    // Phong exponent, >= 0
   glm::vec3 emission{0.0f};  // emitted radiance, linear RGB, >= 0
+  // Textures (indices into Scene::textures, or shared::kNoTexture): the value at a point is the
+  // constant above times the texture there (docs/textures.md).
+  uint32_t albedoTexture = shared::kNoTexture;
+  uint32_t emissionTexture = shared::kNoTexture;
+  bool textured() const {
+    return albedoTexture != shared::kNoTexture || emissionTexture != shared::kNoTexture;
+  }
   bool emissive() const { return emission.x > 0.0f || emission.y > 0.0f || emission.z > 0.0f; }
   // Has a Phong lobe: a specular colour and a shininess above 0 (docs/path-tracer.md).
   bool glossy() const {
@@ -34,6 +42,12 @@ struct Mesh {
   std::vector<glm::dvec3> positions;
   std::vector<glm::uvec3> triangles;
   uint32_t material = 0;
+  // Texture coordinates per vertex, v = 0 at the image's first row (glTF's convention; OBJ's are
+  // flipped on import); empty: (0, 0) everywhere.
+  std::vector<glm::vec2> texcoords;
+  glm::vec2 texcoord(uint32_t vertex) const {
+    return texcoords.empty() ? glm::vec2(0.0f) : texcoords[vertex];
+  }
 };
 
 // A point cloud (docs/svo.md, "Point clouds"): world-space points with one material. Every point
@@ -80,6 +94,7 @@ struct Camera {
 struct Scene {
   std::string file;  // the file it was loaded from, for messages
   std::vector<Material> materials;
+  TexturePool textures;  // every image the materials use, decoded with its mip levels
   std::vector<Mesh> meshes;
   std::vector<PointCloud> pointClouds;
   std::vector<Light> lights;

@@ -50,7 +50,7 @@ TEST(Buffer, ShapesAndStageBytes) {
             4u * 4u * (64u + 6u * (8u + 1u)));
   scene.materials.push_back({});
   scene.materials[0].emission = glm::vec3(1.0f);
-  scene.meshes.push_back({"m", {glm::dvec3(0.0)}, {glm::uvec3(0u)}, 0});
+  scene.meshes.push_back({"m", {glm::dvec3(0.0)}, {glm::uvec3(0u)}, 0, {}});
   // The emission sum's fourth word is the emitting surfaces' weight (voxelize.emission).
   EXPECT_EQ(stageBufferBytes(StageId::common_voxelize, scene, vct.plan(scene, settings)),
             64u * 4u * (1 + 3 + 3 + 4 + 1 + 3 + 3 + 3));

@@ -6,6 +6,7 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
+#include "common/camera_geometry.h"
 #include "common/scene/scene_load.h"
 #include "tests/test_scenes.h"
 #include "validation/reference/path_trace.h"
@@ -311,6 +312,67 @@ TEST(PathTrace, CornellBoxErrorFallsAsOneOverSqrtSpp) {
   EXPECT_LT(e4 / e16, 2.7) << e4 << " " << e16;
   EXPECT_GT(e16 / e64, 1.5) << e16 << " " << e64;
   EXPECT_LT(e16 / e64, 2.7) << e16 << " " << e64;
+}
+
+}  // namespace
+}  // namespace voxgi::test
+
+namespace voxgi::test {
+namespace {
+
+// A textured plane y = 0 under a directional light of irradiance pi straight down: with no
+// bounce, each pixel is the albedo where its ray meets the plane, albedo(u, v) E / pi. The 2x2
+// texture's red rises with u and its green with v (clamped), so bilinear filtering is a known
+// function: red(u) = 0.25 + 0.5 clamp(2u - 1/2, 0, 1) in linear units, and the same for green.
+TEST(PathTrace, TexturedPlaneReflectsItsAlbedoAtEachHit) {
+  Scene scene = makeScene(quad(1, 0.0, {0.0, 0.0}, {1.0, 1.0}), unitGrid(8));
+  Mesh& mesh = scene.meshes[0];
+  for (const glm::dvec3& p : mesh.positions) mesh.texcoords.emplace_back(p.x, p.z);
+  // Codes whose linear values are 0.25 and 0.75 to within the table's rounding.
+  const uint32_t lo = srgbEncode(0.25f), hi = srgbEncode(0.75f);
+  const float a = srgbDecodeTable()[lo], b = srgbDecodeTable()[hi];
+  DecodedImage image{2, 2, {}};
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x) {
+      image.rgb.push_back(uint8_t(x ? hi : lo));
+      image.rgb.push_back(uint8_t(y ? hi : lo));
+      image.rgb.push_back(255);
+    }
+  scene.materials[0].albedo = glm::vec3(1.0f);
+  scene.materials[0].albedoTexture =
+      scene.textures.texture("ramp", shared::kWrapClamp, shared::kWrapClamp, [&] { return image; });
+  Light sun;
+  sun.type = Light::Type::directional;
+  sun.direction = {0.0, -1.0, 0.0};
+  sun.intensity = glm::vec3(std::numbers::pi_v<float>);
+  scene.lights.push_back(sun);
+  scene = withCamera(scene, {0.5, 1.0, 0.5}, {0.5, 0.0, 0.5}, {0.0, 0.0, 1.0}, 40.0, 16);
+  PathTraceOptions o;
+  o.spp = 64;
+  o.bounces = 0;
+  const auto r = pathTrace(scene, o);
+  const CameraRays cam = cameraRays(scene);
+  const auto ramp = [&](double t) { return a + (b - a) * std::clamp(2.0 * t - 0.5, 0.0, 1.0); };
+  int checked = 0;
+  for (int y = 0; y < cam.height; ++y)
+    for (int x = 0; x < cam.width; ++x) {
+      // The pixel centre's ray to the plane, in world units (the grid is [0, 1]^3, 8 voxels).
+      const glm::dvec3 d(cam.pixelDirection(x, y));
+      const glm::dvec3 hit = (glm::dvec3(cam.origin) - d * (double(cam.origin.y) / d.y)) / 8.0;
+      const glm::vec3& p = r.image.pixels[size_t(y * cam.width + x)];
+      ASSERT_NEAR(p.z, 1.0, 1e-5);
+      // A pixel's 64 jittered samples spread over 0.045 units: their mean is the ramp at its centre
+      // within 2e-3 where the ramp is linear, but not in a pixel that holds one of its kinks (u or
+      // v = 1/4 or 3/4): those average across it.
+      const auto nearKink = [](double t) {
+        return std::abs(t - 0.25) < 0.03 || std::abs(t - 0.75) < 0.03;
+      };
+      if (nearKink(hit.x) || nearKink(hit.z)) continue;
+      ASSERT_NEAR(p.x, ramp(hit.x), 2e-3) << x << "," << y;
+      ASSERT_NEAR(p.y, ramp(hit.z), 2e-3) << x << "," << y;
+      ++checked;
+    }
+  EXPECT_GT(checked, 150);
 }
 
 }  // namespace

@@ -105,6 +105,43 @@ Material gltfMaterial(const GltfValue& m, size_t i) {
   return out;
 }
 
+// A textureInfo (baseColorTexture, emissiveTexture): its texture, which must read TEXCOORD_0 (voxgi
+// keeps one set of texture coordinates per mesh).
+std::optional<size_t> textureInfo(const GltfValue& info, size_t textures) {
+  if (!info.present()) return std::nullopt;
+  if (info.member("texCoord").number(0.0, 0.0, kGltfHuge) != 0.0)
+    info.member("texCoord").fail("voxgi reads TEXCOORD_0 only");
+  return info.member("index").index(textures);
+}
+
+GltfMaterialTextures gltfMaterialTextures(const GltfValue& m, size_t textures) {
+  return {textureInfo(m.member("pbrMetallicRoughness").member("baseColorTexture"), textures),
+          textureInfo(m.member("emissiveTexture"), textures)};
+}
+
+// glTF's wrap modes (the GL enums) as texture_kernel.h's.
+uint32_t wrapMode(const GltfValue& v) {
+  const double mode = v.number(10497.0, 0.0, kGltfHuge);
+  if (mode == 10497.0) return shared::kWrapRepeat;
+  if (mode == 33071.0) return shared::kWrapClamp;
+  if (mode == 33648.0) return shared::kWrapMirror;
+  v.fail("must be 10497 (repeat), 33071 (clamp to edge) or 33648 (mirrored repeat)");
+}
+
+GltfTexture gltfTexture(const GltfValue& t, size_t images, const GltfValue& samplers) {
+  const GltfValue source = t.member("source");
+  if (!source.present())
+    t.fail("has no source image (voxgi reads PNG and JPEG images, no extension formats)");
+  GltfTexture out{source.index(images), shared::kWrapRepeat, shared::kWrapRepeat};
+  const GltfValue sampler = t.member("sampler");
+  if (sampler.present()) {
+    const GltfValue s = samplers.at(sampler.index(samplers.size()));
+    out.wrapS = wrapMode(s.member("wrapS"));
+    out.wrapT = wrapMode(s.member("wrapT"));
+  }
+  return out;
+}
+
 // Where a node puts a light or camera: within voxgi's bound on positions (docs/scene-format.md).
 glm::dvec3 placedPoint(const GltfValue& what, const glm::dmat4& toWorld) {
   const glm::dvec3 p(toWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
@@ -224,8 +261,14 @@ GltfAuthored readGltfAuthored(const std::string& path, const json& doc,
   }
   GltfAuthored out;
   const GltfValue materials = root.member("materials");
-  for (size_t i = 0; i < materials.size(); ++i)
+  const GltfValue textures = root.member("textures");
+  for (size_t i = 0; i < materials.size(); ++i) {
     out.materials.push_back(gltfMaterial(materials.at(i), i));
+    out.materialTextures.push_back(gltfMaterialTextures(materials.at(i), textures.size()));
+  }
+  for (size_t i = 0; i < textures.size(); ++i)
+    out.textures.push_back(
+        gltfTexture(textures.at(i), root.member("images").size(), root.member("samplers")));
 
   const GltfValue lights = root.member("extensions").member("KHR_lights_punctual").member("lights");
   const GltfValue cameras = root.member("cameras");

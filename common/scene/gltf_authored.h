@@ -6,6 +6,7 @@
 // takes none of these from Assimp (docs/scene-format.md, "glTF").
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,22 @@ struct GltfMeshInstance {
   glm::dmat4 toWorld;
 };
 
+// A glTF texture: its image (by the file's index) and its sampler's wrap modes.
+struct GltfTexture {
+  size_t image;
+  uint32_t wrapS, wrapT;  // shared::kWrapRepeat, ...
+};
+
+// The textures a material names (the file's texture indices), read through TEXCOORD_0.
+struct GltfMaterialTextures {
+  std::optional<size_t> albedo;    // pbrMetallicRoughness.baseColorTexture
+  std::optional<size_t> emission;  // emissiveTexture
+};
+
 struct GltfAuthored {
-  std::vector<Material> materials;       // by the file's material index
+  std::vector<Material> materials;                     // by the file's material index
+  std::vector<GltfMaterialTextures> materialTextures;  // the same
+  std::vector<GltfTexture> textures;                   // by the file's texture index
   std::vector<GltfMeshInstance> meshes;  // in the order the default scene's nodes instance them
   MeshFileExtras extras;                 // lights and perspective cameras, in the same order
 };

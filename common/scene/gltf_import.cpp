@@ -5,22 +5,28 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <string_view>
 
 #include "common/scene/tinygltf.h"
 
 #include "common/error.h"
 #include "common/io/input_file.h"
+#include "common/io/texture_read.h"
 #include "common/scene/gltf_authored.h"
 #include "common/scene/gltf_import.h"
 
 namespace voxgi {
 namespace {
 
-// Images are not decoded here: tinygltf would hand them to stb_image; textures are read by voxgi's
-// own image readers.
-bool keepImageUndecoded(tinygltf::Image*, const int, std::string*, std::string*, int, int,
-                        const unsigned char*, int, void*) {
+// The bytes of the images tinygltf read from a uri (a file next to the glTF, or a data: URI), by
+// image index; they are decoded by voxgi's texture readers, not by tinygltf's stb_image. An image
+// in a buffer view is read from the buffer (checked by checkGltf) when a material uses it.
+bool keepImageBytes(tinygltf::Image* image, const int index, std::string*, std::string*, int, int,
+                    const unsigned char* bytes, int size, void* images) {
+  if (image->bufferView < 0 && size > 0)
+    (*static_cast<std::map<int, std::string>*>(images))[index].assign(
+        reinterpret_cast<const char*>(bytes), size_t(size));
   return true;
 }
 
@@ -71,6 +77,22 @@ class AccessorReader {
     }
     fail("indices must be unsigned bytes, shorts or ints");
   }
+  // Element `i` as a texture coordinate: float, or normalized unsigned byte or short (glTF 2.0
+  // §3.7.2.1).
+  glm::vec2 texcoord(size_t i) const {
+    const unsigned char* p = element(i);
+    glm::vec2 uv;
+    for (int c = 0; c < 2; ++c) {
+      if (componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        std::memcpy(&uv[c], p + 4 * c, 4);
+      } else if (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+        uv[c] = float(p[c]) / 255.0f;
+      } else {
+        uv[c] = float(uint32_t(p[2 * c]) | uint32_t(p[2 * c + 1]) << 8) / 65535.0f;
+      }
+    }
+    return uv;
+  }
   glm::vec3 vec3(size_t i) const {
     float v[3];
     std::memcpy(v, element(i), sizeof v);  // glTF is little-endian, as are voxgi's targets
@@ -103,7 +125,8 @@ bool readWholeFile(std::vector<unsigned char>* out, std::string* err, const std:
 
 // The model tinygltf parses from the checked bytes; external buffers are read through voxgi's
 // file access, next to the glTF file.
-tinygltf::Model loadModel(const std::string& path, const std::string& bytes) {
+tinygltf::Model loadModel(const std::string& path, const std::string& bytes,
+                          std::map<int, std::string>& images) {
   if (bytes.size() > std::numeric_limits<unsigned int>::max())
     throw InputError(path, "", "larger than 4 GiB, tinygltf's limit");
   tinygltf::TinyGLTF loader;
@@ -115,7 +138,7 @@ tinygltf::Model loadModel(const std::string& path, const std::string& bytes) {
                          [](std::string*, const std::string&, const std::vector<unsigned char>&,
                             void*) { return false; },
                          nullptr});
-  loader.SetImageLoader(keepImageUndecoded, nullptr);
+  loader.SetImageLoader(keepImageBytes, &images);
   tinygltf::Model model;
   std::string err, warn;
   const std::string dir = std::filesystem::path(path).parent_path().string();
@@ -151,6 +174,20 @@ Mesh primitiveMesh(const std::string& path, const tinygltf::Model& model, size_t
     const glm::vec3 q = positions.vec3(v);  // NaN/Inf: validateGeometry rejects them
     mesh.positions.push_back(glm::dvec3(toWorld * glm::dvec4(glm::dvec3(q), 1.0)));
   }
+  const auto texcoord = p.attributes.find("TEXCOORD_0");
+  if (texcoord != p.attributes.end()) {
+    const AccessorReader uv(path, model, texcoord->second, where + " TEXCOORD_0");
+    const int type = uv.componentType;
+    if (uv.components != 2 ||
+        (type != TINYGLTF_COMPONENT_TYPE_FLOAT && type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+         type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT))
+      uv.fail("TEXCOORD_0 must be VEC2 of floats or normalized unsigned bytes or shorts");
+    if (uv.count != positions.count)
+      uv.fail(std::to_string(uv.count) + " texture coordinates for " +
+              std::to_string(positions.count) + " positions");
+    mesh.texcoords.reserve(uv.count);
+    for (size_t v = 0; v < uv.count; ++v) mesh.texcoords.push_back(uv.texcoord(v));
+  }
   std::vector<uint32_t> order;
   if (p.indices >= 0) {
     const AccessorReader indices(path, model, p.indices, where + " indices");
@@ -179,13 +216,43 @@ Mesh primitiveMesh(const std::string& path, const tinygltf::Model& model, size_t
   return mesh;
 }
 
+// The scene texture of the file's texture `index`: its image decoded on first use, from the bytes
+// tinygltf read or from its buffer view.
+uint32_t gltfTexture(Scene& scene, const std::string& path, const GltfAuthored& authored,
+                     const tinygltf::Model& model, const std::map<int, std::string>& images,
+                     size_t index) {
+  const GltfTexture& t = authored.textures[index];
+  const std::string field = "images[" + std::to_string(t.image) + "]";
+  return scene.textures.texture(path + ": " + field, t.wrapS, t.wrapT, [&] {
+    const tinygltf::Image& image = model.images.at(t.image);
+    if (image.bufferView >= 0) {
+      const tinygltf::BufferView& view = model.bufferViews.at(size_t(image.bufferView));
+      const std::vector<unsigned char>& data = model.buffers.at(size_t(view.buffer)).data;
+      if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
+        throw InputError(path, field, "its buffer view runs past its buffer");
+      return decodeTexture(
+          std::string_view(reinterpret_cast<const char*>(data.data()) + view.byteOffset,
+                           view.byteLength),
+          path, field);
+    }
+    const auto bytes = images.find(int(t.image));
+    if (bytes != images.end()) return decodeTexture(bytes->second, path, field);
+    // tinygltf only warns when it cannot read an image file: read it here for the error's sake.
+    if (image.uri.starts_with("data:")) throw InputError(path, field, "holds no image data");
+    return readTexture(
+        (std::filesystem::path(path).parent_path() / image.uri).lexically_normal().string(), path,
+        field);
+  });
+}
+
 }  // namespace
 
 MeshFileExtras importGltf(Scene& scene, const std::string& path, const GltfFile& file,
                           const glm::dmat4& transform,
                           const std::optional<uint32_t>& materialOverride) {
   const GltfAuthored authored = readGltfAuthored(path, file.json, transform);
-  const tinygltf::Model model = loadModel(path, file.bytes);
+  std::map<int, std::string> images;
+  const tinygltf::Model model = loadModel(path, file.bytes, images);
   std::vector<std::optional<uint32_t>> materialOf(authored.materials.size());
   for (const GltfMeshInstance& instance : authored.meshes) {
     if (instance.mesh >= model.meshes.size())
@@ -206,8 +273,15 @@ MeshFileExtras importGltf(Scene& scene, const std::string& path, const GltfFile&
         // another of the same name (glTF names need not be unique).
         std::optional<uint32_t>& index = materialOf[size_t(material)];
         if (!index) {
+          Material m = authored.materials[size_t(material)];
+          const GltfMaterialTextures& textures = authored.materialTextures[size_t(material)];
+          if (textures.albedo)
+            m.albedoTexture = gltfTexture(scene, path, authored, model, images, *textures.albedo);
+          if (textures.emission)
+            m.emissionTexture =
+                gltfTexture(scene, path, authored, model, images, *textures.emission);
           index = uint32_t(scene.materials.size());
-          scene.materials.push_back(authored.materials[size_t(material)]);
+          scene.materials.push_back(std::move(m));
         }
         mesh.material = *index;
       } else {

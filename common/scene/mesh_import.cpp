@@ -13,6 +13,7 @@
 
 #include "common/error.h"
 #include "common/io/input_file.h"
+#include "common/io/texture_read.h"
 #include "common/scene/gltf_check.h"
 #include "common/scene/gltf_import.h"
 #include "common/scene/ply_check.h"
@@ -40,6 +41,35 @@ Material convertMaterial(const aiMaterial& m) {
   float shininess = 0.0f;
   if (m.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS) out.shininess = shininess;
   return out;
+}
+
+// A sampler's wrap mode as Assimp reads it (OBJ's "-clamp on").
+uint32_t wrapMode(const aiMaterial& m, aiTextureType type, const char* key) {
+  int mode = aiTextureMapMode_Wrap;
+  m.Get(key, unsigned(type), 0, mode);
+  if (mode == aiTextureMapMode_Clamp || mode == aiTextureMapMode_Decal) return shared::kWrapClamp;
+  if (mode == aiTextureMapMode_Mirror) return shared::kWrapMirror;
+  return shared::kWrapRepeat;
+}
+
+// The texture of `type` (map_Kd, map_Ke) of an OBJ material, read from the file it names, next to
+// the model file; kNoTexture when the material has none. Files written on Windows name their
+// textures with backslashes (".\\skin.jpg" in Assimp's own spider.obj): where the name as written
+// is no file, its backslashes are read as separators.
+uint32_t assimpTexture(Scene& scene, const std::string& path, const aiMaterial& m,
+                       aiTextureType type, const Material& material) {
+  aiString file;
+  if (m.GetTexture(type, 0, &file) != AI_SUCCESS) return shared::kNoTexture;
+  const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+  std::string name = file.C_Str();
+  std::error_code ec;
+  if (!std::filesystem::exists(dir / name, ec)) std::replace(name.begin(), name.end(), '\\', '/');
+  const std::string image = (dir / name).lexically_normal().string();
+  const std::string field =
+      "material '" + material.name + "' " + (type == aiTextureType_DIFFUSE ? "map_Kd" : "map_Ke");
+  return scene.textures.texture(image, wrapMode(m, type, _AI_MATKEY_MAPPINGMODE_U_BASE),
+                                wrapMode(m, type, _AI_MATKEY_MAPPINGMODE_V_BASE),
+                                [&] { return readTexture(image, path, field); });
 }
 
 uint32_t internMaterial(Scene& scene, Material material) {
@@ -99,8 +129,16 @@ void importWithAssimp(Scene& scene, const std::string& path, const glm::dmat4& t
   if (ai->mRootNode == nullptr) throw InputError(path, "", "cannot import: no scene graph");
   std::vector<uint32_t> materialOf(ai->mNumMaterials);
   for (unsigned i = 0; i < ai->mNumMaterials; ++i)
-    materialOf[i] = materialOverride ? *materialOverride
-                                     : internMaterial(scene, convertMaterial(*ai->mMaterials[i]));
+    if (materialOverride) {
+      materialOf[i] = *materialOverride;
+    } else {
+      Material material = convertMaterial(*ai->mMaterials[i]);
+      material.albedoTexture =
+          assimpTexture(scene, path, *ai->mMaterials[i], aiTextureType_DIFFUSE, material);
+      material.emissionTexture =
+          assimpTexture(scene, path, *ai->mMaterials[i], aiTextureType_EMISSIVE, material);
+      materialOf[i] = internMaterial(scene, std::move(material));
+    }
 
   struct Item {
     const aiNode* node;
@@ -126,6 +164,10 @@ void importWithAssimp(Scene& scene, const std::string& path, const glm::dmat4& t
         const aiVector3D& p = am.mVertices[v];  // NaN/Inf: validateGeometry rejects them
         mesh.positions.push_back(glm::dvec3(item.toWorld * glm::dvec4(p.x, p.y, p.z, 1.0)));
       }
+      // OBJ's v points up from the image's last row; voxgi's, glTF's, down from its first.
+      if (am.HasTextureCoords(0))
+        for (unsigned v = 0; v < am.mNumVertices; ++v)
+          mesh.texcoords.emplace_back(am.mTextureCoords[0][v].x, 1.0f - am.mTextureCoords[0][v].y);
       for (unsigned f = 0; f < am.mNumFaces; ++f)
         if (am.mFaces[f].mNumIndices == 3)
           mesh.triangles.emplace_back(am.mFaces[f].mIndices[0], am.mFaces[f].mIndices[1],

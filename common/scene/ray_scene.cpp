@@ -90,6 +90,7 @@ RayScene::Hit RayScene::intersect(glm::vec3 o, glm::vec3 d) const {
   h.t = rh.ray.tfar;
   h.geometry = rh.hit.geomID;
   h.primitive = rh.hit.primID;
+  h.barycentric = {rh.hit.u, rh.hit.v};
   return h;
 }
 

@@ -33,6 +33,9 @@ class RayScene {
     bool found = false;
     float t = 0.0f;  // distance parameter along the ray direction
     unsigned geometry = 0, primitive = 0;
+    // Embree's barycentric coordinates of the hit on a triangle: the weights of its second and
+    // third vertices.
+    glm::vec2 barycentric{0.0f};
   };
   // The nearest triangle along o + t d, t > 0.
   Hit intersect(glm::vec3 o, glm::vec3 d) const;

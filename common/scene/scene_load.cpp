@@ -332,6 +332,15 @@ void validateGeometry(const Scene& scene) {
         fail("vertex " + std::to_string(v), "lies beyond " + Field::fmt(kMaxCoordinate) +
                                                 " of the origin (after the scene's transform)");
     }
+    if (!m.texcoords.empty() && m.texcoords.size() != m.positions.size())
+      fail("texture coordinates", std::to_string(m.texcoords.size()) + " for " +
+                                      std::to_string(m.positions.size()) + " vertices");
+    // Within kMaxTexcoord, interpolated coordinates stay finite and wrap without overflow.
+    for (size_t v = 0; v < m.texcoords.size(); ++v)
+      if (!(std::abs(m.texcoords[v].x) <= kMaxTexcoord &&
+            std::abs(m.texcoords[v].y) <= kMaxTexcoord))
+        fail("vertex " + std::to_string(v),
+             "texture coordinate is NaN, infinite or beyond " + Field::fmt(kMaxTexcoord));
     for (size_t t = 0; t < m.triangles.size(); ++t)
       for (int c = 0; c < 3; ++c)
         if (m.triangles[t][c] >= m.positions.size())

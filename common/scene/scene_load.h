@@ -16,6 +16,8 @@ namespace voxgi {
 // positions after their transform, and a light's intensity (W/sr or W/m^2).
 constexpr double kMaxCoordinate = 1e15;
 constexpr double kMaxLightIntensity = 1e12;
+// Texture coordinates: far beyond any authored tiling, small enough to interpolate in float.
+constexpr float kMaxTexcoord = 1e6f;
 
 struct SceneLoadOptions {
   // A camera of the scene's mesh files by name (its glTF node's, or the camera's own); empty: the

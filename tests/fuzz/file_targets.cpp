@@ -1,7 +1,9 @@
 // The fuzz targets that hand one file to one loader: a bare mesh file to loadScene (Assimp behind
-// voxgi's checks), an image to readImage (references, masks and compare's inputs).
+// voxgi's checks), an image to readImage (references, masks and compare's inputs), a texture to
+// readTexture and into a texture pool (its mip levels).
 #include "common/error.h"
 #include "common/io/image_io.h"
+#include "common/io/texture_read.h"
 #include "common/scene/scene_load.h"
 #include "tests/fuzz/fuzz_target.h"
 
@@ -25,6 +27,11 @@ void scene(const std::string& path) {
 void image(const std::string& path) {
   readImage(path);
 }
+void texture(const std::string& path) {
+  TexturePool pool;
+  pool.texture(path, shared::kWrapRepeat, shared::kWrapRepeat,
+               [&] { return readTexture(path, "fuzz input", "texture"); });
+}
 
 }  // namespace
 
@@ -39,6 +46,8 @@ VOXGI_FILE_TARGET(mesh_gltf, "input.gltf", scene)
 VOXGI_FILE_TARGET(mesh_glb, "input.glb", scene)
 VOXGI_FILE_TARGET(image_exr, "input.exr", image)
 VOXGI_FILE_TARGET(image_png, "input.png", image)
+VOXGI_FILE_TARGET(texture_png, "input.png", texture)
+VOXGI_FILE_TARGET(texture_jpeg, "input.jpg", texture)
 #undef VOXGI_FILE_TARGET
 
 }  // namespace voxgi::fuzz

@@ -20,7 +20,9 @@ std::string writeInput(const uint8_t* data, size_t size, const std::string& name
 // LLVMFuzzerTestOneInput in its own binary (tests/fuzz/CMakeLists.txt) and all of them in the
 // replay tool.
 #define VOXGI_FUZZ_TARGETS(X) \
-  X(mesh_obj) X(mesh_ply) X(mesh_gltf) X(mesh_glb) X(scene_json) X(image_exr) X(image_png)
+  X(mesh_obj)                 \
+  X(mesh_ply)                 \
+  X(mesh_gltf) X(mesh_glb) X(scene_json) X(image_exr) X(image_png) X(texture_png) X(texture_jpeg)
 #define VOXGI_DECLARE_TARGET(name) int name(const uint8_t* data, size_t size);
 VOXGI_FUZZ_TARGETS(VOXGI_DECLARE_TARGET)
 #undef VOXGI_DECLARE_TARGET

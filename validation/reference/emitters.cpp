@@ -103,7 +103,8 @@ SphericalView sphericalView(const Emitter& e, vec3 x, LightSampling how) {
 }  // namespace
 
 void Emitters::addMesh(uint32_t mesh, const std::vector<vec3>& vertices,
-                       const std::vector<glm::uvec3>& triangles, vec3 emission) {
+                       const std::vector<glm::uvec3>& triangles, vec3 emission,
+                       bool trianglesOnly) {
   if (emitterOf_.size() <= mesh) emitterOf_.resize(mesh + 1);
   emitterOf_[mesh].assign(triangles.size(), -1);
   const auto corners = [&](size_t t) {
@@ -117,17 +118,29 @@ void Emitters::addMesh(uint32_t mesh, const std::vector<vec3>& vertices,
     const double len = glm::length(n);
     if (!(len > 0.0)) continue;
     std::optional<Emitter> e;
-    if (t + 1 < triangles.size()) e = asRectangle(p, corners(t + 1));
+    if (t + 1 < triangles.size() && !trianglesOnly) e = asRectangle(p, corners(t + 1));
     if (!e)
       e = Emitter{false,         vec3(p[0]), vec3(p[1] - p[0]), vec3(p[2] - p[0]),
                   vec3(n / len), vec3(0.0f), float(0.5 * len)};
     e->emission = emission;
+    e->mesh = mesh;
+    e->triangle = uint32_t(t);
     emitterOf_[mesh][t] = int32_t(emitters_.size());
     if (e->rectangle) emitterOf_[mesh][++t] = int32_t(emitters_.size());
     emitters_.push_back(*e);
     weight_ += e->area * luminance(emission);
     cdf_.push_back(weight_);
   }
+}
+
+glm::vec2 emitterBarycentric(const Emitter& e, vec3 q) {
+  // Least squares on the plane: [e1 e2]^T [e1 e2] b = [e1 e2]^T (q - p0), in double.
+  const dvec3 e1(e.e1), e2(e.e2), r = dvec3(q) - dvec3(e.p0);
+  const double a = glm::dot(e1, e1), b = glm::dot(e1, e2), c = glm::dot(e2, e2);
+  const double det = a * c - b * b;
+  if (!(det > 0.0)) return glm::vec2(0.0f);
+  const double r1 = glm::dot(e1, r), r2 = glm::dot(e2, r);
+  return {float((c * r1 - b * r2) / det), float((a * r2 - b * r1) / det)};
 }
 
 float Emitters::pickProbability(const Emitter& e) const {

@@ -32,9 +32,10 @@ struct Emitter {
   bool rectangle = false;  // else a triangle
   // A triangle's vertices p0, p0 + e1, p0 + e2; a rectangle's corner p0 and edges e1 ⟂ e2.
   glm::vec3 p0{0.0f}, e1{0.0f}, e2{0.0f};
-  glm::vec3 normal{0.0f};  // unit; the side that emits
-  glm::vec3 emission{0.0f};
+  glm::vec3 normal{0.0f};    // unit; the side that emits
+  glm::vec3 emission{0.0f};  // its material's constant; times its texture where it has one
   float area = 0.0f;
+  uint32_t mesh = 0, triangle = 0;  // where it came from (a rectangle: its first triangle)
 };
 
 // A point drawn on an emitter for a shading point.
@@ -46,12 +47,18 @@ struct EmitterSample {
   const Emitter* emitter = nullptr;
 };
 
+// The weights of a triangle emitter's vertices p0 + e1 and p0 + e2 at point q of its plane.
+glm::vec2 emitterBarycentric(const Emitter& e, glm::vec3 q);
+
 class Emitters {
  public:
   // Adds one mesh's emissive triangles (positions in the tracer's frame). Consecutive triangles
-  // that form a rectangle become one emitter: quads arrive from OBJ and glTF as such pairs.
+  // that form a rectangle become one emitter (quads arrive from OBJ and glTF as such pairs),
+  // unless `triangles only`: a textured emitter stays triangles, so that a point on it has
+  // barycentric coordinates in its own triangle (emitterBarycentric).
   void addMesh(uint32_t mesh, const std::vector<glm::vec3>& vertices,
-               const std::vector<glm::uvec3>& triangles, glm::vec3 emission);
+               const std::vector<glm::uvec3>& triangles, glm::vec3 emission,
+               bool trianglesOnly = false);
 
   bool empty() const { return emitters_.empty(); }
 

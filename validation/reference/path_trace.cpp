@@ -65,6 +65,24 @@ Shading shadingOf(const Material& m) {
   return {m.albedo, m.specular, m.emission, m.shininess};
 }
 
+// A mesh's texture coordinates at a point of triangle `t` with barycentric weights b of its second
+// and third vertices.
+glm::vec2 texcoordAt(const Mesh& mesh, uint32_t t, glm::vec2 b) {
+  const glm::uvec3& tri = mesh.triangles[t];
+  return (1.0f - b.x - b.y) * mesh.texcoord(tri.x) + b.x * mesh.texcoord(tri.y) +
+         b.y * mesh.texcoord(tri.z);
+}
+
+// A material's albedo and emission at texture coordinates uv, point-sampled (bilinear, level 0):
+// the tracer's many paths per pixel do the filtering.
+Shading texturedShading(const Scene& scene, const Material& m, glm::vec2 uv) {
+  Shading s = shadingOf(m);
+  const TextureAccess textures{scene.textures};
+  s.albedo = shared::texturedValue(textures, m.albedo, m.albedoTexture, uv, 0.0f);
+  s.emission = shared::texturedValue(textures, m.emission, m.emissionTexture, uv, 0.0f);
+  return s;
+}
+
 // Everything the tracer sees is relative to the centre of the scene's bounds, subtracted in double
 // before anything becomes float, so that a scene 1e12 units from the origin renders as it does at
 // the origin (float world coordinates would keep a few digits there).
@@ -101,7 +119,8 @@ struct Setup {
       }
       const Material& material = scene.materials[mesh.material];
       if (material.emissive())
-        emitters.addMesh(uint32_t(m), vertices, mesh.triangles, material.emission);
+        emitters.addMesh(uint32_t(m), vertices, mesh.triangles, material.emission,
+                         material.emissionTexture != shared::kNoTexture);
     }
     // Point clouds as discs, geometry ids after the meshes'.
     for (size_t c = 0; c < scene.pointClouds.size(); ++c) {
@@ -240,13 +259,26 @@ class Tracer {
     const size_t meshes = scene_.meshes.size();
     if (hit.geometry < meshes) {
       normal = s_.normals[hit.geometry][hit.primitive];
-      return shadingOf(scene_.materials[scene_.meshes[hit.geometry].material]);
+      const Mesh& mesh = scene_.meshes[hit.geometry];
+      const Material& m = scene_.materials[mesh.material];
+      if (!m.textured()) return shadingOf(m);
+      return texturedShading(scene_, m, texcoordAt(mesh, hit.primitive, hit.barycentric));
     }
     const PointCloud& cloud = scene_.pointClouds[hit.geometry - meshes];
     normal = cloud.normals[hit.primitive];
     Shading s = shadingOf(scene_.materials[cloud.material]);
     if (!cloud.colors.empty()) s.albedo = cloud.colors[hit.primitive];
     return s;
+  }
+
+  // The emitted radiance at point q of an emitter: its constant, times its texture at q.
+  vec3 emissionAt(const Emitter& e, vec3 q) const {
+    const Mesh& mesh = scene_.meshes[e.mesh];
+    const Material& m = scene_.materials[mesh.material];
+    if (m.emissionTexture == shared::kNoTexture) return e.emission;
+    const glm::vec2 b = glm::clamp(emitterBarycentric(e, q), 0.0f, 1.0f);
+    return shared::texturedValue(TextureAccess{scene_.textures}, m.emission, m.emissionTexture,
+                                 texcoordAt(mesh, e.triangle, b), 0.0f);
   }
 
   Lobes evalBsdf(const Shading& m, vec3 n, vec3 wo, vec3 wi) const {
@@ -320,7 +352,8 @@ class Tracer {
         const vec3 f = evalBsdf(m, n, wo, e.direction).sum();
         if (maxComponent(f) > 0.0f && visible(x, e.direction, e.distance * (1.0f - 1e-4f))) {
           const float w = powerWeight(e.pdf, bsdfPdf(m, n, wo, e.direction));
-          sum += f * e.emitter->emission * glm::dot(n, e.direction) * w / e.pdf;
+          sum += f * emissionAt(*e.emitter, x + e.direction * e.distance) *
+                 glm::dot(n, e.direction) * w / e.pdf;
         }
       }
     }
