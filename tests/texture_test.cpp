@@ -314,5 +314,40 @@ TEST(TextureScene, GltfTexturesAndSamplersReachTheMaterial) {
   }
 }
 
+// The shipped textured Cornell box (scripts/textured_cornell_box): its JSON materials name the
+// textures; a scene file's own material with a texture and a wrap mode; a bad wrap mode refused.
+TEST(TextureScene, SceneFileMaterialsNameTexturesRelativeToTheFile) {
+  const Scene box = loadScene(std::string(VOXGI_SOURCE_DIR) + "/scenes/cornell_box_textured.json");
+  EXPECT_EQ(box.textures.textures.size(), 3u);  // tiles, bricks, grid
+  size_t textured = 0;
+  for (const Mesh& mesh : box.meshes) {
+    const Material& m = box.materials[mesh.material];
+    if (m.albedoTexture == shared::kNoTexture) continue;
+    ++textured;
+    EXPECT_EQ(mesh.texcoords.size(), mesh.positions.size()) << mesh.name;
+    EXPECT_EQ(m.albedo, glm::vec3(1.0f));
+  }
+  EXPECT_EQ(textured, 12u);  // floor, back wall, the two blocks' 5 + 5 faces
+  const std::string dir = std::filesystem::path(texturedObj("")).parent_path();
+  const std::string scene = R"({"meshes":[{"file":"wall.obj"}],
+    "materials":{"wall":{"albedo_texture":"wall.png","texture_wrap":"WRAP"}}})";
+  const auto withWrap = [&](const std::string& wrap) {
+    std::string text = scene;
+    text.replace(text.find("WRAP"), 4, wrap);
+    std::ofstream(dir + "/wall.json") << text;
+    return dir + "/wall.json";
+  };
+  const Scene mirrored = loadScene(withWrap("mirror"));
+  EXPECT_EQ(mirrored.textures.textures.at(0).wrapS, kWrapMirror);
+  EXPECT_EQ(mirrored.textures.textures.at(0).wrapT, kWrapMirror);
+  try {
+    loadScene(withWrap("border"));
+    ADD_FAILURE();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("materials.wall.texture_wrap"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace voxgi::test

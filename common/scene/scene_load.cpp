@@ -14,6 +14,7 @@
 
 #include "common/error.h"
 #include "common/io/input_file.h"
+#include "common/io/texture_read.h"
 #include "common/scene/point_cloud_ply.h"
 #include "common/settings.h"
 
@@ -109,12 +110,36 @@ struct Field {
   }
 };
 
-void readMaterial(const Field& f, Material& m) {
-  f.allowKeys({"albedo", "specular", "shininess", "emission"});
+// A material's texture (`albedo_texture`, `emission_texture`): a PNG or JPEG file relative to the
+// scene file, sampled with `texture_wrap` on both axes (docs/textures.md).
+uint32_t materialTexture(const Field& f, Scene& scene, uint32_t wrap) {
+  const std::string image =
+      (fs::path(scene.file).parent_path() / f.string()).lexically_normal().string();
+  return scene.textures.texture(image, wrap, wrap,
+                                [&] { return readTexture(image, f.file, f.path); });
+}
+
+void readMaterial(const Field& f, Material& m, Scene& scene) {
+  f.allowKeys({"albedo", "specular", "shininess", "emission", "albedo_texture", "emission_texture",
+               "texture_wrap"});
   if (f.has("albedo")) m.albedo = f.at("albedo").color(0.0, 1.0);
   if (f.has("specular")) m.specular = f.at("specular").color(0.0, 1.0);
   if (f.has("shininess")) m.shininess = static_cast<float>(f.at("shininess").number(0.0, 1e6));
   if (f.has("emission")) m.emission = f.at("emission").color(0.0, 1e9);
+  uint32_t wrap = shared::kWrapRepeat;
+  if (f.has("texture_wrap")) {
+    const std::string w = f.at("texture_wrap").string();
+    if (w == "clamp")
+      wrap = shared::kWrapClamp;
+    else if (w == "mirror")
+      wrap = shared::kWrapMirror;
+    else if (w != "repeat")
+      f.at("texture_wrap").fail("must be \"repeat\", \"clamp\" or \"mirror\"");
+  }
+  if (f.has("albedo_texture"))
+    m.albedoTexture = materialTexture(f.at("albedo_texture"), scene, wrap);
+  if (f.has("emission_texture"))
+    m.emissionTexture = materialTexture(f.at("emission_texture"), scene, wrap);
 }
 
 glm::dmat4 readTransform(const Field& f) {
@@ -427,7 +452,7 @@ void readMaterials(const Field& root, Scene& scene) {
   for (const auto& [name, v] : mats.value.items()) {
     Material m;
     m.name = name;
-    readMaterial(mats.at(name), m);
+    readMaterial(mats.at(name), m, scene);
     scene.materials.push_back(m);
   }
 }
