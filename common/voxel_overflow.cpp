@@ -50,6 +50,8 @@ void refuseRepeatedTriangles(const VoxelTriangles& triangles, int n, bool antial
   for (const shared::VoxelTriangle& t : triangles.triangles) ++buckets[bucket(t)];
   if (*std::max_element(buckets.begin(), buckets.end()) <= fewest) return;
   std::unordered_map<Key, uint64_t, KeyHash> copies;
+  const TexturePool none;
+  const TextureAccess noTextures{none};
   for (const shared::VoxelTriangle& t : triangles.triangles)
     if (buckets[bucket(t)] > fewest) ++copies[keyOf(t)];
   for (const shared::VoxelTriangle& t : triangles.triangles) {
@@ -61,10 +63,13 @@ void refuseRepeatedTriangles(const VoxelTriangles& triangles, int n, bool antial
     const auto sink = [&](const glm::ivec3& v, const shared::VoxelContribution& c) {
       weight[(size_t(v.z) * size_t(n) + size_t(v.y)) * size_t(n) + size_t(v.x)] += c.weight;
     };
+    // Only the weights count here: the copy is walked without its textures.
+    shared::VoxelTriangle plain = t;
+    plain.albedoTexture = plain.emissionTexture = shared::kNoTexture;
     if (antialiased)
-      antialiasedWalk(t, n, sink);
+      antialiasedWalk(plain, n, noTextures, sink);
     else
-      conservativeWalk(t, n, sink);
+      conservativeWalk(plain, n, noTextures, sink);
     uint64_t heaviest = 0;
     for (const auto& [voxel, w] : weight) heaviest = std::max(heaviest, w);
     if (count * heaviest > shared::kMaxWeightSum)

@@ -39,8 +39,21 @@ struct Counts {
   size_t degenerate = 0, outside = 0, clipped = 0;
 };
 
+// A point's texture coordinates on the triangle `p` with coordinates `uv` (its barycentric weights
+// by least squares in double, so a clipped piece's corners keep the original's mapping).
+glm::vec2 texcoordAt(const glm::dvec3& x, const glm::dvec3 p[3], const glm::vec2 uv[3]) {
+  const glm::dvec3 e1 = p[1] - p[0], e2 = p[2] - p[0], r = x - p[0];
+  const double a = glm::dot(e1, e1), b = glm::dot(e1, e2), c = glm::dot(e2, e2);
+  const double det = a * c - b * b;
+  if (!(det > 0.0)) return uv[0];
+  const double b1 = (c * glm::dot(e1, r) - b * glm::dot(e2, r)) / det;
+  const double b2 = (a * glm::dot(e2, r) - b * glm::dot(e1, r)) / det;
+  return glm::vec2((1.0 - b1 - b2) * glm::dvec2(uv[0]) + b1 * glm::dvec2(uv[1]) +
+                   b2 * glm::dvec2(uv[2]));
+}
+
 void emitTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
-                  const Material& material, float emissionScale,
+                  const glm::vec2 uv[3], const Material& material, float emissionScale,
                   std::vector<shared::VoxelTriangle>& out, Counts& counts) {
   const glm::dvec3 n = glm::cross(b - a, c - a);
   const double twiceArea = glm::length(n);
@@ -69,6 +82,16 @@ void emitTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
   t.emission = emissionScale > 0.0f ? material.emission / emissionScale : glm::vec3(0.0f);
   t.dominantAxis = axis;
   t.subdivision = subdivision;
+  t.albedoTexture = material.albedoTexture;
+  t.emissionTexture = material.emissionTexture;
+  t.uv0 = uv[0];
+  t.uv1 = uv[1];
+  t.uv2 = uv[2];
+  // One voxel edge on the triangle covers sqrt(uv area / area) in texture coordinates: the
+  // footprint the voxel's texture mean is filtered over (docs/textures.md).
+  const glm::dvec2 d1 = glm::dvec2(uv[1]) - glm::dvec2(uv[0]),
+                   d2 = glm::dvec2(uv[2]) - glm::dvec2(uv[0]);
+  t.uvFootprint = static_cast<float>(std::sqrt(0.5 * std::abs(d1.x * d2.y - d1.y * d2.x) / area));
   out.push_back(t);
 }
 
@@ -114,9 +137,10 @@ VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid) {
         ++chunk.counts.outside;
         continue;
       }
+      const glm::vec2 uv[3] = {mesh.texcoord(tri.x), mesh.texcoord(tri.y), mesh.texcoord(tri.z)};
       if (bmin.x >= lo && bmin.y >= lo && bmin.z >= lo && bmax.x <= hi && bmax.y <= hi &&
           bmax.z <= hi) {
-        emitTriangle(p[0], p[1], p[2], material, result.emissionScale, chunk.out, chunk.counts);
+        emitTriangle(p[0], p[1], p[2], uv, material, result.emissionScale, chunk.out, chunk.counts);
         continue;
       }
       if (glm::length(glm::cross(p[1] - p[0], p[2] - p[0])) == 0.0) {
@@ -125,9 +149,12 @@ VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid) {
       }
       ++chunk.counts.clipped;
       const Polygon poly = clipToBox({p[0], p[1], p[2]}, lo, hi);
-      for (size_t k = 1; k + 1 < poly.size(); ++k)  // fan; zero-area pieces are dropped
-        emitTriangle(poly[0], poly[k], poly[k + 1], material, result.emissionScale, chunk.out,
-                     chunk.counts);
+      for (size_t k = 1; k + 1 < poly.size(); ++k) {  // fan; zero-area pieces are dropped
+        const glm::vec2 piece[3] = {texcoordAt(poly[0], p, uv), texcoordAt(poly[k], p, uv),
+                                    texcoordAt(poly[k + 1], p, uv)};
+        emitTriangle(poly[0], poly[k], poly[k + 1], piece, material, result.emissionScale,
+                     chunk.out, chunk.counts);
+      }
     }
   });
   for (Chunk& c : chunks) {

@@ -65,14 +65,15 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
   Accumulator acc{grid, weight, albedoSum, normalSum, emissive ? &emissionSum : nullptr};
 
   const auto& tris = ctx.triangles.triangles;
+  const TextureAccess textures{ctx.scene.textures};
   parallelFor(tbb::blocked_range<size_t>(0, tris.size(), 64), [&](const auto& range) {
     for (size_t i = range.begin(); i != range.end(); ++i) {
       // A million copies of one triangle fail after the first few thousand, not after all.
       if (acc.overflow.load(std::memory_order_relaxed)) return;
       if (antialiased)
-        antialiasedWalk(tris[i], n, acc);
+        antialiasedWalk(tris[i], n, textures, acc);
       else
-        conservativeWalk(tris[i], n, acc);
+        conservativeWalk(tris[i], n, textures, acc);
     }
   });
 

@@ -8,6 +8,7 @@
 #include "common/voxel_overflow.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
+#include "gpu/texture_pool.h"
 #include "gpu/volumes.h"
 #include "shaders/shared/voxelize_layout.h"
 
@@ -161,6 +162,7 @@ void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& bu
   GlBuffer status(gl, createBuffer(gl, sizeof zero, &zero));
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, triangles.get());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, status.get());
+  const TexturePoolBuffers textures(gl, ctx.scene.textures);
   const SumImages sums = clearedSums(gl, n, emissive);
   bindSums(gl, sums, GL_READ_WRITE);
   gl.check("voxelize: allocating volumes");

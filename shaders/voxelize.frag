@@ -2,8 +2,11 @@
 // Conservative voxelization, fragment stage: one invocation per (triangle, voxel column). Every
 // layer of the column that the triangle may touch is decided by the shared separating-axis test
 // and weighted by the exact clipped area, as cpu/voxelize.cpp does, and accumulated with integer
-// image atomics in the same fixed point.
-#include "shared/voxelize_kernel.h"
+// image atomics in the same fixed point; a textured triangle's albedo and emission come from its
+// textures (shared/voxelize_surface.h).
+#include "shared/texture_layout.h"
+#include "texture_access.glsl"
+#include "shared/voxelize_surface.h"
 #include "voxelize_accumulate.glsl"
 
 flat in int gTriangle;

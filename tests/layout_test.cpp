@@ -20,6 +20,7 @@
 #include "shaders/shared/vct/compose_kernel.h"
 #include "shaders/shared/vct/cone_types.h"
 #include "shaders/shared/vct/light_voxels_kernel.h"
+#include "shaders/shared/texture_layout.h"
 #include "shaders/shared/voxelize_layout.h"
 #include "tests/gl_contexts.h"
 
@@ -74,10 +75,20 @@ std::vector<Layout> commonLayouts() {
         VOXGI_FIELD(VoxelTriangle, v2), VOXGI_FIELD(VoxelTriangle, albedo),
         VOXGI_FIELD(VoxelTriangle, areaScale), VOXGI_FIELD(VoxelTriangle, normal),
         VOXGI_FIELD(VoxelTriangle, sampleArea), VOXGI_FIELD(VoxelTriangle, emission),
-        VOXGI_FIELD(VoxelTriangle, dominantAxis), VOXGI_FIELD(VoxelTriangle, subdivision)},
+        VOXGI_FIELD(VoxelTriangle, uvFootprint), VOXGI_FIELD(VoxelTriangle, dominantAxis),
+        VOXGI_FIELD(VoxelTriangle, subdivision), VOXGI_FIELD(VoxelTriangle, albedoTexture),
+        VOXGI_FIELD(VoxelTriangle, emissionTexture), VOXGI_FIELD(VoxelTriangle, uv0),
+        VOXGI_FIELD(VoxelTriangle, uv1), VOXGI_FIELD(VoxelTriangle, uv2)},
        {{"voxelize_antialiased", "triangles[0]", 0, true},
         {"voxelize", "triangles[0]", 0, true},
         {"voxelize_resolve", "triangles[0]", 0, true}}},
+      {"TextureRecord",
+       sizeof(TextureRecord),
+       {VOXGI_FIELD(TextureRecord, offset), VOXGI_FIELD(TextureRecord, width),
+        VOXGI_FIELD(TextureRecord, height), VOXGI_FIELD(TextureRecord, levels),
+        VOXGI_FIELD(TextureRecord, wrapS), VOXGI_FIELD(TextureRecord, wrapT)},
+       {{"voxelize_antialiased", "textureRecords[0]", 0, true},
+        {"voxelize", "textureRecords[0]", 0, true}}},
       {"SurfaceTriangle",
        sizeof(SurfaceTriangle),
        {VOXGI_FIELD(SurfaceTriangle, normal), VOXGI_FIELD(SurfaceTriangle, objectId),

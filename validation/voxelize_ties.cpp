@@ -37,14 +37,15 @@ bool conservativeTie(const VoxelTriangle& t, const glm::ivec3& v, float satEpsil
   const float s = shared::satSeparation(a, b, c, true);
   if (std::abs(s) <= satEpsilon) return true;
   if (s > 0.0f) return false;
-  const float area = shared::projectedAreaInVoxel(a, b, c, t.dominantAxis) * t.areaScale;
+  glm::vec3 middle;
+  const float area = shared::projectedAreaInVoxel(a, b, c, t.dominantAxis, middle) * t.areaScale;
   return contributionNearHalf(t, area * shared::kWeightScale);
 }
 
 bool antialiasedTie(const VoxelTriangle& t, const glm::ivec3& v) {
   for (int i = 0; i < int(t.subdivision); ++i)
     for (int k = 0; k < shared::antialiasedRowSamples(t, i); ++k) {
-      const glm::vec3 p = shared::antialiasedRowSample(t, i, k);
+      const glm::vec3 p = shared::antialiasedSample(t, shared::antialiasedRowBarycentric(t, i, k));
       const glm::ivec3 base = shared::tentBase(p);
       const glm::ivec3 d = v - base;
       if (d.x < 0 || d.y < 0 || d.z < 0 || d.x > 1 || d.y > 1 || d.z > 1) continue;

@@ -5,34 +5,15 @@
 //
 // Reads through the accessor of glsl_cpp.h (VOLUME_FN): FETCH(textureWord)(i) is texel word i of
 // the pool every image's levels are packed in (RGBA8, r in the low byte), FETCH(srgbDecode)(code)
-// the linear value of an 8-bit sRGB code (a table made on the host: common/texture.cpp).
+// the linear value of an 8-bit sRGB code (a table made on the host: common/texture.cpp) and
+// FETCH(textureRecord)(i) texture i; shaders define them in shaders/texture_access.glsl.
 #ifndef VOXGI_TEXTURE_KERNEL_H
 #define VOXGI_TEXTURE_KERNEL_H
 #include "approx_math.h"
 #include "glsl_cpp.h"
+#include "texture_layout.h"
 
 VOXGI_NAMESPACE_BEGIN
-
-// glTF's sampler wrap modes (its numbers are 10497, 33071 and 33648).
-const uint kWrapRepeat = 0u;
-const uint kWrapClamp = 1u;
-const uint kWrapMirror = 2u;
-
-// No texture: a material slot that holds this reads its constant factor alone.
-const uint kNoTexture = 0xffffffffu;
-
-// One texture as the kernels see it (std430, 32 bytes): its image's levels in the texel pool (level
-// 0 at `offset`, each level after the one before, max(1, size >> l) per side) and its sampler.
-struct TextureRecord {
-  uint offset;
-  int width;
-  int height;
-  int levels;
-  uint wrapS;
-  uint wrapT;
-  uint pad0;
-  uint pad1;
-};
 
 // A texture coordinate brought into the period of its wrap mode, where floor() and int() cannot
 // overflow: [0, 1) for repeat, [0, 2) for mirror, [0, 1] for clamp.

@@ -72,8 +72,9 @@ VOXGI_FN float satSeparation(vec3 a, vec3 b, vec3 c, bool normalized) {
 
 // Area of the part of triangle (a, b, c) (relative to the voxel centre) inside the closed voxel,
 // projected on the plane normal to `axis`: Sutherland-Hodgman clipping against the 6 faces, then
-// the shoelace formula. Multiply by the triangle's area scale for the true area.
-VOXGI_FN float projectedAreaInVoxel(vec3 a, vec3 b, vec3 c, uint axis) {
+// the shoelace formula. Multiply by the triangle's area scale for the true area. `centre` is the
+// mean of the clipped polygon's corners (where a textured triangle is sampled for the voxel).
+VOXGI_FN float projectedAreaInVoxel(vec3 a, vec3 b, vec3 c, uint axis, OUT(vec3) centre) {
   vec3 poly[9];
   vec3 next[9];
   poly[0] = a;
@@ -100,6 +101,9 @@ VOXGI_FN float projectedAreaInVoxel(vec3 a, vec3 b, vec3 c, uint axis) {
     for (int i = 0; i < m; ++i) poly[i] = next[i];
     n = m;
   }
+  precise vec3 sum = vec3(0.0f);
+  for (int i = 0; i < n; ++i) sum = sum + poly[i];
+  centre = sum / float(max(n, 1));
   precise float twice = 0.0f;
   for (int i = 0; i < n; ++i) {
     precise vec3 p = toDominant(poly[i], axis);
@@ -149,42 +153,50 @@ VOXGI_FN int quantizeSigned(float x) {
   return int(floor(x + 0.5f));
 }
 
-// The sums a triangle adds with the given fixed-point weight.
-VOXGI_FN VoxelContribution weightedContribution(VoxelTriangle t, uint weight) {
+// The sums a triangle adds with the given fixed-point weight, where its albedo and emission (over
+// the emission scale) are these.
+VOXGI_FN VoxelContribution weightedContribution(VoxelTriangle t, uint weight, vec3 albedo,
+                                                vec3 emission) {
   precise float w = float(weight);
   VoxelContribution c;
   c.weight = weight;
   c.emitterWeight = vec3(t.emission) == vec3(0.0f) ? 0u : weight;
-  c.albedo = uvec3(quantize(w * t.albedo.x), quantize(w * t.albedo.y), quantize(w * t.albedo.z));
+  c.albedo = uvec3(quantize(w * albedo.x), quantize(w * albedo.y), quantize(w * albedo.z));
   c.normal = ivec3(quantizeSigned(w * t.normal.x), quantizeSigned(w * t.normal.y),
                    quantizeSigned(w * t.normal.z));
-  c.emission =
-      uvec3(quantize(w * t.emission.x), quantize(w * t.emission.y), quantize(w * t.emission.z));
+  c.emission = uvec3(quantize(w * emission.x), quantize(w * emission.y), quantize(w * emission.z));
   return c;
 }
 
-// Conservative mode: does triangle t touch voxel `voxel`, and what does it add? The weight is the
-// triangle's area inside the voxel, at least one unit, so a touch without area still counts.
-VOXGI_FN bool conservativeContribution(VoxelTriangle t, ivec3 voxel, OUT(VoxelContribution) c) {
-  precise vec3 centre = vec3(voxel) + vec3(0.5f);
-  precise vec3 a = vec3(t.v0) - centre;
-  precise vec3 b = vec3(t.v1) - centre;
-  precise vec3 d = vec3(t.v2) - centre;
+// Conservative mode: does triangle t touch voxel `voxel`, and with what weight? The weight is the
+// triangle's area inside the voxel, at least one unit, so a touch without area still counts;
+// `centre` is where the triangle's part inside the voxel is sampled (voxel-local).
+VOXGI_FN bool conservativeWeight(VoxelTriangle t, ivec3 voxel, OUT(uint) weight, OUT(vec3) centre) {
+  precise vec3 middle = vec3(voxel) + vec3(0.5f);
+  precise vec3 a = vec3(t.v0) - middle;
+  precise vec3 b = vec3(t.v1) - middle;
+  precise vec3 d = vec3(t.v2) - middle;
   if (satSeparation(a, b, d, false) > 0.0f) return false;
-  precise float area = projectedAreaInVoxel(a, b, d, t.dominantAxis) * t.areaScale;
-  c = weightedContribution(t, max(1u, quantize(area * kWeightScale)));
+  vec3 local;
+  precise float area = projectedAreaInVoxel(a, b, d, t.dominantAxis, local) * t.areaScale;
+  weight = max(1u, quantize(area * kWeightScale));
+  centre = local + middle;
   return true;
 }
 
 // Antialiased mode: the triangle is split into n*n congruent sub-triangles (row i, column j,
-// pointing up or down); each sub-triangle's centroid is one sample of area t.sampleArea.
-VOXGI_FN vec3 antialiasedSample(VoxelTriangle t, int i, int j, bool up) {
+// pointing up or down); each sub-triangle's centroid is one sample of area t.sampleArea, at
+// barycentric weights (b1, b2) of v1 and v2.
+VOXGI_FN vec2 antialiasedBarycentric(VoxelTriangle t, int i, int j, bool up) {
   precise float n = float(t.subdivision);
   precise float offset = up ? 0.33333334f : 0.6666667f;
   precise float b1 = (float(i) + offset) / n;
   precise float b2 = (float(j) + offset) / n;
+  return vec2(b1, b2);
+}
+VOXGI_FN vec3 antialiasedSample(VoxelTriangle t, vec2 b) {
   precise vec3 v0 = vec3(t.v0);
-  precise vec3 p = (v0 + b1 * (vec3(t.v1) - v0)) + b2 * (vec3(t.v2) - v0);
+  precise vec3 p = (v0 + b.x * (vec3(t.v1) - v0)) + b.y * (vec3(t.v2) - v0);
   return p;
 }
 
@@ -194,8 +206,8 @@ VOXGI_FN vec3 antialiasedSample(VoxelTriangle t, int i, int j, bool up) {
 VOXGI_FN int antialiasedRowSamples(VoxelTriangle t, int i) {
   return 2 * (int(t.subdivision) - i) - 1;
 }
-VOXGI_FN vec3 antialiasedRowSample(VoxelTriangle t, int i, int k) {
-  return antialiasedSample(t, i, k / 2, k % 2 == 0);
+VOXGI_FN vec2 antialiasedRowBarycentric(VoxelTriangle t, int i, int k) {
+  return antialiasedBarycentric(t, i, k / 2, k % 2 == 0);
 }
 
 // The voxel whose centre is the lower corner of the trilinear tent cell holding p.
