@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "common/texture.h"
 #include "shaders/shared/camera.h"
 
 namespace voxgi {
@@ -55,6 +56,15 @@ CameraRays cameraRays(const Scene& scene) {
   return r;
 }
 
+std::vector<shared::MaterialData> materialData(const Scene& scene) {
+  std::vector<shared::MaterialData> out;
+  for (const Material& m : scene.materials)
+    out.push_back({glm::vec4(m.albedo, 0.0f), glm::vec4(m.specular, m.shininess),
+                   glm::vec4(m.emission, 0.0f),
+                   glm::uvec4(m.albedoTexture, m.emissionTexture, 0u, 0u)});
+  return out;
+}
+
 CameraGeometry prepareCameraGeometry(const Scene& scene) {
   CameraGeometry g;
   const GridSpec& grid = scene.grid;
@@ -66,8 +76,16 @@ CameraGeometry prepareCameraGeometry(const Scene& scene) {
       const glm::dvec3 a = mesh.positions[t.x], b = mesh.positions[t.y], c = mesh.positions[t.z];
       const glm::dvec3 n = glm::cross(b - a, c - a);
       const double len = glm::length(n);
-      g.triangles.push_back({glm::vec4(len > 0.0 ? glm::vec3(n / len) : glm::vec3(0.0f), 0.0f),
-                             uint32_t(m) + 1u, mesh.material, 0u, 0u});
+      SurfaceTriangle s{};
+      s.normal = glm::vec4(len > 0.0 ? glm::vec3(n / len) : glm::vec3(0.0f), 0.0f);
+      s.objectId = uint32_t(m) + 1u;
+      s.material = mesh.material;
+      const glm::vec2 uv[3] = {mesh.texcoord(t.x), mesh.texcoord(t.y), mesh.texcoord(t.z)};
+      s.uv0 = uv[0];
+      s.uv1 = uv[1];
+      s.uv2 = uv[2];
+      s.uvPerVoxel = uvPerLength(uv, 0.5 * len / (grid.voxelSize() * grid.voxelSize()));
+      g.triangles.push_back(s);
       for (const glm::dvec3& p : {a, b, c}) {
         const glm::dvec3 v = grid.toVoxel(p);
         g.vertices.emplace_back(v);

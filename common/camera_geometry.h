@@ -21,6 +21,9 @@ struct CameraRays {
   int width = 0, height = 0;
   // Unnormalised direction through pixel (x, y)'s centre, row 0 at the top (as the path tracer).
   glm::vec3 pixelDirection(int x, int y) const;
+  // A pixel's side at depth 1 (voxels per voxel of depth): its texture footprint's scale
+  // (shaders/shared/surface_hit.h).
+  float pixelSide() const { return 2.0f * tanHalfFov / float(height); }
   // OpenGL view-projection with depth range [near, far] in voxels and y flipped, so that GL
   // framebuffer row 0 is image row 0 and pixel centres coincide with pixelDirection's.
   glm::mat4 viewProjection(float nearPlane, float farPlane) const;
@@ -45,5 +48,7 @@ glm::mat4 viewMatrix(glm::vec3 origin, glm::vec3 forward, glm::vec3 right, glm::
 // y flipped so that GL framebuffer row 0 is the image's top row.
 glm::mat4 flippedPerspective(float tanX, float tanY, float nearPlane, float farPlane);
 CameraGeometry prepareCameraGeometry(const Scene& scene);
+// The scene's materials as the surface kernels read them (indexed by SurfaceTriangle::material).
+std::vector<shared::MaterialData> materialData(const Scene& scene);
 
 }  // namespace voxgi

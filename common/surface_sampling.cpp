@@ -11,6 +11,7 @@
 #include "common/counter_random.h"
 #include "common/error.h"
 #include "common/parallel.h"
+#include "common/texture.h"
 
 namespace voxgi {
 namespace {
@@ -19,6 +20,8 @@ struct Triangle {
   glm::dvec3 a, ab, ac;
   glm::vec3 normal;
   uint32_t material;
+  glm::vec2 uv[3];
+  float uvPerLength;  // uv units per world unit of length on it
 };
 
 }  // namespace
@@ -36,7 +39,14 @@ PointCloud sampleSurfaces(const Scene& scene, const SurfaceSampling& sampling) {
       const glm::dvec3 n = glm::cross(ab, ac);
       const double twice = glm::length(n);
       if (!(twice > 0.0)) continue;
-      triangles.push_back({a, ab, ac, glm::vec3(n / twice), m.material});
+      const glm::vec2 uv[3] = {m.texcoord(t.x), m.texcoord(t.y), m.texcoord(t.z)};
+      triangles.push_back({a,
+                           ab,
+                           ac,
+                           glm::vec3(n / twice),
+                           m.material,
+                           {uv[0], uv[1], uv[2]},
+                           voxgi::uvPerLength(uv, 0.5 * twice)});
       area += 0.5 * twice;
       cdf.push_back(area);
     }
@@ -61,6 +71,17 @@ PointCloud sampleSurfaces(const Scene& scene, const SurfaceSampling& sampling) {
     weighted += (cdf[t] - (t ? cdf[t - 1] : 0.0)) * density(tri.a + (tri.ab + tri.ac) / 3.0);
   }
   const double meanDensity = weighted / area;
+
+  // A point's colour: its material's albedo, times the texture at its coordinates filtered over
+  // the side of the square of its share of the area (docs/textures.md).
+  const TextureAccess textures{scene.textures};
+  const auto pointColour = [&](const Triangle& tri, double b1, double b2, double side) {
+    const Material& m = scene.materials[tri.material];
+    const glm::vec2 uv = glm::vec2(glm::dvec2(tri.uv[0]) * (1.0 - b1 - b2) +
+                                   glm::dvec2(tri.uv[1]) * b1 + glm::dvec2(tri.uv[2]) * b2);
+    return shared::texturedValue(textures, m.albedo, m.albedoTexture, uv,
+                                 float(side) * tri.uvPerLength);
+  };
 
   PointCloud cloud;
   cloud.name = scene.file + " (sampled)";
@@ -89,7 +110,7 @@ PointCloud sampleSurfaces(const Scene& scene, const SurfaceSampling& sampling) {
         const double share = area / double(n) * meanDensity / w;  // area per point here
         cloud.positions[i] = p;
         cloud.normals[i] = tri.normal;
-        cloud.colors[i] = scene.materials[tri.material].albedo;
+        cloud.colors[i] = pointColour(tri, s * (1.0 - v), s * v, std::sqrt(share));
         cloud.radii[i] = float(std::sqrt(2.0 * share / std::numbers::pi));
         break;
       }

@@ -28,7 +28,8 @@ struct SurfaceSampling {
 // `sampling.points` points on the scene's meshes (every triangle with area, but for emissive
 // ones unless `sampling.material` names one: a PLY carries no emission, so `voxgi sample` leaves
 // emitters as meshes beside the cloud),
-// each with the triangle's right-hand normal, its material's albedo as colour and a radius with
+// each with the triangle's right-hand normal, its material's albedo (times its texture there) as
+// colour and a radius with
 // pi r^2 = twice the area per point (common/scene/point_neighbours.h's convention). Throws
 // InputError naming the scene when it has no triangle with area to sample.
 PointCloud sampleSurfaces(const Scene& scene, const SurfaceSampling& sampling);

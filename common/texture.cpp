@@ -35,6 +35,13 @@ const std::array<float, 256>& srgbDecodeTable() {
   return table;
 }
 
+float uvPerLength(const glm::vec2 uv[3], double area) {
+  const glm::dvec2 d1 = glm::dvec2(uv[1]) - glm::dvec2(uv[0]),
+                   d2 = glm::dvec2(uv[2]) - glm::dvec2(uv[0]);
+  const double uvArea = 0.5 * std::abs(d1.x * d2.y - d1.y * d2.x);
+  return area > 0.0 ? static_cast<float>(std::sqrt(uvArea / area)) : 0.0f;
+}
+
 uint32_t srgbEncode(float linear) {
   const std::array<float, 256>& t = srgbDecodeTable();
   // The first code at or above the value, then whichever neighbour is nearer.

@@ -29,6 +29,11 @@ uint64_t mipTexelCount(int width, int height);
 const std::array<float, 256>& srgbDecodeTable();
 uint32_t srgbEncode(float linear);
 
+// How many uv units one unit of length on a triangle covers, sqrt(uv area / area), for a triangle
+// of `area` square units with texture coordinates uv: the scale from a filter's width on the
+// surface to its footprint in the texture (0 for a degenerate triangle).
+float uvPerLength(const glm::vec2 uv[3], double area);
+
 struct TexturePool {
   std::vector<uint32_t> texels;                 // RGBA8 words of every image's levels
   std::vector<shared::TextureRecord> textures;  // indexed by Material::albedoTexture, ...

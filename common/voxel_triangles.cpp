@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/parallel.h"
+#include "common/texture.h"
 #include "shaders/shared/voxelize_kernel.h"
 
 namespace voxgi {
@@ -87,11 +88,9 @@ void emitTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
   t.uv0 = uv[0];
   t.uv1 = uv[1];
   t.uv2 = uv[2];
-  // One voxel edge on the triangle covers sqrt(uv area / area) in texture coordinates: the
-  // footprint the voxel's texture mean is filtered over (docs/textures.md).
-  const glm::dvec2 d1 = glm::dvec2(uv[1]) - glm::dvec2(uv[0]),
-                   d2 = glm::dvec2(uv[2]) - glm::dvec2(uv[0]);
-  t.uvFootprint = static_cast<float>(std::sqrt(0.5 * std::abs(d1.x * d2.y - d1.y * d2.x) / area));
+  // One voxel edge on the triangle: the footprint the voxel's texture mean is filtered over
+  // (docs/textures.md).
+  t.uvFootprint = uvPerLength(uv, area);
   out.push_back(t);
 }
 

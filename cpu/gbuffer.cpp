@@ -7,7 +7,8 @@
 #include "common/camera_geometry.h"
 #include "common/scene/ray_scene.h"
 #include "cpu/stages.h"
-#include "shaders/shared/gbuffer_kernel.h"
+#include "common/texture.h"
+#include "shaders/shared/surface_hit.h"
 
 namespace voxgi::cpu {
 
@@ -32,6 +33,9 @@ void common::gbuffer(const StageContext& ctx, BufferSet& buffers) {
   const auto triangleCount = uint32_t(g.triangles.size());
   const glm::ivec3 extent(cam.width, cam.height, 1);
   const bool emissive = ctx.plan.on(Effect::emission);
+  const TextureAccess textures{ctx.scene.textures};
+  const std::vector<shared::MaterialData> materials = materialData(ctx.scene);
+  const float pixelSide = cam.pixelSide();
   Buffer position(BufferId::common_gbuffer_pixel_position, extent);
   Buffer normal(BufferId::common_gbuffer_pixel_normal, extent);
   Buffer albedo(BufferId::common_gbuffer_pixel_albedo, extent);
@@ -52,7 +56,15 @@ void common::gbuffer(const StageContext& ctx, BufferSet& buffers) {
       const glm::vec3 surfaceNormal =
           disc ? g.discs[hit.primitive].normal : glm::vec3(g.triangles[hit.primitive].normal);
       const Material& m = ctx.scene.materials[material];
-      const glm::vec3 a = disc ? g.discs[hit.primitive].albedo : m.albedo;
+      glm::vec3 a = disc ? g.discs[hit.primitive].albedo : m.albedo, emitted = m.emission;
+      if (!disc) {
+        const SurfaceTriangle& s = g.triangles[hit.primitive];
+        const glm::vec3* v = &g.vertices[3 * size_t(hit.primitive)];
+        const glm::vec3 b = shared::rayTriangleHit(cam.origin, d, v[0], v[1], v[2]);
+        const float footprint = shared::surfaceFootprint(s, b.z * pixelSide);
+        a = shared::surfaceAlbedo(textures, s, materials[material], {b.x, b.y}, footprint);
+        emitted = shared::surfaceEmission(textures, s, materials[material], {b.x, b.y}, footprint);
+      }
       const size_t e = size_t(y) * size_t(cam.width) + size_t(x);
       const glm::vec3 p = cam.origin + d * hit.t;
       const glm::vec3 n = shared::facingNormal(surfaceNormal, d);
@@ -61,7 +73,7 @@ void common::gbuffer(const StageContext& ctx, BufferSet& buffers) {
         normal.set(e, c, n[c]);
         albedo.set(e, c, a[c]);
         specular.set(e, c, m.specular[c]);
-        if (emissive) emission.set(e, c, m.emission[c]);
+        if (emissive) emission.set(e, c, emitted[c]);
       }
       specular.set(e, 3, m.shininess);
       objectId.set<uint32_t>(e, 0, object);

@@ -8,6 +8,7 @@
 #include "gpu/program.h"
 #include "gpu/stages.h"
 #include "gpu/surface_raster.h"
+#include "gpu/texture_pool.h"
 #include "gpu/volumes.h"
 
 namespace voxgi::gpu {
@@ -39,9 +40,12 @@ void common::gbuffer(GlContext& context, const StageContext& ctx, BufferSet& buf
     program.set("uTanHalfFov", cam.tanHalfFov);
     program.set("uAspect", cam.aspect);
     program.set("uSize", glm::vec2(float(w), float(h)));
+    program.set("uOrigin", cam.origin);
   };
+  const TexturePoolBuffers textures(gl, ctx.scene.textures);
   Program program(gl, {&shaders::gbuffer_vert, &shaders::gbuffer_frag});
   setCamera(program);
+  program.set("uPixelSide", cam.pixelSide());
   program.use();
   raster.begin();
   raster.drawLayer(0);
@@ -49,7 +53,6 @@ void common::gbuffer(GlContext& context, const StageContext& ctx, BufferSet& buf
     GlBuffer discs(gl, createBuffer(gl, g.discs.size() * sizeof(SurfaceDisc), g.discs.data()));
     Program discProgram(gl, {&shaders::gbuffer_disc_vert, &shaders::gbuffer_disc_frag});
     setCamera(discProgram);
-    discProgram.set("uOrigin", cam.origin);
     discProgram.set("uTriangleCount", unsigned(g.triangles.size()));
     discProgram.use();
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, discs.get());

@@ -3,17 +3,6 @@
 #include "shaders/shared/gbuffer_kernel.h"
 
 namespace voxgi::gpu {
-namespace {
-
-std::vector<shared::MaterialData> materialData(const Scene& scene) {
-  std::vector<shared::MaterialData> out;
-  for (const Material& m : scene.materials)
-    out.push_back({glm::vec4(m.albedo, 0.0f), glm::vec4(m.specular, m.shininess),
-                   glm::vec4(m.emission, 0.0f)});
-  return out;
-}
-
-}  // namespace
 
 SurfaceRaster::SurfaceRaster(const Gl& gl, const Scene& scene, const CameraGeometry& g,
                              std::span<const RasterTarget> targets, glm::ivec2 size, int layers)

@@ -1,6 +1,11 @@
 // The CPU gbuffer against a hand-computed camera ray: a wall facing the camera, seen from its back
-// too, a second object in front, and the background.
+// too, a second object in front, and the background; textured albedo at each pixel's hit.
+#include <algorithm>
+
 #include <gtest/gtest.h>
+
+#include "common/camera_geometry.h"
+#include "common/texture.h"
 
 #include "tests/test_scenes.h"
 
@@ -70,6 +75,62 @@ TEST(Gbuffer, BackgroundPixelsAreZero) {
   const BufferSet b = runCpuUntil(scene, Settings{}, "gbuffer");
   for (uint32_t w : b.at(BufferId::common_gbuffer_object_id).words) ASSERT_EQ(w, 0u);
   for (uint32_t w : b.at(BufferId::common_gbuffer_pixel_position).words) ASSERT_EQ(w, 0u);
+}
+
+// The plane y = 0 of the unit grid (8 voxels), texture coordinates (x, z), seen from (0.5, 1, 0.5)
+// straight down through 16 x 16 pixels, with a white material textured by `image`.
+Scene texturedFloor(const DecodedImage& image, uint32_t wrap) {
+  Scene scene = makeScene(quad(1, 0.0, {0.0, 0.0}, {1.0, 1.0}), unitGrid(8));
+  Mesh& mesh = scene.meshes[0];
+  for (const glm::dvec3& p : mesh.positions) mesh.texcoords.emplace_back(p.x, p.z);
+  scene.materials[0].albedo = glm::vec3(1.0f);
+  scene.materials[0].albedoTexture =
+      scene.textures.texture("floor", wrap, wrap, [&] { return image; });
+  return withCamera(scene, {0.5, 1.0, 0.5}, {0.5, 0.0, 0.5}, {0.0, 0.0, 1.0}, 40.0, 16);
+}
+
+// A 2 x 2 texture whose red rises with u and green with v, clamped: bilinear filtering at the
+// pixel's hit is red(u) = a + (b - a) clamp(2u - 1/2, 0, 1), a and b the two codes' values, and
+// the same for green. The footprint (0.36 voxel at 8 voxels' depth, 0.09 texel) magnifies.
+TEST(Gbuffer, TexturedAlbedoIsTheTextureAtEachPixelsHit) {
+  const uint32_t lo = srgbEncode(0.25f), hi = srgbEncode(0.75f);
+  const float a = srgbDecodeTable()[lo], b = srgbDecodeTable()[hi];
+  DecodedImage image{2, 2, {}};
+  for (int y = 0; y < 2; ++y)
+    for (int x = 0; x < 2; ++x)
+      for (uint32_t code : {x ? hi : lo, y ? hi : lo, 255u}) image.rgb.push_back(uint8_t(code));
+  const Scene scene = texturedFloor(image, shared::kWrapClamp);
+  const BufferSet buffers = runCpuUntil(scene, Settings{}, "gbuffer");
+  const Buffer& albedo = buffers.at(BufferId::common_gbuffer_pixel_albedo);
+  const CameraRays cam = cameraRays(scene);
+  const auto ramp = [&](double t) { return a + (b - a) * std::clamp(2.0 * t - 0.5, 0.0, 1.0); };
+  for (int y = 0; y < cam.height; ++y)
+    for (int x = 0; x < cam.width; ++x) {
+      // The pixel centre's ray to the plane, in world units.
+      const glm::dvec3 d(cam.pixelDirection(x, y));
+      const glm::dvec3 hit = (glm::dvec3(cam.origin) - d * (double(cam.origin.y) / d.y)) / 8.0;
+      const glm::vec4 p = pixel(albedo, x, y);
+      ASSERT_NEAR(p.x, ramp(hit.x), 1e-5) << x << "," << y;
+      ASSERT_NEAR(p.y, ramp(hit.z), 1e-5) << x << "," << y;
+      ASSERT_EQ(p.z, 1.0f);
+    }
+}
+
+// A checker of single texels, 64 x 64, seen from the same camera: a pixel covers 2.9 texels, so
+// every pixel reads mip levels whose texels all hold the checker's linear mean 1/2 as its nearest
+// sRGB code (0.50289), not a texel of the pattern.
+TEST(Gbuffer, ATextureFinerThanAPixelIsReadAtItsMean) {
+  DecodedImage image{64, 64, {}};
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x)
+      for (int c = 0; c < 3; ++c) image.rgb.push_back((x + y) % 2 ? 255 : 0);
+  const Scene scene = texturedFloor(image, shared::kWrapRepeat);
+  const BufferSet buffers = runCpuUntil(scene, Settings{}, "gbuffer");
+  const Buffer& albedo = buffers.at(BufferId::common_gbuffer_pixel_albedo);
+  const float mean = srgbDecodeTable()[srgbEncode(0.5f)];
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) ASSERT_EQ(pixel(albedo, x, y).x, mean) << x << "," << y;
+  EXPECT_NEAR(mean, 0.5, 3e-3);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "common/scene/point_neighbours.h"
 #include "common/scene/scene_load.h"
 #include "common/surface_sampling.h"
+#include "common/texture.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {
@@ -343,6 +344,36 @@ TEST(SurfaceSampling, PointsLieOnTheSurfaceWithAreasAndDensityAsAsked) {
   double cDiscs = 0.0;
   for (const float r : c.radii) cDiscs += 3.14159265358979 * double(r) * r;
   EXPECT_NEAR(cDiscs, 8.0, 0.2);
+}
+
+// A textured quad's points take the texture's colour where they lie: a 64 x 64 texture whose left
+// half is one sRGB code and right half another. 20000 points on a unit quad each stand for 1/20000
+// of its area, a square 0.0071 wide, 0.45 texel: level 0, bilinear, so a point more than a texel
+// (1/64) from the middle reads its half's value exactly (1/32 kept clear here).
+TEST(SurfaceSampling, PointsTakeTheirTexturesColour) {
+  Material m;
+  m.albedo = glm::vec3(1.0f);
+  Scene scene = makeScene(quad(1, 0.5, {0.0, 0.0}, {1.0, 1.0}), unitGrid(8), m);
+  Mesh& mesh = scene.meshes[0];
+  for (const glm::dvec3& p : mesh.positions) mesh.texcoords.emplace_back(p.x, p.z);
+  const uint32_t left = srgbEncode(0.2f), right = srgbEncode(0.6f);
+  DecodedImage image{64, 64, {}};
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x)
+      for (int c = 0; c < 3; ++c) image.rgb.push_back(uint8_t(x < 32 ? left : right));
+  scene.materials[0].albedoTexture = scene.textures.texture(
+      "halves", shared::kWrapClamp, shared::kWrapClamp, [&] { return image; });
+  SurfaceSampling sampling;
+  sampling.points = 20000;
+  const PointCloud cloud = sampleSurfaces(scene, sampling);
+  size_t checked = 0;
+  for (size_t i = 0; i < cloud.size(); ++i) {
+    const double u = cloud.positions[i].x;
+    if (std::abs(u - 0.5) < 1.0 / 32.0) continue;
+    ASSERT_EQ(cloud.colors[i], glm::vec3(srgbDecodeTable()[u < 0.5 ? left : right])) << u;
+    ++checked;
+  }
+  EXPECT_GT(checked, 18000u);
 }
 
 }  // namespace

@@ -6,7 +6,9 @@
 #include "common/parallel.h"
 #include "common/scene/ray_scene.h"
 #include "cpu/stages.h"
+#include "common/texture.h"
 #include "shaders/shared/lpv/rsm_kernel.h"
+#include "shaders/shared/surface_hit.h"
 
 namespace voxgi::cpu {
 
@@ -20,6 +22,8 @@ void lpv::rsm(const StageContext& ctx, BufferSet& buffers) {
   rays.commit();
   const int r = setup.params.resolution, views = setup.params.viewCount;
   const float voxelSize = setup.params.voxelSize;
+  const TextureAccess textures{ctx.scene.textures};
+  const std::vector<shared::MaterialData> materials = materialData(ctx.scene);
   const glm::ivec3 extent(r, r * views, 1);
   using enum BufferId;
   Buffer flux(lpv_rsm_flux, extent), normal(lpv_rsm_normal, extent), depth(lpv_rsm_depth, extent),
@@ -35,7 +39,11 @@ void lpv::rsm(const StageContext& ctx, BufferSet& buffers) {
       const SurfaceTriangle& s = g.triangles[hit.primitive];
       const glm::vec3 p = origin + dir * hit.t;
       const float footprint = shared::rsmFootprint(v, dir, hit.t, r, voxelSize);
-      const glm::vec3 albedo = ctx.scene.materials[s.material].albedo;
+      const glm::vec3* t = &g.vertices[3 * size_t(hit.primitive)];
+      const glm::vec3 b = shared::rayTriangleHit(origin, dir, t[0], t[1], t[2]);
+      const glm::vec3 albedo =
+          shared::surfaceAlbedo(textures, s, materials[s.material], {b.x, b.y},
+                                shared::surfaceFootprint(s, shared::rsmTexelSide(v, b.z, r)));
       const size_t e = size_t(row) * size_t(r) + size_t(x);
       flux.setVec3(e, shared::rsmFlux(light, p, albedo, footprint, voxelSize));
       normal.setVec3(e, shared::facingNormal(glm::vec3(s.normal), dir));

@@ -12,6 +12,7 @@
 #include "gpu/program.h"
 #include "gpu/stages.h"
 #include "gpu/surface_raster.h"
+#include "gpu/texture_pool.h"
 #include "gpu/volumes.h"
 
 namespace voxgi::gpu {
@@ -52,6 +53,7 @@ void lpv::rsm(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   GlBuffer viewBlock(gl, createBlock(gl, setup.params, setup.views));
   GlBuffer lightBlock(gl,
                       createBuffer(gl, lights.size() * sizeof(shared::LightData), lights.data()));
+  const TexturePoolBuffers textures(gl, ctx.scene.textures);
   Program program(gl, {&shaders::lpv_rsm_vert, &shaders::lpv_rsm_frag});
   program.use();
   raster.begin();

@@ -15,6 +15,11 @@ struct SurfaceTriangle {
   uint material;  // index into the materials
   uint pad0;
   uint pad1;
+  vec2 uv0;  // texture coordinates of the three vertices (shared/surface_hit.h)
+  vec2 uv1;
+  vec2 uv2;
+  float uvPerVoxel;  // uv units per voxel of length on the triangle: sqrt(uv area / area)
+  uint pad2;
 };
 
 // One point of a cloud as the disc the gbuffer sees (std430), after the scene's triangles in the
@@ -35,9 +40,10 @@ struct SurfaceDisc {
 
 // One material (std430).
 struct MaterialData {
-  vec4 albedo;    // rgb
-  vec4 specular;  // rgb: specular colour; a: Phong shininess
-  vec4 emission;  // rgb
+  vec4 albedo;     // rgb
+  vec4 specular;   // rgb: specular colour; a: Phong shininess
+  vec4 emission;   // rgb
+  uvec4 textures;  // x: albedo texture, y: emission texture (kNoTexture: none)
 };
 
 // The surface normal facing the viewer: `normal` flipped when the camera sees its back.

@@ -48,6 +48,15 @@ VOXGI_FN float rsmFootprint(RsmView v, vec3 dir, float depth, int resolution, fl
   return side * side;
 }
 
+// The side of the texel's cross-section at distance s along its ray (the depth, its direction
+// having unit component along the view axis), in cells: the scale of its texture footprint
+// (shared/surface_hit.h).
+VOXGI_FN float rsmTexelSide(RsmView v, float s, int resolution) {
+  precise float side = 2.0f * v.extent / float(resolution);
+  if (v.perspective == 1) side = side * s;
+  return side;
+}
+
 // How far in front of an emissive triangle's plane (cells) a point must lie to receive its light
 // in the RSM. Lambert's formula gives 0 in the plane and grows with the distance from it; a hit
 // in the plane itself (the emitter's other triangle, a surface flush with it) sums edge terms
