@@ -12,9 +12,16 @@ void refusePointClouds(const Scene& scene, std::string_view technique) {
                        scene.pointClouds.front().name + " renders with --technique svo or path");
 }
 
+const char* const kDarkReason =
+    "nothing emits light: the image is black without it (plan.mode=full runs it anyway)";
+
 void EffectPlan::stage(StageId id, bool runs, std::string why) {
   const StageSpec& spec = stageSpec(id);
   items.push_back({std::string(spec.name), runs, std::move(why), &spec});
+}
+
+void EffectPlan::lightStage(StageId id, bool runs, std::string why) {
+  stage(id, runs && !dark, dark ? kDarkReason : std::move(why));
 }
 
 void EffectPlan::effect(std::string name, Effect e, bool in, std::string why) {

@@ -24,13 +24,18 @@ struct PlanItem {
 
 class EffectPlan {
  public:
-  bool full = false;            // plan.mode=full: every optional effect is computed
+  bool full = false;  // plan.mode=full: every optional effect is computed
+  // Nothing in the scene emits light (Scene::unlit) and plan.mode is auto: every stage that only
+  // carries light is out, and the technique's last stage writes the black image alone.
+  bool dark = false;
   int seriesLength = 1;         // volumes in a BufferShape::series buffer (lpv: steps + 1)
   glm::ivec2 maps{0};           // BufferShape::maps: x the side of a map, y the map count
   std::vector<PlanItem> items;  // stages in graph order, each followed by its effects
 
   // A stage of the plan and whether it runs; an effect of it (indented under its stage).
   void stage(StageId id, bool runs, std::string why);
+  // A stage that only carries light: as stage(), but out with kDarkReason in a dark plan.
+  void lightStage(StageId id, bool runs, std::string why);
   void effect(std::string name, Effect e, bool in, std::string why);
   // An effect decided without a line of its own (its stage's line says why).
   void set(Effect e, bool in) { effects_.set(size_t(e), in); }
@@ -49,6 +54,9 @@ class EffectPlan {
  private:
   std::bitset<256> effects_;  // by Effect (a uint8_t)
 };
+
+// Why a dark plan (EffectPlan::dark) leaves a stage out, as `voxgi plan` prints it.
+extern const char* const kDarkReason;
 
 // Whether the plan produces the buffer: its stage runs and its effect is on.
 bool bufferNeeded(const BufferSpec& spec, const EffectPlan& plan);

@@ -29,6 +29,14 @@ Image directOnly(const TermImages& terms) {
 
 std::optional<TermImages> techniqueTerms(const Technique& technique, const BufferSet& buffers,
                                          const Settings& settings, const Scene& scene) {
+  using enum BufferId;
+  if (!buffers.contains(common_gbuffer_object_id)) {
+    // Only a dark plan (EffectPlan::dark) runs no gbuffer: nothing emits light, every term is
+    // black.
+    TermImages black;
+    for (Image& image : black) image = Image(scene.camera.width, scene.camera.height);
+    return black;
+  }
   const LightTermBuffers ids = technique.lightTerms(settings);
   // A buffer the technique has and its plan produced, or nullptr.
   const auto find = [&](std::optional<BufferId> id) { return id ? buffers.find(*id) : nullptr; };
@@ -37,7 +45,6 @@ std::optional<TermImages> techniqueTerms(const Technique& technique, const Buffe
                *indirectSpecular = find(ids.indirectSpecular),
                *ambient = find(ids.ambientOcclusion);
   if (indirectDiffuse == nullptr) return std::nullopt;
-  using enum BufferId;
   const Buffer& objectId = buffers.at(common_gbuffer_object_id);
   const Buffer *albedo = buffers.find(common_gbuffer_pixel_albedo),
                *specular = buffers.find(common_gbuffer_pixel_specular),

@@ -44,7 +44,10 @@ StageOutputs runStage(StageBackend& backend, const StageSpec& stage, const Stage
   // Other stages' buffers by where their words live: a stage that replaced one moved them.
   std::map<BufferId, const uint32_t*> before;
   for (const auto& [id, b] : buffers) before[id] = b.words.data();
-  backend.run(stage.id, ctx, buffers);
+  if (ctx.plan.dark)
+    putDarkOutputs(ctx, stage.id, buffers);
+  else
+    backend.run(stage.id, ctx, buffers);
   StageOutputs r;
   for (const BufferSpec* b : own) {
     const bool written = buffers.contains(b->id), planned = bufferNeeded(*b, ctx.plan);

@@ -36,4 +36,14 @@ void checkStageMemory(const StageContext& ctx, StageId stage, double copies) {
                         : "grid.resolution");
 }
 
+void putDarkOutputs(const StageContext& ctx, StageId stage, BufferSet& buffers) {
+  checkStageMemory(ctx, stage);
+  const Scene& scene = ctx.scene;
+  for (const BufferSpec* b : stageBuffers(stageSpec(stage)))
+    if (bufferNeeded(*b, ctx.plan))
+      buffers.put(Buffer(b->id, shapeExtent(b->shape, scene.grid.resolution,
+                                            {scene.camera.width, scene.camera.height},
+                                            ctx.plan.seriesLength, ctx.plan.maps)));
+}
+
 }  // namespace voxgi

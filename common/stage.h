@@ -26,6 +26,11 @@ struct StageContext {
 // Bytes of the buffers `stage` produces under the plan.
 uint64_t stageBufferBytes(StageId stage, const Scene& scene, const EffectPlan& plan);
 
+// What a stage writes under a dark plan (EffectPlan::dark), on either backend: its planned
+// buffers, every word zero (the black image and its light terms). Only the technique's last stage
+// runs in such a plan.
+void putDarkOutputs(const StageContext& ctx, StageId stage, BufferSet& buffers);
+
 // Checks the grid and memory before a stage allocates its buffers; throws InputError naming the
 // scene's grid.resolution (or camera.resolution for image stages).
 void checkStageMemory(const StageContext& ctx, StageId stage, double copies = 1.0);

@@ -39,6 +39,7 @@ TEST(Buffer, ShapesAndStageBytes) {
   EXPECT_EQ(mipLevelOffset(8, 3, 6), 6u * (64u + 8u));
   Scene scene;
   scene.grid.resolution = 4;
+  scene.lights.emplace_back().intensity = glm::vec3(1.0f);  // unlit: no voxelize (EffectPlan::dark)
   Settings settings;
   const Technique& vct = findTechnique("vct");
   EXPECT_EQ(stageBufferBytes(StageId::common_voxelize, scene, vct.plan(scene, settings)),

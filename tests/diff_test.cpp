@@ -18,7 +18,7 @@ EffectPlan plan(const Scene& scene) {
 }
 
 TEST(Diff, IdenticalBuffersPass) {
-  const Scene scene = makeScene(quad(2, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16));
+  const Scene scene = litQuad();
   const BufferSet b = runCpu(scene, VoxelizeMode::conservative);
   const auto report = validation::compareStage(voxelize(), plan(scene), b, b, {});
   EXPECT_TRUE(report.pass);
@@ -32,7 +32,7 @@ TEST(Diff, IdenticalBuffersPass) {
 }
 
 TEST(Diff, InjectedDifferencesFailUnlessTheyAreTies) {
-  const Scene scene = makeScene(quad(2, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16));
+  const Scene scene = litQuad();
   const BufferSet cpu = runCpu(scene, VoxelizeMode::conservative);
   BufferSet gpu = cpu;
   Buffer weight = gpu.take(BufferId::common_voxelize_weight_sum);
@@ -95,6 +95,7 @@ TEST(Diff, VoxelizeTiesAreTheVoxelsOnADecisionBoundary) {
 // at depths the GPU's depth buffer cannot separate.
 TEST(Diff, DiscTiesAreRimsAndDepthsTooCloseToTell) {
   Scene scene = makeScene(quad(2, 0.05, {0.0, 0.0}, {0.1, 0.1}), unitGrid(16));  // one far wall
+  scene.lights.push_back(testLight());
   scene.camera.position = {0.5, 0.5, 2.0};
   scene.camera.lookAt = {0.5, 0.5, 0.5};
   scene.camera.width = scene.camera.height = 32;

@@ -35,6 +35,7 @@ Scene wallScene() {
   scene.camera.lookAt = {0.5, 0.5, 0.0};
   scene.camera.fovYDeg = 60.0;
   scene.camera.width = scene.camera.height = 64;
+  scene.lights.push_back(testLight());  // unlit, its plan would run no gbuffer (EffectPlan::dark)
   return scene;
 }
 
@@ -86,6 +87,7 @@ Scene texturedFloor(const DecodedImage& image, uint32_t wrap) {
   scene.materials[0].albedo = glm::vec3(1.0f);
   scene.materials[0].albedoTexture =
       scene.textures.texture("floor", wrap, wrap, [&] { return image; });
+  scene.lights.push_back(testLight());
   return withCamera(scene, {0.5, 1.0, 0.5}, {0.5, 0.0, 0.5}, {0.0, 0.0, 1.0}, 40.0, 16);
 }
 

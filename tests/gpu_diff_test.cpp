@@ -32,7 +32,7 @@ class FaultyBackend : public StageBackend {
 };
 
 std::vector<validation::StageReport> diffVoxelize(StageBackend& cpu, StageBackend& gpu) {
-  const Scene scene = makeScene(quad(2, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16));
+  const Scene scene = litQuad();
   const Settings settings;
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
   return validation::diffStages(StageContext{vct(), scene, settings, tris}, cpu, gpu,
@@ -78,7 +78,7 @@ TEST(GpuDiff, TheRealBackendsPassAndSkippedStagesSaySo) {
       EXPECT_NE(b.status.find("not planned"), std::string::npos);
     }
   }
-  const Scene scene = makeScene(quad(2, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16));
+  const Scene scene = litQuad();
   const Settings settings;  // bounce.count=0
   const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
   const auto skipped = validation::diffStages(StageContext{vct(), scene, settings, tris}, cpu, gpu,

@@ -36,7 +36,7 @@ class BrokenBackend : public StageBackend {
 };
 
 Scene smallScene() {
-  return makeScene(quad(2, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16));
+  return litQuad();
 }
 
 TEST(Pipeline, AStageMustWriteExactlyItsPlannedBuffers) {
@@ -99,6 +99,52 @@ TEST(Pipeline, RunsWhatThePlanSaysInGraphOrder) {
   const auto withBounce = plannedStages(bounced, &stageSpec(StageId::vct_bounce));
   ASSERT_EQ(withBounce.size(), 4u);
   EXPECT_EQ(withBounce.back()->id, StageId::vct_bounce);
+}
+
+// A backend that counts the stages it is asked to run.
+class CountingBackend : public StageBackend {
+ public:
+  std::string name() const override { return "counting"; }
+  void run(StageId stage, const StageContext& ctx, BufferSet& buffers) override {
+    ++runs;
+    cpu_.run(stage, ctx, buffers);
+  }
+  int runs = 0;
+
+ private:
+  cpu::CpuBackend cpu_;
+};
+
+// Nothing in the quad's scene emits light: every technique's plan keeps its last stage alone, no
+// backend runs anything, and the image is black (EffectPlan::dark); plan.mode=full still runs
+// every stage. A light brings the stages back.
+TEST(Pipeline, ADarkSceneRunsNoStageAndItsImageIsBlack) {
+  Scene scene = makeScene(quad(2, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16));
+  scene.camera.width = scene.camera.height = 16;
+  ASSERT_TRUE(scene.unlit());
+  const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
+  for (const Technique& technique : techniques()) {
+    Settings settings;
+    const StageContext ctx{technique, scene, settings, tris};
+    EXPECT_TRUE(ctx.plan.dark) << technique.name;
+    const std::vector<const StageSpec*> planned = plannedStages(ctx);
+    ASSERT_EQ(planned.size(), 1u) << technique.name;
+    EXPECT_EQ(planned[0], technique.steps().back()) << technique.name;
+    CountingBackend backend;
+    BufferSet buffers;
+    runPipeline(backend, ctx, buffers);
+    EXPECT_EQ(backend.runs, 0) << technique.name;
+    const Buffer& image = buffers.at(technique.image);
+    EXPECT_EQ(image.extent, glm::ivec3(16, 16, 1));
+    for (uint32_t w : image.words) ASSERT_EQ(w, 0u) << technique.name;
+    settings.planMode = PlanMode::full;
+    const StageContext full{technique, scene, settings, tris};
+    EXPECT_FALSE(full.plan.dark);
+    EXPECT_GT(plannedStages(full).size(), 3u) << technique.name;
+  }
+  scene.lights.push_back(testLight());
+  Settings settings;
+  EXPECT_FALSE((StageContext{vct(), scene, settings, tris}.plan.dark));
 }
 
 TEST(Pipeline, StageNamesResolveWithinTheTechnique) {

@@ -98,13 +98,31 @@ glm::dvec3 meanOf(const Image& image) {
   return sum / double(image.pixels.size());
 }
 
+Light testLight() {
+  Light sun;
+  sun.type = Light::Type::directional;
+  sun.direction = {0.0, -1.0, 0.0};
+  sun.intensity = glm::vec3(1.0f);
+  return sun;
+}
+
+Scene litQuad() {
+  Scene scene = makeScene(quad(2, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16));
+  scene.lights.push_back(testLight());
+  return scene;
+}
+
 BufferSet runCpu(const Scene& scene, VoxelizeMode mode) {
   Settings settings;
   settings.voxelizeMode = mode;
-  const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
+  // Most test scenes have no light, which the planner answers with a black image and no
+  // voxelization (EffectPlan::dark); voxelize does not read lights, so one is added here.
+  Scene lit = scene;
+  if (lit.unlit()) lit.lights.push_back(testLight());
+  const VoxelTriangles tris = prepareVoxelTriangles(lit, lit.grid);
   BufferSet out;
   cpu::CpuBackend cpu;
-  runPipeline(cpu, StageContext{vct(), scene, settings, tris}, out,
+  runPipeline(cpu, StageContext{vct(), lit, settings, tris}, out,
               &stageSpec(StageId::common_voxelize));
   return out;
 }

@@ -39,7 +39,13 @@ double polygonFormFactor(const std::vector<glm::dvec3>& v, glm::dvec3 p, glm::dv
 // facing it: four corner rectangles of Howell's catalogue (configuration B-3).
 double squareFormFactor(double s, double h);
 
-// The voxelize stage on the CPU.
+// A directional light of irradiance 1 straight down: what a test scene gets where a stage under
+// test runs only in a lit scene (EffectPlan::dark).
+Light testLight();
+// The quad z = 0.3 over [0.1, 0.9]^2 in the unit grid of 16 voxels, lit by testLight: a scene in
+// which every stage of vct runs.
+Scene litQuad();
+// The voxelize stage on the CPU (the scene lit by testLight if nothing lights it).
 BufferSet runCpu(const Scene& scene, VoxelizeMode mode);
 // Runs the CPU stages the technique's plan runs (vct's by default), in graph order, up to and
 // including `last` ("mip", "vct/mip").

@@ -158,6 +158,7 @@ TEST(VoxelizeHardCases, ResolutionOne) {
 
 TEST(VoxelizeHardCases, ResolutionTooLargeForMemoryIsAnErrorBeforeAllocating) {
   Scene scene = makeScene(quad(2, 0.5, {0.25, 0.25}, {0.75, 0.75}), unitGrid(2048));
+  scene.lights.push_back(testLight());  // so that the plan voxelizes (EffectPlan::dark)
   try {
     const Settings settings;
     const VoxelTriangles none{};

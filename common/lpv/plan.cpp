@@ -13,6 +13,7 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   const LpvSettings& s = settings.lpv;
   EffectPlan p;
   p.full = settings.planMode == PlanMode::full;
+  p.dark = scene.unlit() && !p.full;
   std::string emitters;
   for (const Mesh& m : scene.meshes) {
     const Material& mat = scene.materials.at(m.material);
@@ -22,11 +23,12 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   // Emissive triangles as area lights (emitters.mode): direct light per pixel, their RSMs' texels
   // the VPLs of their first bounce; else VPLs of their own, as [Martin 2012] injects them.
   const size_t areaLights = areaLightCount(scene, settings.vct.emitters);
-  p.stage(StageId::common_voxelize, true,
-          s.occlusion == LpvOcclusion::on
-              ? "surface area and normals per voxel -> the geometry volume"
-              : "propagate.occlusion=off, but the voxel volumes are the scene's grid for every "
-                "technique");
+  p.lightStage(
+      StageId::common_voxelize, true,
+      s.occlusion == LpvOcclusion::on
+          ? "surface area and normals per voxel -> the geometry volume"
+          : "propagate.occlusion=off, but the voxel volumes are the scene's grid for every "
+            "technique");
   const int views = rsmViewCount(scene, settings);
   std::ostringstream rsm;
   if (views == 0)
@@ -35,14 +37,14 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
     rsm << scene.lights.size() << " analytic light(s) and " << areaLights
         << " emissive triangle(s) as area lights (emitters.mode): " << views << " view(s) of "
         << s.rsmResolution << "^2 texels (rsm.resolution)";
-  p.stage(StageId::lpv_rsm, views > 0, rsm.str());
+  p.lightStage(StageId::lpv_rsm, views > 0, rsm.str());
   p.maps = glm::ivec2(s.rsmResolution, views);
   std::string sources =
       emitters.empty() || areaLights > 0 ? "" : "VPLs on emissive material " + emitters;
   if (views > 0) sources += std::string(sources.empty() ? "" : " and ") + "a VPL per RSM texel";
-  p.stage(StageId::lpv_inject, true,
-          sources.empty() ? "no emissive material and no analytic light: the volume stays dark"
-                          : sources);
+  p.lightStage(StageId::lpv_inject, true,
+               sources.empty() ? "no emissive material and no analytic light: the volume stays dark"
+                               : sources);
   const ShBuffers sh = shBuffers(s);
   p.set(sh.coefficients, true);
   const bool fromRsm = s.geometry == LpvGeometry::rsm;
@@ -50,18 +52,18 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
       !fromRsm    ? "voxelize's surfaces"
       : views > 0 ? "the RSM texels' surfaces (inject_geometry.blockers=rsm)"
                   : "inject_geometry.blockers=rsm, but no analytic light: nothing blocks";
-  p.stage(StageId::lpv_inject_geometry, s.occlusion == LpvOcclusion::on || p.full,
-          s.occlusion == LpvOcclusion::on
-              ? "blockers for propagate (propagate.occlusion=on) from " + source
-          : p.full ? "propagate.occlusion=off; plan.mode=full computes it"
-                   : "propagate.occlusion=off");
+  p.lightStage(StageId::lpv_inject_geometry, s.occlusion == LpvOcclusion::on || p.full,
+               s.occlusion == LpvOcclusion::on
+                   ? "blockers for propagate (propagate.occlusion=on) from " + source
+               : p.full ? "propagate.occlusion=off; plan.mode=full computes it"
+                        : "propagate.occlusion=off");
   p.set(Effect::rsm_blockers, fromRsm);
   const int steps = propagationSteps(s, scene.grid.resolution);
   std::ostringstream why;
   why << steps << " steps over " << s.directionCount() << " directions, " << s.bands
       << " SH bands, " << settingValue(settings, "lpv.storage") << " volumes ("
       << (s.steps > 0 ? "propagate.steps" : "propagate.steps=0: half the grid's resolution") << ")";
-  p.stage(StageId::lpv_propagate, true, why.str());
+  p.lightStage(StageId::lpv_propagate, true, why.str());
   p.seriesLength = steps + 1;
   p.set(Effect::f16, s.storage == LpvStorage::f16);
   const bool history = s.history == LpvToggle::on || settings.inspect || p.full;
@@ -70,16 +72,18 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
            : settings.inspect         ? "voxgi diff and dump keep every step"
            : p.full                   ? "propagate.history=off; plan.mode=full keeps them"
                                       : "propagate.history=off");
-  p.stage(StageId::common_gbuffer, true, "the surface each pixel sees");
+  p.lightStage(StageId::common_gbuffer, true, "the surface each pixel sees");
   // One effect for the voxel and pixel emission buffers: the voxels' is unused here, and costs
   // only a volume next to the sums voxelize keeps anyway.
   p.effect("emission per pixel", Effect::emission, p.full || !emitters.empty(),
            emitters.empty() ? "no emissive material" : "emissive material " + emitters);
   p.set(Effect::direct_light, views > 0 || p.full);
   p.stage(StageId::lpv_shade, true,
-          views > 0 ? "irradiance from the accumulated volume, direct light with the RSM depth as "
-                      "shadow map, x albedo + emission"
-                    : "irradiance from the accumulated volume x albedo + emission");
+          p.dark ? "the black image alone"
+          : views > 0
+              ? "irradiance from the accumulated volume, direct light with the RSM depth as "
+                "shadow map, x albedo + emission"
+              : "irradiance from the accumulated volume x albedo + emission");
   return p;
 }
 

@@ -33,6 +33,7 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   const int depth = treeDepth(scene);
   EffectPlan p;
   p.full = settings.planMode == PlanMode::full;
+  p.dark = scene.unlit() && !p.full;
   size_t points = 0, triangles = 0;
   for (const PointCloud& c : scene.pointClouds) points += c.size();
   for (const Mesh& m : scene.meshes) triangles += m.triangles.size();
@@ -43,7 +44,7 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   if (triangles > 0)
     build << ", " << triangles << " triangle(s) sampled at " << s.meshDensity
           << " points per leaf face (build.mesh_density)";
-  p.stage(StageId::svo_build, true, build.str());
+  p.lightStage(StageId::svo_build, true, build.str());
   std::ostringstream frames;
   const size_t areaLights = areaLightCount(scene, settings.vct.emitters);
   frames << scene.lights.size() << " analytic light(s)";
@@ -53,17 +54,22 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
          << s.frames << " frame(s) (propagate.frames)"
          << (s.clearEachFrame == SvoToggle::on ? " each gathering from the direct light alone"
                                                : ", one more bounce each");
-  p.stage(StageId::svo_propagate, true, frames.str());
-  p.stage(StageId::svo_mip, true,
-          "the last frame's radiance up the tree (svo.first_step=" +
-              settingValue(settings, "svo.first_step") + "), the gathered light's leaf bricks");
-  p.stage(StageId::common_gbuffer, true, "the surface each pixel sees (point clouds as discs)");
+  p.lightStage(StageId::svo_propagate, true, frames.str());
+  p.lightStage(StageId::svo_mip, true,
+               "the last frame's radiance up the tree (svo.first_step=" +
+                   settingValue(settings, "svo.first_step") +
+                   "), the gathered light's leaf bricks");
+  p.lightStage(StageId::common_gbuffer, true,
+               "the surface each pixel sees (point clouds as discs)");
   const std::string emitters = materialsWith(scene, [](const Material& m) { return m.emissive(); });
   p.effect("emission per pixel", Effect::emission, p.full || !emitters.empty(),
            emitters.empty() ? "no emissive material" : "emissive material " + emitters);
-  p.stage(StageId::svo_shade, true,
-          "shadow cones and the specular cone through the tree, diffuse light from the leaves (" +
-              settingValue(settings, "shade.filter") + ")");
+  p.stage(
+      StageId::svo_shade, true,
+      p.dark
+          ? "the black image alone"
+          : "shadow cones and the specular cone through the tree, diffuse light from the leaves (" +
+                settingValue(settings, "shade.filter") + ")");
   const std::string glossy = materialsWith(scene, [](const Material& m) { return m.glossy(); });
   p.effect("specular cone", Effect::specular, p.full || !glossy.empty(),
            !glossy.empty() ? "glossy material " + glossy

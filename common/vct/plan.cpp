@@ -34,10 +34,11 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   EffectPlan p;
   p.full = settings.planMode == PlanMode::full;
   const std::string full = "plan.mode=full computes it anyway";
+  p.dark = scene.unlit() && !p.full;
 
-  p.stage(StageId::common_voxelize, true,
-          "surfaces -> albedo, normal, opacity volumes; the geometry is static, so one "
-          "voxelization serves every frame and any relighting");
+  p.lightStage(StageId::common_voxelize, true,
+               "surfaces -> albedo, normal, opacity volumes; the geometry is static, so one "
+               "voxelization serves every frame and any relighting");
   const MeshesWith emitters = meshesWith(scene, [](const Material& m) { return m.emissive(); });
   p.effect("emission volume", Effect::emission, p.full || !emitters.names.empty(),
            !emitters.names.empty() ? "emissive material " + emitters.names
@@ -59,8 +60,8 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
                          " emissive triangles, in the voxels)"
                    : "");
   lights << " -> radiance per voxel";
-  p.stage(StageId::vct_light_voxels, true, lights.str());
-  p.stage(StageId::vct_mip, true, settingValue(settings, "mip.mode") + " pyramid (mip.mode)");
+  p.lightStage(StageId::vct_light_voxels, true, lights.str());
+  p.lightStage(StageId::vct_mip, true, settingValue(settings, "mip.mode") + " pyramid (mip.mode)");
   p.set(Effect::isotropic, s.mip == MipMode::isotropic);
   p.set(Effect::anisotropic, s.mip == MipMode::anisotropic);
   std::ostringstream bounce;
@@ -68,15 +69,15 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
          << (s.bounceCount > 0
                  ? ": diffuse cones from every voxel, then the pyramid again, per bounce"
                  : ": the first bounce only (the pixels' diffuse cones)");
-  p.stage(StageId::vct_bounce, s.bounceCount > 0, bounce.str());
-  p.stage(StageId::common_gbuffer, true, "the surface each pixel sees");
+  p.lightStage(StageId::vct_bounce, s.bounceCount > 0, bounce.str());
+  p.lightStage(StageId::common_gbuffer, true, "the surface each pixel sees");
 
-  p.stage(StageId::vct_trace_cones, true, "per pixel");
+  p.lightStage(StageId::vct_trace_cones, true, "per pixel");
   std::ostringstream diffuse;
   diffuse << diffuseCones(s.cones).size() << " diffuse cones ("
           << settingValue(settings, "cones.set") << ", " << settingValue(settings, "cones.diffuse")
           << ")";
-  p.note("diffuse cones", true, diffuse.str());
+  p.note("diffuse cones", !p.dark, diffuse.str());
   std::ostringstream shadow;
   if (scene.lights.empty() && areaLights == 0)
     shadow << "no analytic or area lights";
@@ -95,7 +96,8 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
            askedAo  ? "ao.mode=on"
            : p.full ? "ao.mode=off, so not applied; " + full
                     : "ao.mode=off");
-  p.stage(StageId::vct_compose, true, "material x light terms + emission");
+  p.stage(StageId::vct_compose, true,
+          p.dark ? "the black image alone" : "material x light terms + emission");
   return p;
 }
 

@@ -13,6 +13,10 @@ TEST(LpvPlan, RsmRunsForAnalyticLightsAndAreaLights) {
   const Technique& t = lpvTechnique();
   Settings settings = techniqueDefaults(t);
   EffectPlan plan = t.plan(scene, settings);
+  EXPECT_TRUE(plan.dark);  // nothing emits light
+  EXPECT_EQ(plan.whySkipped(StageId::lpv_rsm), kDarkReason);
+  scene.background = glm::vec3(0.2f);  // a sky lights it, but no light makes a shadow map
+  plan = t.plan(scene, settings);
   EXPECT_FALSE(plan.runs(StageId::lpv_rsm));
   EXPECT_EQ(plan.whySkipped(StageId::lpv_rsm), "no analytic lights");
   EXPECT_FALSE(plan.on(Effect::direct_light));
