@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "common/grid.h"
+#include "common/scene_motion.h"
 #include "common/texture.h"
 
 namespace voxgi {
@@ -107,6 +108,8 @@ struct Scene {
   // Set when voxgi lit a bare file that has no light of its own (common/scene/default_lights.cpp),
   // for `voxgi plan` and `render` to say so.
   bool defaultLights = false;
+  // What moves, and how (docs/motion.md); empty for a still scene. sceneAt evaluates it.
+  SceneMotion motion;
 
   size_t triangleCount() const;
   // Nothing emits light: no light, no emissive material on a mesh or cloud, a black background.

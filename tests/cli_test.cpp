@@ -464,5 +464,34 @@ TEST(Cli, OutputsAreCheckedBeforeTheWork) {
     EXPECT_EQ(e.path().filename().string().find(".voxgi-"), std::string::npos) << e.path();
 }
 
+// render --frames: one image per frame, named by the --out pattern, the bunny turning between them
+// (docs/motion.md); a bad range or a name without a frame field is one line, exit 2, nothing
+// written.
+TEST(Cli, RenderFramesWritesOneImagePerFrame) {
+  const std::string dir = testTempDir(), scene = sourcePath("scenes/bunny_turning.json");
+  const std::string small = " --resolution 16 --image 32 --backend cpu";
+  const CommandResult r =
+      voxgi("render " + scene + small + " --frames 0:12:6 --out " + dir + "f_%03d.exr");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const Image a = readExr(dir + "f_000.exr"), b = readExr(dir + "f_006.exr"),
+              c = readExr(dir + "f_012.exr");
+  EXPECT_NE(a.pixels, b.pixels);  // a quarter turn apart
+  EXPECT_NE(b.pixels, c.pixels);
+  EXPECT_FALSE(std::filesystem::exists(dir + "f_003.exr"));
+  // A single image of an animated scene is its frame 0.
+  ASSERT_EQ(voxgi("render " + scene + small + " --out " + dir + "one.exr").code, 0);
+  EXPECT_EQ(readExr(dir + "one.exr").pixels, a.pixels);
+  for (const std::string& bad :
+       {" --frames 3:1 --out " + dir + "g_%03d.exr", " --frames 0:2 --out " + dir + "g.exr",
+        " --frames 0:x --out " + dir + "g_%03d.exr",
+        " --frames 0:1 --out " + dir + "g_%03d_%d.exr"}) {
+    const CommandResult e = voxgi("render " + scene + small + bad);
+    EXPECT_EQ(e.code, 2) << bad << "\n" << e.output;
+    EXPECT_EQ(std::count(e.output.begin(), e.output.end(), '\n'), 1) << e.output;
+  }
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    EXPECT_FALSE(e.path().filename().string().starts_with("g")) << e.path();
+}
+
 }  // namespace
 }  // namespace voxgi::test

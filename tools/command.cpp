@@ -79,8 +79,12 @@ std::string StageRun::backendName() const {
 
 StageRun runStages(const SceneOptions& o, const StageSpec* last, bool inspect) {
   // Input first: a bad scene or --set fails before any backend starts.
+  findTechnique(o.technique);
+  return runStages(o, o.load(), last, inspect);
+}
+
+StageRun runStages(const SceneOptions& o, Scene scene, const StageSpec* last, bool inspect) {
   const Technique& technique = findTechnique(o.technique);
-  Scene scene = o.load();
   const Settings settings = o.settings(scene, inspect);
   StageRun run{std::move(scene),
                settings,

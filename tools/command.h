@@ -84,6 +84,8 @@ struct StageRun {
   std::string backendName() const;
 };
 StageRun runStages(const SceneOptions& o, const StageSpec* last, bool inspect = false);
+// The same on a scene already loaded (one frame of a sequence: sceneAt).
+StageRun runStages(const SceneOptions& o, Scene scene, const StageSpec* last, bool inspect = false);
 
 // The buffers `stage` left in the set (with the fixed-point sums only when asked).
 std::vector<const Buffer*> buffersOf(const BufferSet& set, const StageSpec& stage, bool withSums);

@@ -19,6 +19,7 @@
 #include "common/light_terms.h"
 #include "common/io/output_file.h"
 #include "tools/command.h"
+#include "tools/frames.h"
 #include "validation/reference/path_trace.h"
 
 namespace voxgi::tools {
@@ -29,6 +30,8 @@ struct RenderOptions {
   reference::PathTraceOptions path;
   std::string out, png;
   bool terms = false;
+  std::string frames;  // --frames A:B[:STEP]; empty: one image
+  double fps = 24.0;
 };
 
 // An image with a NaN or infinite pixel is not written: it would be garbage with exit 0. Input
@@ -53,9 +56,8 @@ void checkOutputs(const RenderOptions& o, bool variance) {
 }
 
 // A technique of the registry: every stage it plans on the chosen backend, then its image.
-int renderTechnique(const RenderOptions& o) {
-  checkOutputs(o, false);
-  const StageRun run = runStages(o.scene, nullptr);
+int renderTechnique(const RenderOptions& o, Scene scene) {
+  const StageRun run = runStages(o.scene, std::move(scene), nullptr);
   const Technique& technique = findTechnique(o.scene.technique);
   const Image image = bufferImage(run.buffers.at(technique.image));
   requireFinite(image, std::string(technique.name) + "'s image");
@@ -96,9 +98,7 @@ std::function<void(double)> progressPrinter() {
 }
 
 // The reference path tracer; Ctrl-C stops it with nothing written (exit 130).
-int renderPath(const RenderOptions& o) {
-  checkOutputs(o, true);
-  const Scene scene = o.scene.load();
+int renderPath(const RenderOptions& o, const Scene& scene) {
   reference::PathTraceOptions options = o.path;
   options.cancel = &interrupted;
   std::signal(SIGINT, [](int) { interrupted = true; });
@@ -123,6 +123,33 @@ int renderPath(const RenderOptions& o) {
             << reference::variancePath(o.out) << "\n";
   if (const std::string note = lightingNote(scene); !note.empty())
     std::cerr << "voxgi: " << note << "\n";
+  return kExitOk;
+}
+
+// One image, or the frames of --frames, each of the scene at its time (frame / fps seconds) with
+// its own files; an animated scene's single image is its frame 0. Every output is checked before
+// the first frame renders.
+int render(const RenderOptions& o) {
+  const bool path = o.scene.technique == "path";
+  std::vector<std::pair<int, RenderOptions>> frames;
+  if (o.frames.empty()) {
+    frames.emplace_back(0, o);
+  } else {
+    const FrameRange range = parseFrames(o.frames, "--frames");
+    for (int f = range.first; f <= range.last; f += range.step) {
+      RenderOptions frame = o;
+      frame.out = framePath(o.out, f, "--out");
+      if (!o.png.empty()) frame.png = framePath(o.png, f, "--png");
+      frames.emplace_back(f, frame);
+    }
+  }
+  for (const auto& [f, frame] : frames) checkOutputs(frame, path);
+  const Scene scene = o.scene.load();
+  for (const auto& [f, frame] : frames) {
+    const Scene at = scene.motion.empty() ? scene : sceneAt(scene, frameSeconds(f, o.fps));
+    const int code = path ? renderPath(frame, at) : renderTechnique(frame, at);
+    if (code != kExitOk) return code;
+  }
   return kExitOk;
 }
 
@@ -175,8 +202,12 @@ void addRenderCommand(CLI::App& app, Globals& globals, Commands& commands) {
   std::string settingsHelp;
   for (const Technique& t : techniques()) settingsHelp += describeSettings(t);
   cmd->footer(settingsHelp);
-  commands.push_back(
-      {cmd, [o] { return o->scene.technique == "path" ? renderPath(*o) : renderTechnique(*o); }});
+  cmd->add_option("--frames", o->frames,
+                  "render frames A to B (A:B, or A:B:STEP) of an animated scene, frame f at f / "
+                  "fps seconds; --out (and --png) then hold a frame field such as %04d "
+                  "(docs/motion.md)");
+  cmd->add_option("--fps", o->fps, "frames per second of --frames")->check(CLI::Range(1e-3, 1e6));
+  commands.push_back({cmd, [o] { return render(*o); }});
 }
 
 }  // namespace voxgi::tools

@@ -15,100 +15,16 @@
 #include "common/error.h"
 #include "common/io/input_file.h"
 #include "common/io/texture_read.h"
+#include "common/scene/json_field.h"
+#include "common/scene/motion_load.h"
 #include "common/scene/point_cloud_ply.h"
 #include "common/settings.h"
 
 namespace voxgi {
 namespace {
 
-// How far from the origin a light or the camera may be (as the grid's corner, checkGrid).
-
 using nlohmann::json;
 namespace fs = std::filesystem;
-
-// A JSON value together with its path ("lights[2].intensity"), for error messages.
-struct Field {
-  const std::string& file;
-  const json& value;
-  std::string path;
-
-  [[noreturn]] void fail(const std::string& reason) const { throw InputError(file, path, reason); }
-
-  // The member `key`; a missing one is an error naming it (required fields are read with at()).
-  Field at(const std::string& key) const {
-    const std::string child = path.empty() ? key : path + "." + key;
-    if (!value.is_object()) fail("must be an object");
-    const auto it = value.find(key);
-    if (it == value.end()) throw InputError(file, child, "missing (this field is required)");
-    return {file, *it, child};
-  }
-  Field at(size_t i) const { return {file, value.at(i), path + "[" + std::to_string(i) + "]"}; }
-  bool has(const std::string& key) const { return value.contains(key); }
-
-  void allowKeys(std::initializer_list<const char*> keys) const {
-    if (!value.is_object()) fail("must be an object");
-    std::set<std::string> allowed(keys.begin(), keys.end());
-    for (const auto& [key, v] : value.items())
-      if (!allowed.count(key)) fail("unknown field '" + key + "'");
-  }
-  double number() const {
-    if (!value.is_number()) fail("must be a number");
-    const double d = value.get<double>();
-    if (!std::isfinite(d)) fail("must be finite");
-    return d;
-  }
-  double number(double lo, double hi) const {
-    const double d = number();
-    if (d < lo || d > hi) fail("must be in [" + fmt(lo) + ", " + fmt(hi) + "], got " + fmt(d));
-    return d;
-  }
-  int integer(int lo, int hi) const {
-    if (!value.is_number_integer()) fail("must be an integer");
-    const auto i = value.get<int64_t>();
-    if (i < lo || i > hi)
-      fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " +
-           std::to_string(i));
-    return static_cast<int>(i);
-  }
-  bool boolean() const {
-    if (!value.is_boolean()) fail("must be true or false");
-    return value.get<bool>();
-  }
-  std::string string() const {
-    if (!value.is_string()) fail("must be a string");
-    return value.get<std::string>();
-  }
-  glm::dvec3 vec3() const {
-    if (!value.is_array() || value.size() != 3) fail("must be an array of 3 numbers");
-    return {at(0).number(), at(1).number(), at(2).number()};
-  }
-  // A position: rendering subtracts positions and squares distances in float, so each coordinate
-  // must stay well inside float's range (the grid is at most 1e15 from the origin as well).
-  glm::dvec3 position() const {
-    const glm::dvec3 p = vec3();
-    for (int c = 0; c < 3; ++c)
-      if (std::abs(p[c]) > kMaxCoordinate)
-        fail("must lie within " + fmt(kMaxCoordinate) + " of the origin, got " + fmt(p[c]));
-    return p;
-  }
-  // A direction, normalised in double whatever its length (1e-160 or 1e308): the components are
-  // scaled by the largest first, so the length neither underflows nor overflows.
-  glm::dvec3 direction() const {
-    const glm::dvec3 d = vec3();
-    const double big = std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)});
-    if (big == 0.0) fail("must be non-zero");
-    return glm::normalize(d / big);
-  }
-  glm::vec3 color(double lo, double hi) const {
-    if (!value.is_array() || value.size() != 3) fail("must be an array of 3 numbers");
-    return glm::vec3(at(0).number(lo, hi), at(1).number(lo, hi), at(2).number(lo, hi));
-  }
-  static std::string fmt(double d) {
-    std::ostringstream s;
-    s << d;
-    return s.str();
-  }
-};
 
 // A material's texture (`albedo_texture`, `emission_texture`): a PNG or JPEG file relative to the
 // scene file, sampled with `texture_wrap` on both axes (docs/textures.md).
@@ -142,28 +58,9 @@ void readMaterial(const Field& f, Material& m, Scene& scene) {
     m.emissionTexture = materialTexture(f.at("emission_texture"), scene, wrap);
 }
 
-glm::dmat4 readTransform(const Field& f) {
-  f.allowKeys({"translate", "rotate_deg", "scale"});
-  glm::dmat4 m(1.0);
-  if (f.has("translate")) m = glm::translate(m, f.at("translate").vec3());
-  if (f.has("rotate_deg")) {  // applied as Z * Y * X (X first)
-    const glm::dvec3 r = glm::radians(f.at("rotate_deg").vec3());
-    m = glm::rotate(m, r.z, {0, 0, 1});
-    m = glm::rotate(m, r.y, {0, 1, 0});
-    m = glm::rotate(m, r.x, {1, 0, 0});
-  }
-  if (f.has("scale")) {
-    const Field s = f.at("scale");
-    const glm::dvec3 k = s.value.is_array() ? s.vec3() : glm::dvec3(s.number());
-    if (k.x == 0.0 || k.y == 0.0 || k.z == 0.0) s.fail("must be non-zero");
-    m = glm::scale(m, k);
-  }
-  return m;
-}
-
 Light readLight(const Field& f) {
-  f.allowKeys(
-      {"type", "position", "direction", "intensity", "spot_angle_deg", "falloff", "casts_shadows"});
+  f.allowKeys({"type", "position", "direction", "intensity", "spot_angle_deg", "falloff",
+               "casts_shadows", "animation"});
   Light l;
   const std::string type = f.at("type").string();
   const std::optional<Light::Type> kind = lightType(type);
@@ -202,7 +99,7 @@ Light readLight(const Field& f) {
 }
 
 Camera readCamera(const Field& f) {
-  f.allowKeys({"position", "look_at", "up", "fov_y_deg", "resolution"});
+  f.allowKeys({"position", "look_at", "up", "fov_y_deg", "resolution", "animation"});
   Camera c;
   c.position = f.at("position").position();
   c.lookAt = f.at("look_at").position();
@@ -302,7 +199,7 @@ PointCloudOptions readPointCloud(const Field& f, Scene& scene, size_t namedMater
   const std::optional<uint32_t> named = namedMaterial(f, scene, namedMaterials);
   const uint32_t material = named ? *named : defaultMaterial(scene);
   const glm::dmat4 transform =
-      f.has("transform") ? readTransform(f.at("transform")) : glm::dmat4(1.0);
+      f.has("transform") ? readTransformFields(f.at("transform")).matrix() : glm::dmat4(1.0);
   importPointCloud(scene, cloudPath.string(), transform, material, options);
   return options;
 }
@@ -468,7 +365,7 @@ MeshFileExtras readMeshes(const Field& root, Scene& scene, size_t namedMaterials
   if (!meshes.value.is_array()) meshes.fail("must be an array");
   for (size_t i = 0; i < meshes.value.size(); ++i) {
     const Field m = meshes.at(i);
-    m.allowKeys({"file", "material", "transform"});
+    m.allowKeys({"file", "material", "transform", "animation"});
     const Field file = m.at("file");
     const fs::path meshPath = fs::path(scene.file).parent_path() / file.string();
     try {
@@ -477,10 +374,15 @@ MeshFileExtras readMeshes(const Field& root, Scene& scene, size_t namedMaterials
       file.fail(e.what());  // the scene file and field, then the mesh file and what is wrong
     }
     const std::optional<uint32_t> material = namedMaterial(m, scene, namedMaterials);
-    const glm::dmat4 transform =
-        m.has("transform") ? readTransform(m.at("transform")) : glm::dmat4(1.0);
+    MeshMotion motion;
+    if (m.has("transform")) motion.loaded = readTransformFields(m.at("transform"));
+    if (m.has("animation")) readMeshMotion(m.at("animation"), motion);
     const size_t before = scene.materials.size();
-    MeshFileExtras carried = importMeshFile(scene, meshPath.string(), transform, material);
+    motion.firstMesh = scene.meshes.size();
+    MeshFileExtras carried =
+        importMeshFile(scene, meshPath.string(), motion.loaded.matrix(), material);
+    motion.meshCount = scene.meshes.size() - motion.firstMesh;
+    if (m.has("animation")) scene.motion.meshes.push_back(motion);
     for (size_t k = before; k < scene.materials.size(); ++k)
       for (size_t j = 0; j < namedMaterials; ++j)
         if (scene.materials[k].name == scene.materials[j].name)
@@ -544,13 +446,19 @@ Scene loadScene(const std::string& path, const SceneLoadOptions& options) {
   });
   // The scene file's lights and camera replace its mesh files' (docs/scene-format.md, "glTF").
   if (root.has("lights"))
-    forEachOf(root, "lights",
-              [&](const Field& light) { scene.lights.push_back(readLight(light)); });
+    forEachOf(root, "lights", [&](const Field& light) {
+      if (light.has("animation"))
+        scene.motion.lights.push_back(readLightMotion(light.at("animation"), scene.lights.size()));
+      scene.lights.push_back(readLight(light));
+    });
   else
     scene.lights = extras.lights;
   const std::optional<Camera> fileCamera = chosenCamera(path, extras.cameras, options);
   if (root.has("camera")) scene.camera = readCamera(root.at("camera"));
-  if (fileCamera && (!options.camera.empty() || !root.has("camera"))) scene.camera = *fileCamera;
+  if (fileCamera && (!options.camera.empty() || !root.has("camera")))
+    scene.camera = *fileCamera;
+  else if (root.has("camera") && root.at("camera").has("animation"))
+    scene.motion.camera = readCameraMotion(root.at("camera").at("animation"));
   if (root.has("background")) scene.background = root.at("background").color(0.0, 1e9);
   if (root.has("settings")) scene.settings = readSettings(root.at("settings"));
   validateGeometry(scene);
