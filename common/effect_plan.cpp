@@ -87,4 +87,13 @@ bool meshInView(const Scene& scene, const Mesh& mesh) {
   return true;
 }
 
+bool EffectPlan::sameDecisions(const EffectPlan& other) const {
+  if (full != other.full || dark != other.dark || seriesLength != other.seriesLength ||
+      maps != other.maps || effects_ != other.effects_ || items.size() != other.items.size())
+    return false;
+  for (size_t i = 0; i < items.size(); ++i)
+    if (items[i].name != other.items[i].name || items[i].in != other.items[i].in) return false;
+  return true;
+}
+
 }  // namespace voxgi

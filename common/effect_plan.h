@@ -50,6 +50,9 @@ class EffectPlan {
   bool on(Effect e) const { return e == Effect::always || effects_.test(size_t(e)); }
   // Why the stage is out, as `voxgi plan` prints it; empty when it runs.
   std::string whySkipped(StageId id) const;
+  // Whether two plans run the same stages with the same effects and shapes (the reasons they
+  // give aside): a frame may reuse a stage's buffers only under the same decisions.
+  bool sameDecisions(const EffectPlan& other) const;
 
  private:
   std::bitset<256> effects_;  // by Effect (a uint8_t)

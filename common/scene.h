@@ -68,6 +68,7 @@ struct PointCloud {
 struct Falloff {
   enum class Kind { inverse_square, polynomial } kind = Kind::inverse_square;
   float constant = 1.0f, linear = 0.0f, quadratic = 0.0f;
+  bool operator==(const Falloff&) const = default;
 };
 
 struct Light {
@@ -78,6 +79,7 @@ struct Light {
   float spotAngleDeg = 45.0f;            // full cone angle of a spot light
   Falloff falloff;
   bool castsShadows = true;
+  bool operator==(const Light&) const = default;
 };
 
 // A light type by its name in scene files and glTF ("point", "spot", "directional"); nullopt for
@@ -90,6 +92,7 @@ struct Camera {
   glm::dvec3 up{0.0, 1.0, 0.0};
   double fovYDeg = 40.0;
   int width = 256, height = 256;
+  bool operator==(const Camera&) const = default;
 };
 
 struct Scene {

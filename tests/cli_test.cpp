@@ -493,5 +493,36 @@ TEST(Cli, RenderFramesWritesOneImagePerFrame) {
     EXPECT_FALSE(e.path().filename().string().starts_with("g")) << e.path();
 }
 
+// A camera that moves and then stops: the frames reuse every volume stage, then every stage, and
+// say so; `plan --frames` says the same; each frame's file is the one --scratch writes.
+TEST(Cli, RenderFramesReusesWhatDidNotChange) {
+  const std::string dir = testTempDir();
+  const std::string scene =
+      writeTemp("camera_moves.json", R"({"meshes": [{"file": ")" + sourcePath("scenes/bunny.obj") +
+                                         R"("}],
+    "lights": [{"type": "point", "position": [3, 10, 5], "intensity": [40, 40, 40]}],
+    "camera": {"position": [0, 6, 26], "look_at": [0, 4, 0],
+      "animation": {"position": {"times": [0, 1], "values": [[0, 6, 26], [8, 6, 24]]}}},
+    "grid": {"resolution": 16, "min": [-8.5, -2.5, -8.5], "size": 17}})");
+  const std::string small = " --image 32 --backend cpu --frames 0:48:24";
+  const CommandResult r = voxgi("render " + scene + small + " --out " + dir + "i_%02d.exr");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("i_24.exr; ran 3 of 6 stages (the camera moved)"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("i_48.exr; ran 0 of 6 stages (nothing moved)"), std::string::npos)
+      << r.output;
+  const CommandResult s =
+      voxgi("render " + scene + small + " --scratch --out " + dir + "s_%02d.exr");
+  ASSERT_EQ(s.code, 0) << s.output;
+  EXPECT_NE(s.output.find("ran 6 of 6 stages (from scratch)"), std::string::npos) << s.output;
+  for (const char* f : {"00", "24", "48"})
+    EXPECT_EQ(readExr(dir + "i_" + f + ".exr").pixels, readExr(dir + "s_" + f + ".exr").pixels)
+        << f;
+  const CommandResult p = voxgi("plan " + scene + " --frames 0:48:24");
+  ASSERT_EQ(p.code, 0) << p.output;
+  EXPECT_NE(p.output.find("frame 24 (1 s): the camera moved\n  reuse  voxelize"), std::string::npos)
+      << p.output;
+}
+
 }  // namespace
 }  // namespace voxgi::test

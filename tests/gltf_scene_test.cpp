@@ -62,10 +62,6 @@ const Material& materialNamed(const Scene& s, const std::string& name) {
   throw std::runtime_error("no material " + name);
 }
 
-void expectVec(const glm::dvec3& got, const glm::dvec3& want, double tolerance = 1e-9) {
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], tolerance) << "component " << c;
-}
-
 TEST(GltfScene, MaterialsMapMetallicRoughnessOntoLambertAndPhong) {
   const Scene s = loadScene(authoredGltf());
   // A dielectric without specular (Blender's Lambertian): its base colour, no lobe.

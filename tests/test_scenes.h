@@ -77,6 +77,10 @@ std::string sourcePath(const std::string& relative);  // relative to the project
 // A folder of the running test's own (ctest runs tests as parallel processes), emptied when first
 // asked for in a run, ending in '/'.
 std::string testTempDir();
+// Each component of `got` within `tolerance` of `want`'s.
+inline void expectVec(const glm::dvec3& got, const glm::dvec3& want, double tolerance = 1e-9) {
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], tolerance) << "component " << c;
+}
 // Writes `text` to `name` in testTempDir(); returns its path.
 std::string writeTemp(const std::string& name, const std::string& text);
 

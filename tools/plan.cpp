@@ -3,14 +3,49 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "common/error.h"
+#include "common/frame_plan.h"
 #include "tools/command.h"
+#include "tools/frames.h"
 
 namespace voxgi::tools {
 namespace {
 
-int runPlan(const SceneOptions& o) {
+struct PlanOptions {
+  SceneOptions scene;
+  std::string frames;  // --frames A:B[:STEP]: the plan in time
+  double fps = 24.0;
+};
+
+// Per frame of --frames: what moved since the frame before, and which stages run or reuse their
+// buffers, as `voxgi render --frames` runs them.
+void printFramePlans(const PlanOptions& o, const Technique& technique, const Scene& scene) {
+  const FrameRange range = parseFrames(o.frames, "--frames");
+  const VoxelTriangles none;  // the steps read the plan, not the triangles
+  std::optional<Scene> previous;
+  std::optional<EffectPlan> previousPlan;
+  for (int f = range.first; f <= range.last; f += range.step) {
+    const double seconds = frameSeconds(f, o.fps);
+    Scene at = sceneAt(scene, seconds);
+    const Settings settings = o.scene.settings(at);
+    const StageContext ctx{technique, at, settings, none};
+    const SceneChange change = previous ? sceneChange(*previous, at) : SceneChange{};
+    const std::vector<FrameStep> steps =
+        frameSteps(ctx, previousPlan ? &*previousPlan : nullptr, change);
+    std::cout << "\nframe " << f << " (" << seconds
+              << " s): " << (previous ? change.describe() : "the first frame") << "\n";
+    for (const FrameStep& s : steps)
+      std::cout << "  " << (s.runs ? "run  " : "reuse") << "  " << std::left << std::setw(20)
+                << s.stage->qualifiedName() << "  " << s.why << "\n";
+    previousPlan = ctx.plan;
+    previous = std::move(at);
+  }
+}
+
+int runPlan(const PlanOptions& options) {
+  const SceneOptions& o = options.scene;
   const Technique& technique = findTechnique(o.technique);
   const Scene scene = o.load();
   const EffectPlan plan = technique.plan(scene, o.settings(scene));
@@ -21,19 +56,25 @@ int runPlan(const SceneOptions& o) {
   for (const PlanItem& item : plan.items)
     std::cout << "  " << (item.in ? "in " : "out") << "  " << std::left << std::setw(20)
               << item.name << "  " << item.why << "\n";
+  if (!options.frames.empty()) printFramePlans(options, technique, scene);
   return kExitOk;
 }
 
 }  // namespace
 
 void addPlanCommand(CLI::App& app, Globals& globals, Commands& commands) {
-  auto o = std::make_shared<SceneOptions>();
+  auto o = std::make_shared<PlanOptions>();
   CLI::App* cmd = app.add_subcommand(
       "plan",
       "print the stages and effects a technique's plan runs for a scene, and why each is "
       "in or out");
-  o->add(*cmd, globals, false);
-  o->addTechnique(*cmd);
+  o->scene.add(*cmd, globals, false);
+  o->scene.addTechnique(*cmd);
+  cmd->add_option("--frames", o->frames,
+                  "also say, for frames A to B (A:B or A:B:STEP) of an animated scene, which "
+                  "stages each frame runs and which reuse the frame before's buffers, and why "
+                  "(docs/motion.md)");
+  cmd->add_option("--fps", o->fps, "frames per second of --frames")->check(CLI::Range(1e-3, 1e6));
   commands.push_back({cmd, [o] { return runPlan(*o); }});
 }
 

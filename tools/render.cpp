@@ -20,6 +20,7 @@
 #include "common/io/output_file.h"
 #include "tools/command.h"
 #include "tools/frames.h"
+#include "tools/sequence.h"
 #include "validation/reference/path_trace.h"
 
 namespace voxgi::tools {
@@ -32,6 +33,7 @@ struct RenderOptions {
   bool terms = false;
   std::string frames;  // --frames A:B[:STEP]; empty: one image
   double fps = 24.0;
+  bool scratch = false;  // --scratch: every frame from scratch
 };
 
 // An image with a NaN or infinite pixel is not written: it would be garbage with exit 0. Input
@@ -55,9 +57,9 @@ void checkOutputs(const RenderOptions& o, bool variance) {
     for (const LightTerm term : kLightTerms) checkOutputPath(termPath(o.out, term));
 }
 
-// A technique of the registry: every stage it plans on the chosen backend, then its image.
-int renderTechnique(const RenderOptions& o, Scene scene) {
-  const StageRun run = runStages(o.scene, std::move(scene), nullptr);
+// A technique of the registry: the frame's stages on the sequence's backend, then its image.
+int renderTechnique(const RenderOptions& o, StageSequence& sequence, Scene scene, bool frames) {
+  const StageRun& run = sequence.frame(std::move(scene));
   const Technique& technique = findTechnique(o.scene.technique);
   const Image image = bufferImage(run.buffers.at(technique.image));
   requireFinite(image, std::string(technique.name) + "'s image");
@@ -73,7 +75,8 @@ int renderTechnique(const RenderOptions& o, Scene scene) {
   if (!o.png.empty()) writePng(o.png, image);
   std::cout << technique.name << " rendered " << run.scene.camera.width << "x"
             << run.scene.camera.height << " at " << run.scene.grid.resolution << "^3 ("
-            << run.backendName() << ") in " << run.seconds << " s -> " << o.out << "\n";
+            << run.backendName() << ") in " << run.seconds << " s -> " << o.out
+            << (frames ? "; " + sequence.summary() : "") << "\n";
   if (const std::string note = lightingNote(run.scene); !note.empty())
     std::cerr << "voxgi: " << note << "\n";
   return kExitOk;
@@ -144,10 +147,14 @@ int render(const RenderOptions& o) {
     }
   }
   for (const auto& [f, frame] : frames) checkOutputs(frame, path);
+  if (!path) findTechnique(o.scene.technique);
   const Scene scene = o.scene.load();
+  std::optional<StageSequence> sequence;
+  if (!path) sequence.emplace(o.scene, o.scratch);
   for (const auto& [f, frame] : frames) {
-    const Scene at = scene.motion.empty() ? scene : sceneAt(scene, frameSeconds(f, o.fps));
-    const int code = path ? renderPath(frame, at) : renderTechnique(frame, at);
+    Scene at = scene.motion.empty() ? scene : sceneAt(scene, frameSeconds(f, o.fps));
+    const int code = path ? renderPath(frame, at)
+                          : renderTechnique(frame, *sequence, std::move(at), !o.frames.empty());
     if (code != kExitOk) return code;
   }
   return kExitOk;
@@ -207,6 +214,10 @@ void addRenderCommand(CLI::App& app, Globals& globals, Commands& commands) {
                   "fps seconds; --out (and --png) then hold a frame field such as %04d "
                   "(docs/motion.md)");
   cmd->add_option("--fps", o->fps, "frames per second of --frames")->check(CLI::Range(1e-3, 1e6));
+  cmd->add_flag("--scratch", o->scratch,
+                "run every stage of every frame, instead of reusing the buffers of the stages "
+                "whose inputs did not change since the frame before (the frames are the same "
+                "either way; docs/motion.md)");
   commands.push_back({cmd, [o] { return render(*o); }});
 }
 

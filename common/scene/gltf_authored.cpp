@@ -143,11 +143,10 @@ GltfTexture gltfTexture(const GltfValue& t, size_t images, const GltfValue& samp
 }
 
 // Where a node puts a light or camera: within voxgi's bound on positions (docs/scene-format.md).
-glm::dvec3 placedPoint(const GltfValue& what, const glm::dmat4& toWorld) {
+void checkPlacedPoint(const GltfValue& what, const glm::dmat4& toWorld) {
   const glm::dvec3 p(toWorld * glm::dvec4(0.0, 0.0, 0.0, 1.0));
   if (!(std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) <= kMaxCoordinate))
     what.fail("its node places it beyond 1e15 of the origin (after the scene's transform)");
-  return p;
 }
 
 Light gltfLight(const GltfValue& l, const glm::dmat4& toWorld) {
@@ -162,11 +161,9 @@ Light gltfLight(const GltfValue& l, const glm::dmat4& toWorld) {
   if (std::max({radiometric.x, radiometric.y, radiometric.z}) > kMaxLightIntensity)
     l.fail("color x intensity / 683 must be at most 1e12 (voxgi's bound on a light's intensity)");
   out.intensity = glm::vec3(radiometric);
-  out.position = placedPoint(l, toWorld);
+  checkPlacedPoint(l, toWorld);
   // A light shines along its node's -z.
-  const glm::dvec3 axis = glm::dvec3(toWorld * glm::dvec4(0.0, 0.0, -1.0, 0.0));
-  if (!(glm::length(axis) > 0.0)) l.fail("its node's transform has no -z axis (scale 0)");
-  out.direction = glm::normalize(axis);
+  if (!placeLightAtNode(out, toWorld)) l.fail("its node's transform has no -z axis (scale 0)");
   if (out.type == Light::Type::spot) {
     const GltfValue spot = l.member("spot");
     const double half = std::numbers::pi / 2.0;
@@ -196,37 +193,33 @@ std::optional<Camera> gltfCamera(const GltfValue& c, const glm::dmat4& toWorld) 
   const double aspect = p.member("aspectRatio").number(1.0, 1.0 / 16384.0, 16384.0);
   out.width = 256;
   out.height = int(std::clamp(std::lround(256.0 / aspect), 1l, 16384l));
-  out.position = placedPoint(c, toWorld);
-  const glm::dvec3 forward = glm::dvec3(toWorld * glm::dvec4(0.0, 0.0, -1.0, 0.0));
-  const glm::dvec3 up = glm::dvec3(toWorld * glm::dvec4(0.0, 1.0, 0.0, 0.0));
-  const double f = glm::length(forward), u = glm::length(up);
-  if (!(f > 0.0 && u > 0.0) || glm::length(glm::cross(forward / f, up / u)) < 1e-6)
+  checkPlacedPoint(c, toWorld);
+  if (!placeCameraAtNode(out, toWorld))
     c.fail("its node's transform has no view direction and up (a scale of 0 or a shear)");
-  // Only the direction to look_at matters; one unit per unit of distance from the origin keeps
-  // it distinct from the position in float.
-  out.lookAt = out.position + forward / f * std::max(1.0, glm::length(out.position));
-  out.up = up / u;
   return out;
 }
 
-glm::dmat4 nodeTransform(const GltfValue& node) {
+// A node's own transform: its matrix, or its translation, rotation and scale (kept apart, for an
+// animation to key).
+NodeMotion nodeTransform(const GltfValue& node) {
+  NodeMotion n;
   const GltfValue matrix = node.member("matrix");
   if (matrix.present()) {
     if (matrix.size() != 16) matrix.fail("must be an array of 16 numbers");
-    glm::dmat4 m;
     for (int i = 0; i < 16; ++i)
-      glm::value_ptr(m)[i] = matrix.at(size_t(i)).number(0, -kGltfHuge, kGltfHuge);
-    return m;  // column-major in both glTF and glm
+      glm::value_ptr(n.rest)[i] = matrix.at(size_t(i)).number(0, -kGltfHuge, kGltfHuge);
+    return n;  // column-major in both glTF and glm
   }
-  const glm::dvec3 t =
-      node.member("translation").numbers<3>(glm::dvec3(0.0), -kGltfHuge, kGltfHuge);
+  n.translate = node.member("translation").numbers<3>(glm::dvec3(0.0), -kGltfHuge, kGltfHuge);
   const glm::dvec4 r = node.member("rotation").numbers<4>(glm::dvec4(0, 0, 0, 1), -1.0, 1.0);
-  const glm::dvec3 s = node.member("scale").numbers<3>(glm::dvec3(1.0), -kGltfHuge, kGltfHuge);
+  n.scale = node.member("scale").numbers<3>(glm::dvec3(1.0), -kGltfHuge, kGltfHuge);
   const glm::dquat q(r.w, r.x, r.y, r.z);  // glTF stores x, y, z, w; glm takes w first
   const double length = glm::length(q);
   if (!(length > 0.0)) node.member("rotation").fail("must be a non-zero quaternion");
-  return glm::translate(glm::dmat4(1.0), t) * glm::mat4_cast(q / length) *
-         glm::scale(glm::dmat4(1.0), s);
+  n.rotation = glm::mat3_cast(q / length);
+  n.rest = glm::translate(glm::dmat4(1.0), n.translate) * glm::mat4_cast(q / length) *
+           glm::scale(glm::dmat4(1.0), n.scale);
+  return n;
 }
 
 }  // namespace
@@ -283,36 +276,46 @@ GltfAuthored readGltfAuthored(const std::string& path, const json& doc,
   struct Item {
     size_t node;
     glm::dmat4 parent;
+    std::vector<size_t> path;  // the node's ancestors, the root first
   };
   std::vector<Item> stack;
   const GltfValue roots = scenes.at(scene).member("nodes");
   for (size_t i = roots.size(); i-- > 0;)
-    stack.push_back({roots.at(i).index(nodes.size()), transform});
+    stack.push_back({roots.at(i).index(nodes.size()), transform, {}});
   std::vector<bool> visited(nodes.size(), false);
+  out.nodes.resize(nodes.size());
+  out.nodeMatrix.resize(nodes.size());
   while (!stack.empty()) {
-    const Item item = stack.back();
+    Item item = std::move(stack.back());
     stack.pop_back();
     const GltfValue node = nodes.at(item.node);
     if (visited[item.node]) node.fail("is reached twice (the node hierarchy must be a tree)");
     visited[item.node] = true;
-    const glm::dmat4 toWorld = item.parent * nodeTransform(node);
+    out.nodes[item.node] = nodeTransform(node);
+    out.nodeMatrix[item.node] = node.member("matrix").present();
+    const glm::dmat4 toWorld = item.parent * out.nodes[item.node].rest;
+    item.path.push_back(item.node);
     const GltfValue light = node.member("extensions").member("KHR_lights_punctual").member("light");
-    if (light.present())
+    if (light.present()) {
       out.extras.lights.push_back(gltfLight(lights.at(light.index(lights.size())), toWorld));
+      out.lightNodes.push_back(item.path);
+    }
     const GltfValue mesh = node.member("mesh");
-    if (mesh.present()) out.meshes.push_back({mesh.index(root.member("meshes").size()), toWorld});
+    if (mesh.present())
+      out.meshes.push_back({mesh.index(root.member("meshes").size()), toWorld, item.path});
     const GltfValue camera = node.member("camera");
     if (camera.present()) {
       const GltfValue c = cameras.at(camera.index(cameras.size()));
       if (const std::optional<Camera> cam = gltfCamera(c, toWorld)) {
         std::string name = node.member("name").string();
         if (name.empty()) name = c.member("name").string();
-        out.extras.cameras.push_back({name, *cam});
+        out.extras.cameras.push_back({name, *cam, {}});
+        out.cameraNodes.push_back(item.path);
       }
     }
     const GltfValue children = node.member("children");
     for (size_t i = children.size(); i-- > 0;)
-      stack.push_back({children.at(i).index(nodes.size()), toWorld});
+      stack.push_back({children.at(i).index(nodes.size()), toWorld, item.path});
   }
   return out;
 }

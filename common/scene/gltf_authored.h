@@ -14,14 +14,17 @@
 #include <nlohmann/json.hpp>
 
 #include "common/scene.h"
+#include "common/scene_motion.h"
 #include "common/scene/scene_load.h"
 
 namespace voxgi {
 
-// A node's mesh and where the node puts it.
+// A node's mesh and where the node puts it; `nodes` is the node and its ancestors (the file's node
+// indices, the root first).
 struct GltfMeshInstance {
   size_t mesh;
   glm::dmat4 toWorld;
+  std::vector<size_t> nodes;
 };
 
 // A glTF texture: its image (by the file's index) and its sampler's wrap modes.
@@ -42,6 +45,11 @@ struct GltfAuthored {
   std::vector<GltfTexture> textures;                   // by the file's texture index
   std::vector<GltfMeshInstance> meshes;  // in the order the default scene's nodes instance them
   MeshFileExtras extras;                 // lights and perspective cameras, in the same order
+  std::vector<std::vector<size_t>> lightNodes, cameraNodes;  // the nodes of each, as `meshes`
+  // Every node's own transform (by the file's node index), unkeyed, and whether the file gives it
+  // as a matrix (which glTF forbids animating).
+  std::vector<NodeMotion> nodes;
+  std::vector<bool> nodeMatrix;
 };
 
 // Reads `doc` (the JSON of `path`, checked by checkGltf) with every node placed by `transform`

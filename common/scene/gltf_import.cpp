@@ -13,6 +13,8 @@
 #include "common/error.h"
 #include "common/io/input_file.h"
 #include "common/io/texture_read.h"
+#include "common/scene/gltf_accessor.h"
+#include "common/scene/gltf_animation.h"
 #include "common/scene/gltf_authored.h"
 #include "common/scene/gltf_import.h"
 
@@ -29,85 +31,6 @@ bool keepImageBytes(tinygltf::Image* image, const int index, std::string*, std::
         reinterpret_cast<const char*>(bytes), size_t(size));
   return true;
 }
-
-// Element `i` of an accessor as little-endian bytes: a pointer to its first component, each
-// element checked to lie inside its buffer view (a byteStride can reach past what count * size
-// does).
-class AccessorReader {
- public:
-  AccessorReader(const std::string& file, const tinygltf::Model& model, int index,
-                 const std::string& field)
-      : field_(file + ": accessors[" + std::to_string(index) + "] (" + field + ")") {
-    if (index < 0 || size_t(index) >= model.accessors.size()) fail("names no accessor");
-    const tinygltf::Accessor& a = model.accessors[size_t(index)];
-    if (a.sparse.isSparse) fail("sparse accessors are not supported");
-    if (a.bufferView < 0 || size_t(a.bufferView) >= model.bufferViews.size())
-      fail("has no buffer view");
-    const tinygltf::BufferView& view = model.bufferViews[size_t(a.bufferView)];
-    if (view.buffer < 0 || size_t(view.buffer) >= model.buffers.size()) fail("names no buffer");
-    const std::vector<unsigned char>& data = model.buffers[size_t(view.buffer)].data;
-    componentType = a.componentType;
-    components = size_t(tinygltf::GetNumComponentsInType(uint32_t(a.type)));
-    const int componentBytes = tinygltf::GetComponentSizeInBytes(uint32_t(a.componentType));
-    if (componentBytes <= 0 || components == 0 || components > 16) fail("unknown type");
-    elementBytes_ = components * size_t(componentBytes);
-    stride_ = view.byteStride != 0 ? view.byteStride : elementBytes_;
-    count = a.count;
-    if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset)
-      fail("its buffer view runs past its buffer");
-    if (count > 0) {
-      const long double end = (long double)a.byteOffset + (long double)(count - 1) * stride_ +
-                              (long double)elementBytes_;
-      if (end > (long double)view.byteLength) fail("runs past the end of its buffer view");
-    }
-    base_ = data.data() + view.byteOffset + a.byteOffset;
-  }
-  [[noreturn]] void fail(const std::string& reason) const { throw InputError(field_, "", reason); }
-  const unsigned char* element(size_t i) const { return base_ + i * stride_; }
-  // Component `c` of element `i` as an unsigned integer (UNSIGNED_BYTE, _SHORT or _INT).
-  uint32_t index(size_t i) const {
-    const unsigned char* p = element(i);
-    switch (componentType) {
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-        return p[0];
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-        return uint32_t(p[0]) | uint32_t(p[1]) << 8;
-      case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-        return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
-    }
-    fail("indices must be unsigned bytes, shorts or ints");
-  }
-  // Element `i` as a texture coordinate: float, or normalized unsigned byte or short (glTF 2.0
-  // §3.7.2.1).
-  glm::vec2 texcoord(size_t i) const {
-    const unsigned char* p = element(i);
-    glm::vec2 uv;
-    for (int c = 0; c < 2; ++c) {
-      if (componentType == TINYGLTF_COMPONENT_TYPE_FLOAT) {
-        std::memcpy(&uv[c], p + 4 * c, 4);
-      } else if (componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
-        uv[c] = float(p[c]) / 255.0f;
-      } else {
-        uv[c] = float(uint32_t(p[2 * c]) | uint32_t(p[2 * c + 1]) << 8) / 65535.0f;
-      }
-    }
-    return uv;
-  }
-  glm::vec3 vec3(size_t i) const {
-    float v[3];
-    std::memcpy(v, element(i), sizeof v);  // glTF is little-endian, as are voxgi's targets
-    return {v[0], v[1], v[2]};
-  }
-
-  int componentType = 0;
-  size_t components = 0;
-  size_t count = 0;
-
- private:
-  std::string field_;
-  const unsigned char* base_ = nullptr;
-  size_t elementBytes_ = 0, stride_ = 0;
-};
 
 // tinygltf's file access, through voxgi's input checks (a regular file, read whole); paths are
 // taken as written, never expanded.
@@ -250,9 +173,23 @@ uint32_t gltfTexture(Scene& scene, const std::string& path, const GltfAuthored& 
 MeshFileExtras importGltf(Scene& scene, const std::string& path, const GltfFile& file,
                           const glm::dmat4& transform,
                           const std::optional<uint32_t>& materialOverride) {
-  const GltfAuthored authored = readGltfAuthored(path, file.json, transform);
+  GltfAuthored authored = readGltfAuthored(path, file.json, transform);
   std::map<int, std::string> images;
   const tinygltf::Model model = loadModel(path, file.bytes, images);
+  readGltfAnimations(path, model, authored);
+  NodeMotion imported;
+  imported.rest = transform;
+  // A node path: the import transform, then the file's nodes from the root.
+  const auto nodePath = [&](const std::vector<size_t>& nodes) {
+    NodePath p{{imported}};
+    for (const size_t n : nodes) p.nodes.push_back(authored.nodes[n]);
+    return p;
+  };
+  MeshFileExtras extras = authored.extras;
+  for (const std::vector<size_t>& nodes : authored.lightNodes)
+    extras.lightPaths.push_back(nodePath(nodes));
+  for (size_t c = 0; c < extras.cameras.size(); ++c)
+    extras.cameras[c].path = nodePath(authored.cameraNodes[c]);
   std::vector<std::optional<uint32_t>> materialOf(authored.materials.size());
   for (const GltfMeshInstance& instance : authored.meshes) {
     if (instance.mesh >= model.meshes.size())
@@ -290,10 +227,11 @@ MeshFileExtras importGltf(Scene& scene, const std::string& path, const GltfFile&
                              std::to_string(k) + "].material",
                          "names no material");
       }
+      extras.meshPaths.push_back({scene.meshes.size(), 1, nodePath(instance.nodes)});
       scene.meshes.push_back(std::move(mesh));
     }
   }
-  return authored.extras;
+  return extras;
 }
 
 }  // namespace voxgi

@@ -5,9 +5,6 @@
 namespace voxgi {
 namespace {
 
-// More keys than any animation holds: a file that says otherwise is refused.
-constexpr size_t kMaxKeys = 1000000;
-
 // A keyframed field: {"times": [...], "values": [[x, y, z], ...], "interpolation": ...}; each value
 // read by `value` (positions within the scene's bounds, colours in range, ...), a spline's
 // tangents only finite.
@@ -25,8 +22,8 @@ Keyframes readKeyframes(const Field& f, const std::function<glm::dvec3(const Fie
       i.fail("must be \"step\", \"linear\" or \"cubic_spline\", got '" + name + "'");
   }
   const Field times = f.at("times"), values = f.at("values");
-  if (!times.value.is_array() || times.value.empty() || times.value.size() > kMaxKeys)
-    times.fail("must be an array of 1 to " + std::to_string(kMaxKeys) + " times (seconds)");
+  if (!times.value.is_array() || times.value.empty() || times.value.size() > kMaxKeyframes)
+    times.fail("must be an array of 1 to " + std::to_string(kMaxKeyframes) + " times (seconds)");
   for (size_t i = 0; i < times.value.size(); ++i) {
     k.times.push_back(times.at(i).number());
     if (i > 0 && !(k.times[i] > k.times[i - 1]))
@@ -76,11 +73,11 @@ TransformFields readTransformFields(const Field& f) {
   return t;
 }
 
-void readMeshMotion(const Field& f, MeshMotion& m) {
+void readMeshMotion(const Field& f, NodeMotion& node) {
   f.allowKeys({"translate", "rotate_deg", "scale"});
-  m.translate = keyed(f, "translate", readPosition);
-  m.rotateDeg = keyed(f, "rotate_deg", readVector);
-  m.scale = keyed(f, "scale", readScale);
+  node.translateKeys = keyed(f, "translate", readPosition);
+  node.rotateDegKeys = keyed(f, "rotate_deg", readVector);
+  node.scaleKeys = keyed(f, "scale", readScale);
 }
 
 LightMotion readLightMotion(const Field& f, size_t light) {

@@ -10,8 +10,8 @@ namespace voxgi {
 // A `transform` object: translate, rotate_deg, scale (a number or three, non-zero).
 TransformFields readTransformFields(const Field& f);
 
-// meshes[i].animation: keyframes of "translate", "rotate_deg" and "scale" (fields of `m`).
-void readMeshMotion(const Field& f, MeshMotion& m);
+// meshes[i].animation: keyframes of "translate", "rotate_deg" and "scale" (keys of `node`).
+void readMeshMotion(const Field& f, NodeMotion& node);
 // lights[i].animation: keyframes of "position", "direction" and "intensity".
 LightMotion readLightMotion(const Field& f, size_t light);
 // camera.animation: keyframes of "position", "look_at" and "up".

@@ -285,18 +285,53 @@ namespace {
 
 // The camera `options` name among `cameras` (the scene's mesh files'); nullopt when it names none
 // and there are none to choose from. Throws InputError for a name that is not there.
-std::optional<Camera> chosenCamera(const std::string& file, const std::vector<FileCamera>& cameras,
-                                   const SceneLoadOptions& options) {
-  if (options.camera.empty())
-    return cameras.empty() ? std::nullopt : std::optional<Camera>(cameras.front().camera);
+const FileCamera* chosenCamera(const std::string& file, const std::vector<FileCamera>& cameras,
+                               const SceneLoadOptions& options) {
+  if (options.camera.empty()) return cameras.empty() ? nullptr : &cameras.front();
   std::string names;
   for (const FileCamera& c : cameras) {
-    if (c.name == options.camera) return c.camera;
+    if (c.name == options.camera) return &c;
     names += (names.empty() ? "" : ", ") + ("'" + c.name + "'");
   }
   throw InputError(file, "--camera",
                    "no camera '" + options.camera + "' in its mesh files (" +
                        (names.empty() ? "they have none" : "they have " + names) + ")");
+}
+
+// The mesh files' lights (when the scene takes them) and chosen camera as the scene's, moving
+// where an animation keys a node that places them.
+void takeFileLightsAndCamera(Scene& scene, const MeshFileExtras& extras, bool lights,
+                             const FileCamera* camera) {
+  if (lights) {
+    scene.lights = extras.lights;
+    for (size_t i = 0; i < extras.lightPaths.size(); ++i)
+      if (extras.lightPaths[i].keyed())
+        scene.motion.lights.push_back({i, {}, {}, {}, extras.lightPaths[i]});
+  }
+  if (camera) {
+    scene.camera = camera->camera;
+    if (camera->path.keyed()) scene.motion.camera = CameraMotion{{}, {}, {}, camera->path};
+  }
+}
+
+// The mesh motions of one file imported with `entry` (a scene file's mesh entry, keyed or not):
+// each of its glTF meshes on its node path after the entry's node, the meshes of a file without
+// node paths (OBJ, PLY) on the entry's node alone; kept where a node is keyed. A keyed mesh's rest
+// transform must be invertible (it is moved from there).
+void addMeshMotion(Scene& scene, const std::string& file, const MeshFileExtras& carried,
+                   const NodeMotion& entry, size_t firstMesh) {
+  std::vector<MeshMotion> motions = carried.meshPaths;
+  if (motions.empty() && entry.keyed())
+    motions.push_back({firstMesh, scene.meshes.size() - firstMesh, NodePath{{entry}}});
+  for (MeshMotion& m : motions) {
+    m.path.nodes.front() = entry;
+    if (!m.path.keyed()) continue;
+    const double det = glm::determinant(m.path.rest());
+    if (!std::isfinite(det) || det == 0.0)
+      throw InputError(file, "animation",
+                       "a moving mesh's transform is singular where it is loaded (a scale of 0)");
+    scene.motion.meshes.push_back(std::move(m));
+  }
 }
 
 // A mesh or point-cloud file on its own: its geometry, materials, lights and camera, a 64^3 grid
@@ -316,16 +351,16 @@ Scene loadBareFile(const std::string& path, const SceneLoadOptions& options) {
   scene.grid = fitGrid(scene.bounds(), 64);
   checkGrid(scene, path);
   const auto [lo, hi] = scene.bounds();
-  if (const std::optional<Camera> camera = chosenCamera(path, extras.cameras, options)) {
-    scene.camera = *camera;
-  } else if (lo.x <= hi.x) {
+  const FileCamera* camera = chosenCamera(path, extras.cameras, options);
+  takeFileLightsAndCamera(scene, extras, true, camera);
+  addMeshMotion(scene, path, extras, NodeMotion{}, 0);
+  if (!camera && lo.x <= hi.x) {
     // A three-quarter view from the front (+z), right and above: it sees a model that is flat in
     // any axis plane (one seen from +z alone is edge-on for the planes x or y = const).
     scene.camera.lookAt = 0.5 * (lo + hi);
     scene.camera.position =
         scene.camera.lookAt + glm::normalize(glm::dvec3(1.0, 1.0, 2.0)) * (2.0 * scene.grid.size);
   }
-  scene.lights = extras.lights;
   if (scene.unlit()) addDefaultLights(scene);
   estimatePointCloudProperties(scene, std::vector<PointCloudOptions>(scene.pointClouds.size()));
   return scene;
@@ -374,21 +409,24 @@ MeshFileExtras readMeshes(const Field& root, Scene& scene, size_t namedMaterials
       file.fail(e.what());  // the scene file and field, then the mesh file and what is wrong
     }
     const std::optional<uint32_t> material = namedMaterial(m, scene, namedMaterials);
-    MeshMotion motion;
-    if (m.has("transform")) motion.loaded = readTransformFields(m.at("transform"));
-    if (m.has("animation")) readMeshMotion(m.at("animation"), motion);
+    NodeMotion entry =
+        nodeMotion(m.has("transform") ? readTransformFields(m.at("transform")) : TransformFields{});
+    if (m.has("animation")) readMeshMotion(m.at("animation"), entry);
     const size_t before = scene.materials.size();
-    motion.firstMesh = scene.meshes.size();
-    MeshFileExtras carried =
-        importMeshFile(scene, meshPath.string(), motion.loaded.matrix(), material);
-    motion.meshCount = scene.meshes.size() - motion.firstMesh;
-    if (m.has("animation")) scene.motion.meshes.push_back(motion);
+    const size_t firstMesh = scene.meshes.size();
+    MeshFileExtras carried = importMeshFile(scene, meshPath.string(), entry.rest, material);
+    addMeshMotion(scene, scene.file, carried, entry, firstMesh);
+    // The file's lights and cameras move with the entry too.
+    for (NodePath& p : carried.lightPaths) p.nodes.front() = entry;
+    for (FileCamera& c : carried.cameras) c.path.nodes.front() = entry;
     for (size_t k = before; k < scene.materials.size(); ++k)
       for (size_t j = 0; j < namedMaterials; ++j)
         if (scene.materials[k].name == scene.materials[j].name)
           scene.materials[k] = scene.materials[j];
     extras.lights.insert(extras.lights.end(), carried.lights.begin(), carried.lights.end());
     extras.cameras.insert(extras.cameras.end(), carried.cameras.begin(), carried.cameras.end());
+    extras.lightPaths.insert(extras.lightPaths.end(), carried.lightPaths.begin(),
+                             carried.lightPaths.end());
   }
   return extras;
 }
@@ -451,13 +489,12 @@ Scene loadScene(const std::string& path, const SceneLoadOptions& options) {
         scene.motion.lights.push_back(readLightMotion(light.at("animation"), scene.lights.size()));
       scene.lights.push_back(readLight(light));
     });
-  else
-    scene.lights = extras.lights;
-  const std::optional<Camera> fileCamera = chosenCamera(path, extras.cameras, options);
+  const FileCamera* fileCamera = chosenCamera(path, extras.cameras, options);
+  const bool takeFileCamera = fileCamera && (!options.camera.empty() || !root.has("camera"));
   if (root.has("camera")) scene.camera = readCamera(root.at("camera"));
-  if (fileCamera && (!options.camera.empty() || !root.has("camera")))
-    scene.camera = *fileCamera;
-  else if (root.has("camera") && root.at("camera").has("animation"))
+  takeFileLightsAndCamera(scene, extras, !root.has("lights"),
+                          takeFileCamera ? fileCamera : nullptr);
+  if (!takeFileCamera && root.has("camera") && root.at("camera").has("animation"))
     scene.motion.camera = readCameraMotion(root.at("camera").at("animation"));
   if (root.has("background")) scene.background = root.at("background").color(0.0, 1e9);
   if (root.has("settings")) scene.settings = readSettings(root.at("settings"));

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "common/scene.h"
+#include "common/scene_motion.h"
 
 namespace voxgi {
 
@@ -50,6 +51,7 @@ void setImageWidth(Scene& scene, int width, const std::string& source);
 struct FileCamera {
   std::string name;
   Camera camera;
+  NodePath path;  // the nodes that place it (glTF), the import transform's first
 };
 
 // What a mesh file carries besides triangles and materials: a glTF file's KHR_lights_punctual
@@ -57,6 +59,10 @@ struct FileCamera {
 struct MeshFileExtras {
   std::vector<Light> lights;
   std::vector<FileCamera> cameras;
+  // A glTF file's node paths, keyed by its animations or not, each starting with a node whose rest
+  // is the import transform: of every mesh (Scene::meshes indices) and of each light in `lights`.
+  std::vector<MeshMotion> meshPaths;
+  std::vector<NodePath> lightPaths;
 };
 
 // Appends the triangles of a mesh file to `scene`, transformed by `transform`. Materials come from

@@ -1,0 +1,154 @@
+#include "common/frame_plan.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace voxgi {
+
+unsigned stageSceneInputs(StageId stage) {
+  constexpr unsigned all = kSceneGeometry | kSceneLights | kSceneCamera;
+  switch (stage) {
+    case StageId::common_voxelize:
+      return kSceneGeometry;
+    case StageId::common_gbuffer:
+      return kSceneGeometry | kSceneCamera;
+    // Lights include a mesh's emitters under emitters.mode=area_lights (sceneLights), so a stage
+    // that reads lights reads the geometry too.
+    case StageId::vct_light_voxels:
+    case StageId::vct_bounce:
+    case StageId::lpv_rsm:
+    case StageId::lpv_inject:
+    case StageId::lpv_inject_geometry:
+    case StageId::lpv_propagate:
+    case StageId::svo_build:
+    case StageId::svo_propagate:
+      return kSceneGeometry | kSceneLights;
+    case StageId::vct_mip:
+    case StageId::svo_mip:
+      return 0;  // the grid and the buffers before them
+    case StageId::vct_trace_cones:
+    case StageId::vct_compose:
+    case StageId::lpv_shade:
+    case StageId::svo_shade:
+      return all;
+  }
+  return all;
+}
+
+namespace {
+
+std::string percent(size_t part, size_t whole) {
+  const double p = whole == 0 ? 0.0 : 100.0 * double(part) / double(whole);
+  char text[32];
+  std::snprintf(text, sizeof text, p < 1.0 && part > 0 ? "%.2f %%" : "%.0f %%", p);
+  return text;
+}
+
+std::string count(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+}  // namespace
+
+std::string SceneChange::describe() const {
+  if (what.empty()) return "nothing moved";
+  std::string out;
+  for (const std::string& w : what) out += (out.empty() ? "" : "; ") + w;
+  return out;
+}
+
+SceneChange sceneChange(const Scene& before, const Scene& after) {
+  SceneChange c;
+  size_t movedMeshes = 0, movedTriangles = 0, triangles = 0;
+  for (size_t i = 0; i < after.meshes.size(); ++i) {
+    triangles += after.meshes[i].triangles.size();
+    if (i >= before.meshes.size() || before.meshes[i].positions != after.meshes[i].positions) {
+      ++movedMeshes;
+      movedTriangles += after.meshes[i].triangles.size();
+    }
+  }
+  if (movedMeshes > 0 || before.meshes.size() != after.meshes.size()) {
+    c.parts |= kSceneGeometry;
+    c.what.push_back(count(movedMeshes, "mesh", "meshes") + " moved: " +
+                     std::to_string(movedTriangles) + " of " + std::to_string(triangles) +
+                     " triangles (" + percent(movedTriangles, triangles) + ")");
+  }
+  bool clouds = before.pointClouds.size() != after.pointClouds.size();
+  for (size_t i = 0; !clouds && i < after.pointClouds.size(); ++i)
+    clouds = before.pointClouds[i].positions != after.pointClouds[i].positions ||
+             before.pointClouds[i].normals != after.pointClouds[i].normals ||
+             before.pointClouds[i].radii != after.pointClouds[i].radii;
+  if (clouds) {
+    c.parts |= kSceneGeometry;
+    c.what.push_back("a point cloud moved");
+  }
+  if (before.lights != after.lights) {
+    c.parts |= kSceneLights;
+    size_t changed = 0;
+    for (size_t i = 0; i < std::min(before.lights.size(), after.lights.size()); ++i)
+      changed += before.lights[i] == after.lights[i] ? 0 : 1;
+    c.what.push_back(before.lights.size() == after.lights.size()
+                         ? count(changed, "light", "lights") + " changed"
+                         : "the lights changed");
+  }
+  if (!(before.camera == after.camera)) {
+    c.parts |= kSceneCamera;
+    c.what.push_back("the camera moved");
+  }
+  return c;
+}
+
+std::vector<FrameStep> frameSteps(const StageContext& ctx, const EffectPlan* previous,
+                                  const SceneChange& change) {
+  const std::vector<const StageSpec*> planned = plannedStages(ctx);
+  std::vector<FrameStep> steps;
+  if (previous == nullptr || !previous->sameDecisions(ctx.plan)) {
+    for (const StageSpec* s : planned)
+      steps.push_back({s, true, previous == nullptr ? "the first frame" : "the plan changed"});
+    return steps;
+  }
+  const StageSpec* ran = nullptr;  // the first stage of the frame that runs
+  for (const StageSpec* s : planned) {
+    const unsigned reads = stageSceneInputs(s->id) & change.parts;
+    if (reads != 0) {
+      std::vector<const char*> parts;
+      if (reads & kSceneGeometry) parts.push_back("geometry");
+      if (reads & kSceneLights) parts.push_back("lights");
+      if (reads & kSceneCamera) parts.push_back("camera");
+      std::string why = "it reads the changed ";
+      for (size_t i = 0; i < parts.size(); ++i)
+        why += std::string(i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+      steps.push_back({s, true, why});
+      if (ran == nullptr) ran = s;
+    } else if (ran != nullptr) {
+      steps.push_back({s, true, "after " + ran->qualifiedName() + ", which runs"});
+    } else {
+      steps.push_back({s, false, change.parts == 0 ? "nothing moved: reuse"
+                                                   : "nothing it reads changed: reuse"});
+    }
+  }
+  return steps;
+}
+
+void runFrame(StageBackend& backend, const StageContext& ctx, BufferSet& buffers,
+              const std::vector<FrameStep>& steps, const StageObserver& observe) {
+  for (const FrameStep& step : steps) {
+    if (!step.runs) {
+      for (const BufferSpec* spec : stageBuffers(*step.stage))
+        if (bufferNeeded(*spec, ctx.plan) && !buffers.contains(spec->id))
+          throw std::logic_error(step.stage->qualifiedName() + " is reused but its buffer " +
+                                 std::string(spec->name) + " is not there");
+      continue;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    const StageOutputs outputs = runStage(backend, *step.stage, ctx, buffers);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!outputs.ok()) throw std::logic_error(outputs.describe(*step.stage, backend.name()));
+    if (observe) observe(*step.stage, seconds);
+  }
+}
+
+}  // namespace voxgi

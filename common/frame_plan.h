@@ -1,0 +1,54 @@
+// The planner in time (docs/motion.md): in a sequence, which of a frame's planned stages run and
+// which keep the buffers the previous frame left, from what moved between the two scenes. A stage
+// runs when a part of the scene it reads changed (stageSceneInputs) or when a stage before it in
+// the plan ran; otherwise its buffers are the previous frame's, which is what running it would
+// give, since every stage is a deterministic function of the scene, the settings and the buffers
+// before it (the incremental-equals-scratch tests hold the runner to this).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/pipeline.h"
+
+namespace voxgi {
+
+// The parts of a scene a stage can read besides the buffers of the stages before it. Materials,
+// textures, the grid and the settings stay fixed through a sequence.
+enum SceneInput : unsigned {
+  kSceneGeometry = 1,  // mesh positions, point clouds
+  kSceneLights = 2,
+  kSceneCamera = 4,
+};
+
+// The scene inputs of a stage (a switch over every StageId: a new stage must say what it reads).
+unsigned stageSceneInputs(StageId stage);
+
+// What moved from one frame's scene to the next's: a set of SceneInput bits and, for messages,
+// what it was ("the camera moved", "1 mesh moved: 120 of 4,000 triangles (3 %)").
+struct SceneChange {
+  unsigned parts = 0;
+  std::vector<std::string> what;
+  std::string describe() const;  // the `what`s joined; "nothing moved" when there are none
+};
+SceneChange sceneChange(const Scene& before, const Scene& after);
+
+// One planned stage of a frame: whether it runs, and why (or why its buffers are reused).
+struct FrameStep {
+  const StageSpec* stage;
+  bool runs;
+  std::string why;
+};
+
+// The steps of a frame: every planned stage runs in the first frame (`previous` null) and when
+// the plan's decisions changed (EffectPlan::sameDecisions); otherwise as the header says.
+std::vector<FrameStep> frameSteps(const StageContext& ctx, const EffectPlan* previous,
+                                  const SceneChange& change);
+
+// Runs the steps that run on `backend`, in order; a reused stage's buffers stay in `buffers` as
+// the previous frame left them. Throws std::logic_error when a stage that runs does not write
+// exactly its planned buffers, or a reused one's are missing.
+void runFrame(StageBackend& backend, const StageContext& ctx, BufferSet& buffers,
+              const std::vector<FrameStep>& steps, const StageObserver& observe = {});
+
+}  // namespace voxgi
