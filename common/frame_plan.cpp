@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/voxel_triangles.h"
+
 namespace voxgi {
 
 unsigned stageSceneInputs(StageId stage) {
@@ -125,8 +127,9 @@ std::vector<FrameStep> frameSteps(const StageContext& ctx, const EffectPlan* pre
     } else if (ran != nullptr) {
       steps.push_back({s, true, "after " + ran->qualifiedName() + ", which runs"});
     } else {
-      steps.push_back({s, false, change.parts == 0 ? "nothing moved: reuse"
-                                                   : "nothing it reads changed: reuse"});
+      steps.push_back(
+          {s, false,
+           change.parts == 0 ? "nothing moved: reuse" : "nothing it reads changed: reuse"});
     }
   }
   return steps;
@@ -149,6 +152,47 @@ void runFrame(StageBackend& backend, const StageContext& ctx, BufferSet& buffers
     if (!outputs.ok()) throw std::logic_error(outputs.describe(*step.stage, backend.name()));
     if (observe) observe(*step.stage, seconds);
   }
+}
+
+FrameRunner::FrameRunner(const Technique& technique, StageBackend& backend, bool scratch)
+    : technique_(technique), backend_(backend), scratch_(scratch) {}
+
+const std::vector<FrameStep>& FrameRunner::run(Scene scene, const Settings& settings,
+                                               const StageObserver& observe) {
+  first_ = !plan_;
+  change_ = first_ ? SceneChange{} : sceneChange(scene_, scene);
+  previousScene_ = std::move(scene_);
+  scene_ = std::move(scene);
+  settings_ = settings;
+  // Unmoved geometry keeps its prepared triangles.
+  const bool prepare = first_ || scratch_ || (change_.parts & kSceneGeometry) != 0;
+  if (prepare) {
+    previousTriangles_ = std::move(triangles_);
+    // The meshes that did not move keep their triangles (same positions, same grid).
+    std::vector<bool> unchanged;
+    if (!first_ && !scratch_ && previousScene_.grid.min == scene_.grid.min &&
+        previousScene_.grid.size == scene_.grid.size &&
+        previousScene_.grid.resolution == scene_.grid.resolution &&
+        previousScene_.meshes.size() == scene_.meshes.size())
+      for (size_t m = 0; m < scene_.meshes.size(); ++m)
+        unchanged.push_back(previousScene_.meshes[m].positions == scene_.meshes[m].positions);
+    triangles_ = prepareVoxelTriangles(scene_, scene_.grid, previousTriangles_, unchanged);
+  }
+  StageContext ctx{technique_, scene_, settings_, triangles_};
+  if (scratch_) buffers_ = BufferSet{};
+  const bool same = !first_ && !scratch_ && plan_->sameDecisions(ctx.plan);
+  PreviousFrame previous{&previousScene_, prepare ? &previousTriangles_ : &triangles_, {}};
+  if (same) ctx.previous = &previous;
+  steps_ = frameSteps(ctx, scratch_ || first_ ? nullptr : &*plan_, change_);
+  if (scratch_)
+    for (FrameStep& s : steps_) s.why = "from scratch";
+  runFrame(backend_, ctx, buffers_, steps_, observe);
+  plan_ = ctx.plan;
+  return steps_;
+}
+
+std::string FrameRunner::why() const {
+  return scratch_ ? "from scratch" : first_ ? "the first frame" : change_.describe();
 }
 
 }  // namespace voxgi

@@ -6,6 +6,7 @@
 // before it (the incremental-equals-scratch tests hold the runner to this).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,5 +51,38 @@ std::vector<FrameStep> frameSteps(const StageContext& ctx, const EffectPlan* pre
 // exactly its planned buffers, or a reused one's are missing.
 void runFrame(StageBackend& backend, const StageContext& ctx, BufferSet& buffers,
               const std::vector<FrameStep>& steps, const StageObserver& observe = {});
+
+// The frames of a sequence on one backend: each frame's scene and settings in, the stages
+// frameSteps says run (all of them when `scratch`), the others keeping the buffers the frame
+// before left; a stage that reruns gets the frame before (StageContext::previous) when the plan
+// decided the same.
+class FrameRunner {
+ public:
+  FrameRunner(const Technique& technique, StageBackend& backend, bool scratch = false);
+  // Runs the frame; returns its steps. Throws as runFrame does, and InputError from the stages.
+  const std::vector<FrameStep>& run(Scene scene, const Settings& settings,
+                                    const StageObserver& observe = {});
+  const Scene& scene() const { return scene_; }
+  const Settings& settings() const { return settings_; }
+  const VoxelTriangles& triangles() const { return triangles_; }
+  const BufferSet& buffers() const { return buffers_; }
+  const std::vector<FrameStep>& steps() const { return steps_; }
+  // What moved since the frame before; "the first frame" or "from scratch" where nothing is
+  // compared.
+  std::string why() const;
+
+ private:
+  const Technique& technique_;
+  StageBackend& backend_;
+  bool scratch_;
+  bool first_ = true;
+  Scene scene_, previousScene_;
+  Settings settings_;
+  VoxelTriangles triangles_, previousTriangles_;
+  BufferSet buffers_;
+  std::optional<EffectPlan> plan_;
+  SceneChange change_;
+  std::vector<FrameStep> steps_;
+};
 
 }  // namespace voxgi

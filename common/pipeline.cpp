@@ -40,7 +40,13 @@ std::vector<const StageSpec*> plannedStages(const StageContext& ctx, const Stage
 StageOutputs runStage(StageBackend& backend, const StageSpec& stage, const StageContext& ctx,
                       BufferSet& buffers) {
   const std::vector<const BufferSpec*> own = stageBuffers(stage);
-  for (const BufferSpec* b : own) buffers.take(b->id);  // a rerun starts from its inputs alone
+  // A rerun starts from its inputs alone; the frame before's buffers go to a stage that updates
+  // them in part.
+  if (ctx.previous) ctx.previous->stash = BufferSet{};
+  for (const BufferSpec* b : own) {
+    Buffer old = buffers.take(b->id);
+    if (ctx.previous && old.spec != nullptr) ctx.previous->stash.put(std::move(old));
+  }
   // Other stages' buffers by where their words live: a stage that replaced one moved them.
   std::map<BufferId, const uint32_t*> before;
   for (const auto& [id, b] : buffers) before[id] = b.words.data();
@@ -48,6 +54,7 @@ StageOutputs runStage(StageBackend& backend, const StageSpec& stage, const Stage
     putDarkOutputs(ctx, stage.id, buffers);
   else
     backend.run(stage.id, ctx, buffers);
+  if (ctx.previous) ctx.previous->stash = BufferSet{};
   StageOutputs r;
   for (const BufferSpec* b : own) {
     const bool written = buffers.contains(b->id), planned = bufferNeeded(*b, ctx.plan);

@@ -13,6 +13,16 @@
 
 namespace voxgi {
 
+// The frame before in a sequence, for a stage that can update its buffers in part instead of
+// rebuilding them (docs/motion.md): the frame's scene and triangles, and the stage's own buffers
+// of that frame, which runStage moves here before the stage runs. A stage's output must be the
+// same whether or not it uses them.
+struct PreviousFrame {
+  const Scene* scene = nullptr;
+  const VoxelTriangles* triangles = nullptr;
+  BufferSet stash;
+};
+
 struct StageContext {
   StageContext(const Technique& t, const Scene& s, const Settings& st, const VoxelTriangles& tr)
       : technique(t), scene(s), settings(st), triangles(tr), plan(t.plan(s, st)) {}
@@ -21,6 +31,8 @@ struct StageContext {
   const Settings& settings;
   const VoxelTriangles& triangles;  // prepareVoxelTriangles(scene, scene.grid)
   const EffectPlan plan;            // technique.plan(scene, settings)
+  // Set by the runner of a sequence when the frame before ran under the same decisions.
+  PreviousFrame* previous = nullptr;
 };
 
 // Bytes of the buffers `stage` produces under the plan.

@@ -36,9 +36,7 @@ Polygon clipToBox(Polygon poly, double lo, double hi) {
   return poly;
 }
 
-struct Counts {
-  size_t degenerate = 0, outside = 0, clipped = 0;
-};
+using Counts = VoxelTriangleCounts;
 
 // A point's texture coordinates on the triangle `p` with coordinates `uv` (its barycentric weights
 // by least squares in double, so a clipped piece's corners keep the original's mapping).
@@ -102,7 +100,9 @@ unsigned dominantAxis(const glm::dvec3& n) {
   return a.y >= a.z ? 1 : 2;
 }
 
-VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid) {
+VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid,
+                                     const VoxelTriangles& before,
+                                     const std::vector<bool>& unchanged) {
   VoxelTriangles result;
   for (const Mesh& m : scene.meshes)
     if (!m.triangles.empty()) {
@@ -117,8 +117,13 @@ VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid) {
   };
   std::vector<Chunk> chunks;
   const size_t chunkSize = 4096;
+  // Reused triangles hold emission over the scale they were set up with.
+  const bool reusable = before.emissionScale == result.emissionScale &&
+                        before.meshFirst.size() == scene.meshes.size() + 1 &&
+                        unchanged.size() == scene.meshes.size();
+  const auto reused = [&](size_t mesh) { return reusable && unchanged[mesh]; };
   for (size_t mi = 0; mi < scene.meshes.size(); ++mi)
-    for (size_t b = 0; b < scene.meshes[mi].triangles.size(); b += chunkSize)
+    for (size_t b = 0; !reused(mi) && b < scene.meshes[mi].triangles.size(); b += chunkSize)
       chunks.push_back({mi, b, std::min(b + chunkSize, scene.meshes[mi].triangles.size()), {}, {}});
   const double lo = -1.0, hi = grid.resolution + 1.0;
   parallelFor(size_t(0), chunks.size(), [&](size_t ci) {
@@ -156,13 +161,34 @@ VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid) {
       }
     }
   });
-  for (Chunk& c : chunks) {
-    result.triangles.insert(result.triangles.end(), c.out.begin(), c.out.end());
-    result.degenerate += c.counts.degenerate;
-    result.outside += c.counts.outside;
-    result.clipped += c.counts.clipped;
+  // Each mesh in order: its triangles from `before`, or from its chunks.
+  size_t chunk = 0;
+  for (size_t mesh = 0; mesh < scene.meshes.size(); ++mesh) {
+    Counts counts;
+    if (reused(mesh)) {
+      result.triangles.insert(result.triangles.end(),
+                              before.triangles.begin() + ptrdiff_t(before.meshFirst[mesh]),
+                              before.triangles.begin() + ptrdiff_t(before.meshFirst[mesh + 1]));
+      counts = before.meshCounts[mesh];
+    }
+    for (; chunk < chunks.size() && chunks[chunk].mesh == mesh; ++chunk) {
+      const Chunk& c = chunks[chunk];
+      result.triangles.insert(result.triangles.end(), c.out.begin(), c.out.end());
+      counts.degenerate += c.counts.degenerate;
+      counts.outside += c.counts.outside;
+      counts.clipped += c.counts.clipped;
+    }
+    result.meshFirst.push_back(result.triangles.size());
+    result.meshCounts.push_back(counts);
+    result.degenerate += counts.degenerate;
+    result.outside += counts.outside;
+    result.clipped += counts.clipped;
   }
   return result;
+}
+
+VoxelTriangles prepareVoxelTriangles(const Scene& scene, const GridSpec& grid) {
+  return prepareVoxelTriangles(scene, grid, VoxelTriangles{}, {});
 }
 
 }  // namespace voxgi

@@ -1,12 +1,21 @@
 // CPU voxelize stage: every (triangle, voxel) pair the shared kernel accepts is accumulated with
-// integer atomics (order-independent, so bit-identical for any thread count), then resolved.
+// integer atomics (order-independent, so bit-identical for any thread count), then resolved. In a
+// sequence where a few meshes moved, the frame before's sums are updated in part instead
+// ([Villegas 2017, §1.2] revoxelizes its dynamic objects alone): the moved meshes' contributions of
+// that frame are subtracted, this frame's added, and only the voxels either touched are resolved
+// again. Integer sums make the update exact, so the buffers are the ones voxelizing every triangle
+// gives.
 #include <atomic>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 
 #include "common/error.h"
 #include "common/parallel.h"
 #include "common/voxel_overflow.h"
+#include "common/voxelize_update.h"
 #include "common/voxel_walk.h"
 #include "cpu/stages.h"
 
@@ -21,7 +30,9 @@ struct Accumulator {
   Buffer& weight;
   Buffer& albedo;
   Buffer& normal;
-  Buffer* emission;  // null when the scene emits nothing
+  Buffer* emission;          // null when the scene emits nothing
+  bool subtract = false;     // take the contributions out (wrapping, exact) instead of adding
+  uint8_t* dirty = nullptr;  // when set, 1 at every voxel a contribution reaches
   // Set by the first contribution that takes a voxel past kMaxWeightSum: the sums of that voxel
   // are lost, the stage fails, so the remaining triangles are skipped.
   std::atomic<bool> overflow{false};
@@ -32,17 +43,26 @@ struct Accumulator {
 
   void operator()(const glm::ivec3& voxel, const VoxelContribution& c) {
     const size_t e = grid.index(voxel);
-    const uint32_t old =
-        std::atomic_ref<uint32_t>(weight.words[e]).fetch_add(c.weight, std::memory_order_relaxed);
-    if (uint64_t(old) + c.weight > shared::kMaxWeightSum)
+    if (dirty != nullptr) std::atomic_ref<uint8_t>(dirty[e]).store(1, std::memory_order_relaxed);
+    // Adding (0 - v) modulo 2^32 takes v out exactly.
+    const auto term = [this](uint32_t v) { return subtract ? 0u - v : v; };
+    const uint32_t old = std::atomic_ref<uint32_t>(weight.words[e])
+                             .fetch_add(term(c.weight), std::memory_order_relaxed);
+    // Adds alone raise a sum, so the check fires exactly when the final sum passes the bound.
+    if (!subtract && uint64_t(old) + c.weight > shared::kMaxWeightSum)
       overflow.store(true, std::memory_order_relaxed);
     for (int i = 0; i < 3; ++i) {
-      add(albedo.words[3 * e + size_t(i)], c.albedo[i]);
-      add(normal.words[3 * e + size_t(i)], static_cast<uint32_t>(c.normal[i]));  // two's complement
-      if (emission != nullptr) add(emission->words[4 * e + size_t(i)], c.emission[i]);
+      add(albedo.words[3 * e + size_t(i)], term(c.albedo[i]));
+      add(normal.words[3 * e + size_t(i)], term(static_cast<uint32_t>(c.normal[i])));
+      if (emission != nullptr) add(emission->words[4 * e + size_t(i)], term(c.emission[i]));
     }
-    if (emission != nullptr) add(emission->words[4 * e + 3], c.emitterWeight);
+    if (emission != nullptr) add(emission->words[4 * e + 3], term(c.emitterWeight));
   }
+};
+
+// The sums and resolved volumes of the stage, allocated or taken from the frame before.
+struct VoxelBuffers {
+  Buffer weight, albedoSum, normalSum, emissionSum, opacity, albedo, normal, emission;
 };
 
 }  // namespace
@@ -58,65 +78,94 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
       ctx.plan.on(Effect::emission);  // emissionScale may be 0 under plan.mode=full
   const bool emitterMean = ctx.settings.voxelizeEmission == VoxelizeEmission::emitters;
   const glm::ivec3 extent(n);
-  Buffer weight(BufferId::common_voxelize_weight_sum, extent);
-  Buffer albedoSum(BufferId::common_voxelize_albedo_sum, extent);
-  Buffer normalSum(BufferId::common_voxelize_normal_sum, extent);
-  Buffer emissionSum = emissive ? Buffer(BufferId::common_voxelize_emission_sum, extent) : Buffer();
-  Accumulator acc{grid, weight, albedoSum, normalSum, emissive ? &emissionSum : nullptr};
+  const std::optional<MovedTriangles> moved = movedTriangles(ctx, emissive);
+  VoxelBuffers v;
+  if (moved) {
+    BufferSet& stash = ctx.previous->stash;
+    v = {stash.take(BufferId::common_voxelize_weight_sum),
+         stash.take(BufferId::common_voxelize_albedo_sum),
+         stash.take(BufferId::common_voxelize_normal_sum),
+         stash.take(BufferId::common_voxelize_emission_sum),
+         stash.take(BufferId::common_voxelize_opacity),
+         stash.take(BufferId::common_voxelize_albedo),
+         stash.take(BufferId::common_voxelize_normal),
+         stash.take(BufferId::common_voxelize_emission)};
+  } else {
+    v = {Buffer(BufferId::common_voxelize_weight_sum, extent),
+         Buffer(BufferId::common_voxelize_albedo_sum, extent),
+         Buffer(BufferId::common_voxelize_normal_sum, extent),
+         emissive ? Buffer(BufferId::common_voxelize_emission_sum, extent) : Buffer(),
+         Buffer(BufferId::common_voxelize_opacity, extent),
+         Buffer(BufferId::common_voxelize_albedo, extent),
+         Buffer(BufferId::common_voxelize_normal, extent),
+         emissive ? Buffer(BufferId::common_voxelize_emission, extent) : Buffer()};
+  }
+  std::vector<uint8_t> dirty(moved ? v.weight.elementCount() : 0);
+  Accumulator acc{grid, v.weight, v.albedoSum, v.normalSum, emissive ? &v.emissionSum : nullptr};
+  acc.dirty = moved ? dirty.data() : nullptr;
 
-  const auto& tris = ctx.triangles.triangles;
   const TextureAccess textures{ctx.scene.textures};
-  parallelFor(tbb::blocked_range<size_t>(0, tris.size(), 64), [&](const auto& range) {
-    for (size_t i = range.begin(); i != range.end(); ++i) {
-      // A million copies of one triangle fail after the first few thousand, not after all.
-      if (acc.overflow.load(std::memory_order_relaxed)) return;
-      if (antialiased)
-        antialiasedWalk(tris[i], n, textures, acc);
-      else
-        conservativeWalk(tris[i], n, textures, acc);
-    }
-  });
+  const auto walk = [&](const std::vector<shared::VoxelTriangle>& tris, size_t first, size_t end) {
+    parallelFor(tbb::blocked_range<size_t>(first, end, 64), [&](const auto& range) {
+      for (size_t i = range.begin(); i != range.end(); ++i) {
+        // A million copies of one triangle fail after the first few thousand, not after all.
+        if (acc.overflow.load(std::memory_order_relaxed)) return;
+        if (antialiased)
+          antialiasedWalk(tris[i], n, textures, acc);
+        else
+          conservativeWalk(tris[i], n, textures, acc);
+      }
+    });
+  };
+  if (moved) {
+    // Every subtraction before any addition, so that a running sum passes the bound only when
+    // the final one does.
+    acc.subtract = true;
+    for (const auto& [first, end] : moved->before)
+      walk(ctx.previous->triangles->triangles, first, end);
+    acc.subtract = false;
+    for (const auto& [first, end] : moved->now) walk(ctx.triangles.triangles, first, end);
+  } else {
+    walk(ctx.triangles.triangles, 0, ctx.triangles.triangles.size());
+  }
 
   if (acc.overflow)
     throw InputError(ctx.scene.file, "meshes",
                      "more than 32768 voxel faces of surface fall into one voxel (fixed-point "
                      "overflow); lower grid.resolution or remove overlapping copies");
 
-  Buffer opacity(BufferId::common_voxelize_opacity, extent);
-  Buffer albedo(BufferId::common_voxelize_albedo, extent);
-  Buffer normal(BufferId::common_voxelize_normal, extent);
-  Buffer emission = emissive ? Buffer(BufferId::common_voxelize_emission, extent) : Buffer();
-  parallelFor(tbb::blocked_range<size_t>(0, weight.elementCount(), 4096), [&](const auto& range) {
+  parallelFor(tbb::blocked_range<size_t>(0, v.weight.elementCount(), 4096), [&](const auto& range) {
     for (size_t e = range.begin(); e != range.end(); ++e) {
-      const uint32_t w = weight.words[e];
-      opacity.set(e, 0, shared::resolveOpacity(w, antialiased));
+      if (moved && dirty[e] == 0) continue;
+      const uint32_t w = v.weight.words[e];
+      v.opacity.set(e, 0, shared::resolveOpacity(w, antialiased));
       auto sum3 = [&](const Buffer& b) {
         return glm::uvec3(b.words[3 * e], b.words[3 * e + 1], b.words[3 * e + 2]);
       };
-      const glm::vec3 a = shared::resolveAverage(sum3(albedoSum), w);
-      const glm::vec3 nm = shared::resolveNormal(glm::ivec3(sum3(normalSum)), w);
+      const glm::vec3 a = shared::resolveAverage(sum3(v.albedoSum), w);
+      const glm::vec3 nm = shared::resolveNormal(glm::ivec3(sum3(v.normalSum)), w);
       for (int c = 0; c < 3; ++c) {
-        albedo.set(e, c, a[c]);
-        normal.set(e, c, nm[c]);
+        v.albedo.set(e, c, a[c]);
+        v.normal.set(e, c, nm[c]);
       }
       if (emissive) {
-        const uint32_t* sum = &emissionSum.words[4 * e];
+        const uint32_t* sum = &v.emissionSum.words[4 * e];
         const uint32_t over = emitterMean ? sum[3] : w;
         const glm::vec3 em = shared::resolveEmission(glm::uvec3(sum[0], sum[1], sum[2]), over,
                                                      ctx.triangles.emissionScale);
-        for (int c = 0; c < 3; ++c) emission.set(e, c, em[c]);
+        for (int c = 0; c < 3; ++c) v.emission.set(e, c, em[c]);
       }
     }
   });
-  buffers.put(std::move(weight));
-  buffers.put(std::move(albedoSum));
-  buffers.put(std::move(normalSum));
-  buffers.put(std::move(opacity));
-  buffers.put(std::move(albedo));
-  buffers.put(std::move(normal));
+  buffers.put(std::move(v.weight));
+  buffers.put(std::move(v.albedoSum));
+  buffers.put(std::move(v.normalSum));
+  buffers.put(std::move(v.opacity));
+  buffers.put(std::move(v.albedo));
+  buffers.put(std::move(v.normal));
   if (emissive) {
-    buffers.put(std::move(emissionSum));
-    buffers.put(std::move(emission));
+    buffers.put(std::move(v.emissionSum));
+    buffers.put(std::move(v.emission));
   }
 }
 

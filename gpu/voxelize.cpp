@@ -1,11 +1,15 @@
 // GPU voxelize stage: the graphics-pipeline voxelizer (conservative) or a compute splatter
 // (antialiased) accumulate into integer images, a compute pass resolves them, and every buffer is
-// read back for the next stage and for `voxgi diff`.
+// read back for the next stage and for `voxgi diff`. In a sequence where few meshes moved, the
+// images start from the frame before's sums and only the moved meshes' triangles are drawn, once
+// subtracting that frame's and once adding this one's (common/voxelize_update.h).
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "common/error.h"
 #include "common/voxel_overflow.h"
+#include "common/voxelize_update.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
 #include "gpu/texture_pool.h"
@@ -21,6 +25,24 @@ namespace {
 struct SumImages {
   GlTexture weight, albedo, normal, emission;
 };
+
+// The sum images holding the frame before's sums (from the stash), for a partial update.
+SumImages previousSums(const Gl& gl, int n, bool emissive, BufferSet& stash) {
+  SumImages s{GlTexture(gl, createTexture3d(gl, GL_R32UI, glm::ivec3(n))),
+              GlTexture(gl, createTexture3d(gl, GL_R32UI, {3 * n, n, n})),
+              GlTexture(gl, createTexture3d(gl, GL_R32I, {3 * n, n, n})),
+              GlTexture(gl, emissive ? createTexture3d(gl, GL_R32UI, {4 * n, n, n}) : 0)};
+  const auto upload = [&](const GlTexture& t, BufferId id, int width, GLenum type) {
+    const Buffer& b = stash.at(id);
+    gl.TextureSubImage3D(t.get(), 0, 0, 0, 0, width * n, n, n, GL_RED_INTEGER, type,
+                         b.words.data());
+  };
+  upload(s.weight, BufferId::common_voxelize_weight_sum, 1, GL_UNSIGNED_INT);
+  upload(s.albedo, BufferId::common_voxelize_albedo_sum, 3, GL_UNSIGNED_INT);
+  upload(s.normal, BufferId::common_voxelize_normal_sum, 3, GL_INT);
+  if (emissive) upload(s.emission, BufferId::common_voxelize_emission_sum, 4, GL_UNSIGNED_INT);
+  return s;
+}
 
 SumImages clearedSums(const Gl& gl, int n, bool emissive) {
   SumImages s{GlTexture(gl, createTexture3d(gl, GL_R32UI, glm::ivec3(n))),
@@ -43,8 +65,9 @@ void bindSums(const Gl& gl, const SumImages& s, GLenum access) {
 }
 
 // Antialiased: one invocation per (triangle, row); see shaders/voxelize_antialiased.comp.
-void splatAntialiased(const Gl& gl, const StageContext& ctx, int n, bool emissive) {
-  const auto& tris = ctx.triangles.triangles;
+void splatAntialiased(const Gl& gl, const StageContext& ctx,
+                      const std::vector<shared::VoxelTriangle>& tris, int n, bool emissive,
+                      bool subtract) {
   std::vector<uint32_t> firstRow(tris.size() + 1, 0u);
   for (size_t i = 0; i < tris.size(); ++i) {
     if (uint64_t(firstRow[i]) + tris[i].subdivision > 0xFFFFFFFFull - 64u)
@@ -59,15 +82,17 @@ void splatAntialiased(const Gl& gl, const StageContext& ctx, int n, bool emissiv
   splat.set("uHasEmission", emissive ? 1 : 0);
   splat.set("uTriangleCount", static_cast<unsigned>(tris.size()));
   splat.set("uRowCount", firstRow.back());
+  splat.set("uSubtract", subtract ? 1 : 0);
   splat.use();
   dispatchLinear(gl, firstRow.back());
 }
 
 // Conservative: the graphics pipeline, each triangle projected on its dominant axis.
-void rasterizeConservative(const Gl& gl, size_t triangles, int n, bool emissive) {
+void rasterizeConservative(const Gl& gl, size_t triangles, int n, bool emissive, bool subtract) {
   Program raster(gl, {&shaders::voxelize_vert, &shaders::voxelize_geom, &shaders::voxelize_frag});
   raster.set("uResolution", n);
   raster.set("uHasEmission", emissive ? 1 : 0);
+  raster.set("uSubtract", subtract ? 1 : 0);
   raster.use();
   GLuint fbo = 0, vao = 0;
   gl.CreateFramebuffers(1, &fbo);  // no attachments: fragments only write images
@@ -154,27 +179,35 @@ void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& bu
   refuseRepeatedTriangles(ctx.triangles, n, antialiased, ctx.scene.file);
   const bool emissive =
       ctx.plan.on(Effect::emission);  // emissionScale may be 0 under plan.mode=full
-  const auto& tris = ctx.triangles.triangles;
-
-  GlBuffer triangles(gl,
-                     createBuffer(gl, tris.size() * sizeof(shared::VoxelTriangle), tris.data()));
+  const std::optional<MovedTriangles> moved = movedTriangles(ctx, emissive);
   const uint32_t zero = 0;
   GlBuffer status(gl, createBuffer(gl, sizeof zero, &zero));
-  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, triangles.get());
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, status.get());
   const TexturePoolBuffers textures(gl, ctx.scene.textures);
-  const SumImages sums = clearedSums(gl, n, emissive);
+  const SumImages sums =
+      moved ? previousSums(gl, n, emissive, ctx.previous->stash) : clearedSums(gl, n, emissive);
   bindSums(gl, sums, GL_READ_WRITE);
   gl.check("voxelize: allocating volumes");
 
-  if (!tris.empty()) {
+  // Every triangle, or the moved meshes' of the frame before taken out, then this frame's added.
+  const auto draw = [&](const std::vector<shared::VoxelTriangle>& tris, bool subtract) {
+    if (tris.empty()) return;
+    GlBuffer triangles(gl,
+                       createBuffer(gl, tris.size() * sizeof(shared::VoxelTriangle), tris.data()));
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, triangles.get());
     if (antialiased)
-      splatAntialiased(gl, ctx, n, emissive);
+      splatAntialiased(gl, ctx, tris, n, emissive, subtract);
     else
-      rasterizeConservative(gl, tris.size(), n, emissive);
+      rasterizeConservative(gl, tris.size(), n, emissive, subtract);
     gl.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT |
                      GL_SHADER_STORAGE_BARRIER_BIT);
     gl.check("voxelize: accumulating");
+  };
+  if (moved) {
+    draw(trianglesIn(*ctx.previous->triangles, moved->before), true);
+    draw(trianglesIn(ctx.triangles, moved->now), false);
+  } else {
+    draw(ctx.triangles.triangles, false);
   }
   const ResolvedImages resolved = resolve(gl, ctx, sums, n, emissive);
 

@@ -10,17 +10,22 @@ layout(binding = 2, r32i) uniform coherent iimage3D uNormalSum;
 layout(binding = 3, r32ui) uniform coherent uimage3D uEmissionSum;
 uniform int uResolution;
 uniform bool uHasEmission;  // false: the scene emits nothing and uEmissionSum is not bound
+// A partial update (common/voxelize_update.h) takes the frame before's contributions of the moved
+// meshes out: adding 0 - v modulo 2^32 is exact.
+uniform bool uSubtract;
+
+uint term(uint v) { return uSubtract ? 0u - v : v; }
 
 void accumulate(ivec3 voxel, VoxelContribution c) {
-  uint old = imageAtomicAdd(uWeightSum, voxel, c.weight);
-  if (old > 0xFFFFFFFFu - c.weight) atomicOr(overflow, 1u);
+  uint old = imageAtomicAdd(uWeightSum, voxel, term(c.weight));
+  if (!uSubtract && old > 0xFFFFFFFFu - c.weight) atomicOr(overflow, 1u);
   for (int i = 0; i < 3; ++i) {
     ivec3 texel = ivec3(3 * voxel.x + i, voxel.y, voxel.z);
-    imageAtomicAdd(uAlbedoSum, texel, c.albedo[i]);
-    imageAtomicAdd(uNormalSum, texel, c.normal[i]);
+    imageAtomicAdd(uAlbedoSum, texel, term(c.albedo[i]));
+    imageAtomicAdd(uNormalSum, texel, int(term(uint(c.normal[i]))));
     if (uHasEmission)
-      imageAtomicAdd(uEmissionSum, ivec3(4 * voxel.x + i, voxel.y, voxel.z), c.emission[i]);
+      imageAtomicAdd(uEmissionSum, ivec3(4 * voxel.x + i, voxel.y, voxel.z), term(c.emission[i]));
   }
   if (uHasEmission)
-    imageAtomicAdd(uEmissionSum, ivec3(4 * voxel.x + 3, voxel.y, voxel.z), c.emitterWeight);
+    imageAtomicAdd(uEmissionSum, ivec3(4 * voxel.x + 3, voxel.y, voxel.z), term(c.emitterWeight));
 }

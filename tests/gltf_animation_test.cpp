@@ -22,10 +22,10 @@ namespace {
 // cubic spline of scale from 1 to 3 with out-tangent 1 at the first key (4); one triangle (5).
 std::vector<float> animationBuffer() {
   const float h = float(std::sqrt(0.5));
-  return {0, 1, 2,                                   //
-          0, 0, 0, 0, 2, 0, 0, 4, 0,                 //
-          0, 0, 0, 1, 0, h, 0, h, 0, 1, 0, 0,        //
-          0, 2,                                      //
+  return {0, 1, 2,                                               //
+          0, 0, 0, 0, 2, 0, 0, 4, 0,                             //
+          0, 0, 0, 1, 0, h, 0, h, 0, 1, 0, 0,                    //
+          0, 2,                                                  //
           0, 0, 0, 1, 1, 1, 1, 1, 1, 0, 0, 0, 3, 3, 3, 0, 0, 0,  //
           0, 0, 0, 1, 0, 0, 0, 1, 0};
 }
@@ -47,7 +47,8 @@ std::string animatedGltf(const std::string& channels = "", const std::string& no
       {"sampler":0,"target":{"node":1,"path":"weights"}})";
   return writeTemp("animated.gltf", R"({"asset":{"version":"2.0"},"scene":0,
   "scenes":[{"nodes":[0,2,3]}],
-  "nodes":[{"name":"turner","children":[1])" + node0 + R"(},
+  "nodes":[{"name":"turner","children":[1])" +
+                                        node0 + R"(},
            {"name":"grower","translation":[1,0,0],"mesh":0},
            {"name":"cam","camera":0},
            {"name":"lamp","translation":[0,3,0],"extensions":{"KHR_lights_punctual":{"light":0}}}],
@@ -55,7 +56,7 @@ std::string animatedGltf(const std::string& channels = "", const std::string& no
   "extensions":{"KHR_lights_punctual":{"lights":[{"type":"spot","intensity":683,"spot":{}}]}},
   "meshes":[{"primitives":[{"attributes":{"POSITION":5}}]}],
   "animations":[{"name":"move","channels":[)" +
-                                       (channels.empty() ? defaultChannels : channels) + R"(],
+                                        (channels.empty() ? defaultChannels : channels) + R"(],
     "samplers":[{"input":0,"output":1,"interpolation":"STEP"},
                 {"input":0,"output":2},
                 {"input":3,"output":4,"interpolation":"CUBICSPLINE"},
@@ -79,17 +80,19 @@ std::string animatedGltf(const std::string& channels = "", const std::string& no
 // angle a(t) about +y (x -> (cos a, 0, -sin a) x) and lifted by its step translation.
 // t = 1: a = 90 degrees, lift 2 (a key's own time takes its value), s = the spline at half its
 // span: (1/2)(1) + 2(1/8)(1) + (1/2)(3) = 2.25, so (0, 2, -3.25).
-// t = 0.5: a = 45 degrees (slerp), lift 0 (held), s at a quarter: 0.84375 + 2(0.140625) + 0.15625(3)
-// = 1.59375.
+// t = 0.5: a = 45 degrees (slerp), lift 0 (held), s at a quarter: 0.84375 + 2(0.140625) +
+// 0.15625(3) = 1.59375.
 TEST(GltfAnimation, NodeChannelsMoveTheMeshDownTheHierarchy) {
   const Scene scene = loadScene(animatedGltf());
   ASSERT_EQ(scene.meshes.size(), 1u);
   ASSERT_EQ(scene.motion.meshes.size(), 1u);
-  expectVec(scene.meshes[0].positions[1], {2.0, 0.0, 0.0}, 1e-6);  // loaded at the nodes' own transforms
+  expectVec(scene.meshes[0].positions[1], {2.0, 0.0, 0.0},
+            1e-6);  // loaded at the nodes' own transforms
   expectVec(sceneAt(scene, 1.0).meshes[0].positions[1], {0.0, 2.0, -3.25}, 1e-6);
   const double x = 1.0 + 1.59375, c = std::sqrt(0.5);
   expectVec(sceneAt(scene, 0.5).meshes[0].positions[1], {x * c, 0.0, -x * c}, 1e-6);
-  expectVec(sceneAt(scene, 0.5).meshes[0].positions[0], {c, 0.0, -c}, 1e-6);  // the origin of node 1
+  expectVec(sceneAt(scene, 0.5).meshes[0].positions[0], {c, 0.0, -c},
+            1e-6);  // the origin of node 1
   // Before the first key the first values, after the last the last: 180 degrees, lift 4, scale 3.
   expectVec(sceneAt(scene, -1.0).meshes[0].positions[1], {2.0, 0.0, 0.0}, 1e-6);
   expectVec(sceneAt(scene, 9.0).meshes[0].positions[1], {-4.0, 4.0, 0.0}, 1e-6);

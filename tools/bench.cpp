@@ -103,6 +103,11 @@ void addBenchCommand(CLI::App& app, Commands& commands) {
            "the path tracer per transport: each estimator's time and error against a converged "
            "render, efficiency 1 / (seconds x MSE)",
            addBenchPathOptions, runBenchPath);
+  addBench(*bench, commands, "frames",
+           "an animated scene's frames: each stage's time per frame when the frame reuses and "
+           "updates the frame before's buffers against rebuilding them, CPU per thread count "
+           "and GPU",
+           addBenchFramesOptions, runBenchFrames);
 }
 
 }  // namespace voxgi::tools

@@ -3,7 +3,8 @@
 // `voxgi bench vct` per-stage times of the VCT pipeline, plus mip against a memcpy of its input;
 // `voxgi bench lpv` per-stage times of lpv and holpv, propagation against the bytes it moves;
 // `voxgi bench svo` the octree's build from a point cloud against OpenVDB's point rasterisation;
-// `voxgi bench path` the path tracer's efficiency per estimator against the former one.
+// `voxgi bench path` the path tracer's efficiency per estimator against the former one;
+// `voxgi bench frames` a sequence's per-frame cost, each frame updated against rebuilt.
 #pragma once
 
 #include <functional>
@@ -90,6 +91,21 @@ struct BenchPathOptions {
 
 void addBenchPathOptions(CLI::App& cmd, BenchPathOptions& options);
 int runBenchPath(const BenchPathOptions& options);
+
+struct BenchFramesOptions {
+  std::vector<std::string> scenes{"scenes/bunny_crowd.json"};
+  std::vector<std::string> techniques{"vct", "lpv", "svo"};
+  std::string frames = "0:48:4";
+  std::vector<int> resolutions{64, 128};
+  std::vector<int> threads{1, 2};
+  int repeats = 3;
+  bool gpu = true;
+  std::string gl = "osmesa";  // the GPU column's GL platform (--gl)
+  std::string json;
+};
+
+void addBenchFramesOptions(CLI::App& cmd, BenchFramesOptions& options);
+int runBenchFrames(const BenchFramesOptions& options);
 
 // The median time of each stage the plan runs after voxelize on `backend`, each from the CPU's
 // outputs of the stages before it (voxelize has its own benchmark); stage -> seconds.

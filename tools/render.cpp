@@ -59,13 +59,13 @@ void checkOutputs(const RenderOptions& o, bool variance) {
 
 // A technique of the registry: the frame's stages on the sequence's backend, then its image.
 int renderTechnique(const RenderOptions& o, StageSequence& sequence, Scene scene, bool frames) {
-  const StageRun& run = sequence.frame(std::move(scene));
+  const FrameRunner& run = sequence.frame(std::move(scene));
   const Technique& technique = findTechnique(o.scene.technique);
-  const Image image = bufferImage(run.buffers.at(technique.image));
+  const Image image = bufferImage(run.buffers().at(technique.image));
   requireFinite(image, std::string(technique.name) + "'s image");
   std::optional<TermImages> split;
   if (o.terms) {
-    split = techniqueTerms(technique, run.buffers, run.settings, run.scene);
+    split = techniqueTerms(technique, run.buffers(), run.settings(), run.scene());
     if (!split)
       throw InputError("--terms", "",
                        std::string(technique.name) + " has no per-term light buffers");
@@ -73,11 +73,11 @@ int renderTechnique(const RenderOptions& o, StageSequence& sequence, Scene scene
   writeExr(o.out, image);
   if (split) writeTermImages(o.out, *split);
   if (!o.png.empty()) writePng(o.png, image);
-  std::cout << technique.name << " rendered " << run.scene.camera.width << "x"
-            << run.scene.camera.height << " at " << run.scene.grid.resolution << "^3 ("
-            << run.backendName() << ") in " << run.seconds << " s -> " << o.out
+  std::cout << technique.name << " rendered " << run.scene().camera.width << "x"
+            << run.scene().camera.height << " at " << run.scene().grid.resolution << "^3 ("
+            << sequence.backendName() << ") in " << sequence.seconds() << " s -> " << o.out
             << (frames ? "; " + sequence.summary() : "") << "\n";
-  if (const std::string note = lightingNote(run.scene); !note.empty())
+  if (const std::string note = lightingNote(run.scene()); !note.empty())
     std::cerr << "voxgi: " << note << "\n";
   return kExitOk;
 }

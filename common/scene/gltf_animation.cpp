@@ -66,7 +66,7 @@ void readGltfAnimations(const std::string& path, const tinygltf::Model& model,
       const tinygltf::AnimationChannel& channel = animation.channels[c];
       const std::string field = where + ".channels[" + std::to_string(c) + "]";
       if (channel.target_path == "weights") continue;  // morph targets: not read
-      if (channel.target_node < 0) continue;  // no node: glTF says the channel is ignored
+      if (channel.target_node < 0) continue;           // no node: glTF says the channel is ignored
       if (size_t(channel.target_node) >= authored.nodes.size())
         throw InputError(path, field + ".target.node", "names no node");
       if (channel.sampler < 0 || size_t(channel.sampler) >= animation.samplers.size())
@@ -104,9 +104,9 @@ void readGltfAnimations(const std::string& path, const tinygltf::Model& model,
             n.rotateKeys->values[i] = glm::normalize(n.rotateKeys->values[i]);
         }
       } else {
-        throw InputError(path, field + ".target.path",
-                         "must be translation, rotation, scale or weights, got '" +
-                             channel.target_path + "'");
+        throw InputError(
+            path, field + ".target.path",
+            "must be translation, rotation, scale or weights, got '" + channel.target_path + "'");
       }
     }
   }
