@@ -41,9 +41,8 @@ std::optional<MovedTriangles> movedTriangles(const StageContext& ctx, bool emiss
   return moved;
 }
 
-
-std::vector<shared::VoxelTriangle> trianglesIn(const VoxelTriangles& triangles,
-                                               const std::vector<std::pair<size_t, size_t>>& ranges) {
+std::vector<shared::VoxelTriangle> trianglesIn(
+    const VoxelTriangles& triangles, const std::vector<std::pair<size_t, size_t>>& ranges) {
   std::vector<shared::VoxelTriangle> out;
   for (const auto& [first, end] : ranges)
     out.insert(out.end(), triangles.triangles.begin() + ptrdiff_t(first),

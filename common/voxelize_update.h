@@ -26,7 +26,7 @@ struct MovedTriangles {
 std::optional<MovedTriangles> movedTriangles(const StageContext& ctx, bool emissive);
 
 // The triangles of `ranges`, in order.
-std::vector<shared::VoxelTriangle> trianglesIn(const VoxelTriangles& triangles,
-                                               const std::vector<std::pair<size_t, size_t>>& ranges);
+std::vector<shared::VoxelTriangle> trianglesIn(
+    const VoxelTriangles& triangles, const std::vector<std::pair<size_t, size_t>>& ranges);
 
 }  // namespace voxgi

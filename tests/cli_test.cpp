@@ -524,5 +524,39 @@ TEST(Cli, RenderFramesReusesWhatDidNotChange) {
       << p.output;
 }
 
+// compare --frames on hand-made sequences: the reference brightens from 1 to 2 to 4, the test from
+// 1 to 3 and stays. In units of each reference frame's mean (2, then 4): flicker |2 - 1| / 2 = 0.5
+// then |0 - 2| / 4 = 0.5, held 1 / 2 then 2 / 4; relMSE per frame (t - r)^2 / (r^2 + 0.01 u^2).
+TEST(Cli, CompareFramesMeasuresFlickerAgainstTheReferencesChange) {
+  const std::string dir = testTempDir();
+  const float reference[] = {1.0f, 2.0f, 4.0f}, test[] = {1.0f, 3.0f, 3.0f};
+  for (int f = 0; f < 3; ++f) {
+    Image r(8, 8), t(8, 8);
+    for (glm::vec3& p : r.pixels) p = glm::vec3(reference[f]);
+    for (glm::vec3& p : t.pixels) p = glm::vec3(test[f]);
+    writeExr(dir + "ref_" + std::to_string(f) + ".exr", r);
+    writeExr(dir + "seq_" + std::to_string(f) + ".exr", t);
+  }
+  const CommandResult r = voxgi("compare " + dir + "seq_%d.exr " + dir +
+                                "ref_%d.exr --frames 0:2 --json " + dir + "frames.json");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(dir + "frames.json"));
+  ASSERT_EQ(j["frames"].size(), 3u);
+  EXPECT_FALSE(j["frames"][0].contains("flicker"));
+  EXPECT_NEAR(j["frames"][1]["flicker"].get<double>(), 0.5, 1e-6);
+  EXPECT_NEAR(j["frames"][2]["flicker"].get<double>(), 0.5, 1e-6);
+  EXPECT_NEAR(j["frames"][1]["held"].get<double>(), 0.5, 1e-6);
+  EXPECT_NEAR(j["frames"][2]["held"].get<double>(), 0.5, 1e-6);
+  EXPECT_NEAR(j["frames"][1]["rel_mse"].get<double>(), 1.0 / (4.0 + 0.01 * 4.0), 1e-6);
+  EXPECT_TRUE(std::filesystem::exists(dir + "seq_2.error.png"));
+  // A missing frame, and options for one image, are refused in one line.
+  for (const std::string& bad :
+       {std::string(" --frames 0:3"), std::string(" --frames 0:2 --terms")}) {
+    const CommandResult e = voxgi("compare " + dir + "seq_%d.exr " + dir + "ref_%d.exr" + bad);
+    EXPECT_EQ(e.code, 2) << bad << "\n" << e.output;
+    EXPECT_EQ(std::count(e.output.begin(), e.output.end(), '\n'), 1) << e.output;
+  }
+}
+
 }  // namespace
 }  // namespace voxgi::test

@@ -89,5 +89,4 @@ void expectIncrementalFramesEqualScratch(const TechniqueCase& c, StageBackend& b
   }
 }
 
-
 }  // namespace voxgi::test

@@ -7,6 +7,7 @@
 
 #include "validation/reference/image_metrics.h"
 #include "validation/reference/pareto.h"
+#include "validation/reference/temporal_metrics.h"
 
 namespace voxgi::test {
 namespace {
@@ -181,6 +182,34 @@ TEST(Pareto, KeepsThePointsNothingBeatsInTimeAndError) {
   const std::vector<double> seconds{1, 2, 2, 3, 4, 4}, error{5, 3, 4, 3, 1, 1};
   EXPECT_EQ(reference::paretoFront(seconds, error),
             (std::vector<bool>{true, true, false, false, true, true}));
+}
+
+// Flicker (validation/reference/temporal_metrics.h) by hand on two pixels, unit 2 per channel: the
+// test jumps by 1 at the first pixel and holds the second, the reference rises by 0.5 at both.
+// Changes differ by 0.5 everywhere: error sqrt(0.25 / 4) = 0.25; the reference's own change 0.5
+// / 2 = 0.25 (held); variances 0.01 and 0.03 give sqrt(0.04 / 4) = 0.1. A test that follows the
+// reference's change exactly, offset by a constant, has no flicker.
+TEST(TemporalMetrics, ChangesAgainstTheReferencesByHand) {
+  Image testA(2, 1), testB(2, 1), refA(2, 1), refB(2, 1), varA(2, 1), varB(2, 1);
+  testB.pixels[0] = glm::vec3(1.0f);
+  refB.pixels = {glm::vec3(0.5f), glm::vec3(0.5f)};
+  varA.pixels = {glm::vec3(0.01f), glm::vec3(0.01f)};
+  varB.pixels = {glm::vec3(0.03f), glm::vec3(0.03f)};
+  reference::MetricScale scale;
+  scale.unit = glm::dvec3(2.0);
+  const reference::TemporalMetrics t =
+      reference::compareChanges(testA, testB, refA, refB, {}, scale, varA, varB);
+  EXPECT_NEAR(t.error, 0.25, 1e-12);
+  EXPECT_NEAR(t.held, 0.25, 1e-12);
+  EXPECT_NEAR(t.noise, 0.1, 1e-7);
+  EXPECT_TRUE(std::isnan(reference::compareChanges(testA, testB, refA, refB, {}, scale).noise));
+  Image offsetA = refA, offsetB = refB;
+  for (auto* image : {&offsetA, &offsetB})
+    for (glm::vec3& p : image->pixels) p += 3.0f;
+  EXPECT_EQ(reference::compareChanges(offsetA, offsetB, refA, refB, {}, scale).error, 0.0);
+  // The mask keeps the second pixel alone: the test held it while the reference rose, 0.5 / 2.
+  EXPECT_NEAR(reference::compareChanges(testA, testB, refA, refB, {0, 1}, scale).error, 0.25,
+              1e-12);
 }
 
 }  // namespace

@@ -52,7 +52,8 @@ std::map<std::string, double> sequenceSeconds(const Technique& technique, StageB
 }
 
 // The median over `repeats` runs of each row.
-std::map<std::string, double> medianSequence(int repeats, const std::function<std::map<std::string, double>()>& run) {
+std::map<std::string, double> medianSequence(
+    int repeats, const std::function<std::map<std::string, double>()>& run) {
   std::map<std::string, std::vector<double>> runs;
   for (int r = 0; r < repeats; ++r)
     for (const auto& [stage, seconds] : run()) runs[stage].push_back(seconds);
@@ -103,9 +104,8 @@ int runBenchFrames(const BenchFramesOptions& o) {
           backends.emplace_back("cpu " + std::to_string(t) + " thr", [&, t](bool scratch) {
             tbb::global_control limit(tbb::global_control::max_allowed_parallelism, size_t(t));
             tbb::task_arena arena(t);
-            return arena.execute([&] {
-              return sequenceSeconds(technique, cpu, scratch, scene, settings, range);
-            });
+            return arena.execute(
+                [&] { return sequenceSeconds(technique, cpu, scratch, scene, settings, range); });
           });
         std::unique_ptr<gpu::GpuBackend> gpuBackend;
         if (context) {

@@ -87,6 +87,10 @@ void addCompareOptions(CLI::App& cmd, CompareOptions& o) {
                "also measure each light term (voxgi render --terms wrote TEST.<term>.exr and "
                "REFERENCE.<term>.exr), with an error map per term");
   addUnitsOptions(cmd, o.units, o.skipEmitters);
+  cmd.add_option("--frames", o.frames,
+                 "compare sequences: TEST and REFERENCE hold a frame field (%04d); per frame the "
+                 "metrics, and from the second on the flicker: how the test's change from the "
+                 "frame before differs from the reference's (docs/motion.md)");
 }
 
 namespace {
@@ -203,6 +207,7 @@ Image readReference(const std::string& path) {
 }
 
 int runCompare(const CompareOptions& o) {
+  if (!o.frames.empty()) return runCompareFrames(o);
   const std::string errorPng = errorMapPath(o.test, o.errorPng);
   checkOutputPath(errorPng);
   if (o.terms)

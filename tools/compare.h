@@ -21,6 +21,7 @@ struct CompareOptions {
   bool terms = false;         // also each light term, from the TEST.<term>.exr beside each image
   bool skipEmitters = false;  // leave out the pixels where the reference sees emission
   reference::MetricUnits units = reference::MetricUnits::reference_mean;
+  std::string frames;  // --frames A:B[:STEP]: TEST and REFERENCE hold a frame field
 };
 
 // --units mean|absolute (reference::kMetricUnitsNames) and --skip-emitters, for compare and study.
@@ -31,6 +32,9 @@ nlohmann::json metricsJson(const reference::ImageMetrics& m);
 
 void addCompareOptions(CLI::App& cmd, CompareOptions& options);
 int runCompare(const CompareOptions& options);
+// --frames: each frame's metrics beside black's, and the flicker of every frame after the first
+// against the reference's change (tools/compare_frames.cpp).
+int runCompareFrames(const CompareOptions& options);
 
 // The pixels a mask image keeps (non-zero in any channel), checked against the reference's size
 // and to keep at least one; empty when `path` is empty.
