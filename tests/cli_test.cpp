@@ -524,6 +524,20 @@ TEST(Cli, RenderFramesReusesWhatDidNotChange) {
       << p.output;
 }
 
+// diff --frames: every stage of each frame of the Blender-exported moving block passes on both
+// backends, and the JSON holds one report per frame.
+TEST(Cli, DiffFramesComparesEveryFrame) {
+  const std::string json = testTempDir() + "diff_frames.json";
+  const CommandResult r = voxgi("diff " + sourcePath("scenes/cornell_box_moving_block.json") +
+                                " --resolution 16 --image 32 --frames 0:48:24 --json " + json);
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* frame : {"frame 0:\n", "frame 24:\n", "frame 48:\n"})
+    EXPECT_NE(r.output.find(frame), std::string::npos) << r.output;
+  const nlohmann::json j = nlohmann::json::parse(std::ifstream(json));
+  ASSERT_EQ(j.size(), 3u);
+  EXPECT_EQ(j[2]["frame"], 48);
+}
+
 // compare --frames on hand-made sequences: the reference brightens from 1 to 2 to 4, the test from
 // 1 to 3 and stays. In units of each reference frame's mean (2, then 4): flicker |2 - 1| / 2 = 0.5
 // then |0 - 2| / 4 = 0.5, held 1 / 2 then 2 / 4; relMSE per frame (t - r)^2 / (r^2 + 0.01 u^2).

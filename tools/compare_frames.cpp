@@ -73,8 +73,7 @@ int runCompareFrames(const CompareOptions& o) {
     if (i > 0) {
       const reference::TemporalMetrics t = reference::compareChanges(
           previousTest, test, previousReference, reference, {}, scale, previousVariance, variance);
-      std::cout << std::setw(12) << t.error << std::setw(10) << t.held << std::setw(10)
-                << t.noise;
+      std::cout << std::setw(12) << t.error << std::setw(10) << t.held << std::setw(10) << t.noise;
       row["flicker"] = t.error;
       row["held"] = t.held;
       if (!std::isnan(t.noise)) row["noise"] = t.noise;
@@ -88,8 +87,8 @@ int runCompareFrames(const CompareOptions& o) {
     previousVariance = std::move(variance);
   }
   const double n = double(frames.size()), changes = double(std::max<size_t>(frames.size(), 2) - 1);
-  std::cout << "  mean   " << std::setw(10) << sumRel / n << std::setw(22) << ""
-            << std::setw(12) << (frames.size() > 1 ? sumFlicker / changes : 0.0) << std::setw(10)
+  std::cout << "  mean   " << std::setw(10) << sumRel / n << std::setw(22) << "" << std::setw(12)
+            << (frames.size() > 1 ? sumFlicker / changes : 0.0) << std::setw(10)
             << (frames.size() > 1 ? sumHeld / changes : 0.0) << "\n";
   if (!o.json.empty())
     writeFileAtomically(o.json, nlohmann::json{{"test", o.test},
