@@ -25,6 +25,15 @@ struct MovedTriangles {
 // together fewer than this frame's (else rebuilding costs no more). nullopt otherwise.
 std::optional<MovedTriangles> movedTriangles(const StageContext& ctx, bool emissive);
 
+// The box, in voxel coordinates, outside which voxelize's buffers are the frame before's
+// (ctx.previous) whether it rebuilt or updated them: the moved meshes' triangles of both frames,
+// grown by a voxel (a voxel's buffers depend only on the triangles that overlap it). nullopt when
+// no mesh moved or the frames cannot be compared mesh by mesh (another grid, other meshes).
+struct VoxelBox {
+  glm::vec3 low, high;
+};
+std::optional<VoxelBox> changedVoxelBox(const StageContext& ctx);
+
 // The triangles of `ranges`, in order.
 std::vector<shared::VoxelTriangle> trianglesIn(
     const VoxelTriangles& triangles, const std::vector<std::pair<size_t, size_t>>& ranges);

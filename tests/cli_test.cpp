@@ -538,6 +538,31 @@ TEST(Cli, DiffFramesComparesEveryFrame) {
   EXPECT_EQ(j[2]["frame"], 48);
 }
 
+// dump --frames: one numbered file per frame and stage, the frames' checksums (the block moved
+// between them), frame 0's those of the scene dumped without --frames.
+TEST(Cli, DumpFramesWritesANumberedVolumePerFrame) {
+  const std::string dir = testTempDir() + "dump_frames";
+  const std::string scene = sourcePath("scenes/cornell_box_moving_block.json");
+  const CommandResult r = voxgi("dump " + scene + " --stage voxelize --resolution 16 --frames " +
+                                "0:48:48 --checksums --out " + dir);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/voxelize_0000.vdb")) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/voxelize_0048.vdb")) << r.output;
+  const size_t second = r.output.find("frame 48\n");
+  ASSERT_NE(second, std::string::npos) << r.output;
+  const auto checksumOf = [](const std::string& text, size_t from) {
+    const size_t at = text.find("checksum voxelize.opacity ", from);
+    return at == std::string::npos ? std::string() : text.substr(at, text.find('\n', at) - at);
+  };
+  const std::string first = checksumOf(r.output, 0), last = checksumOf(r.output, second);
+  ASSERT_FALSE(first.empty()) << r.output;
+  EXPECT_NE(first, last) << "the block moved";
+  const CommandResult still =
+      voxgi("dump " + scene + " --stage voxelize --resolution 16 --checksums");
+  ASSERT_EQ(still.code, 0) << still.output;
+  EXPECT_EQ(checksumOf(still.output, 0), first);
+}
+
 // compare --frames on hand-made sequences: the reference brightens from 1 to 2 to 4, the test from
 // 1 to 3 and stays. In units of each reference frame's mean (2, then 4): flicker |2 - 1| / 2 = 0.5
 // then |0 - 2| / 4 = 0.5, held 1 / 2 then 2 / 4; relMSE per frame (t - r)^2 / (r^2 + 0.01 u^2).

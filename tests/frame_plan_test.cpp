@@ -30,6 +30,11 @@ INSTANTIATE_TEST_SUITE_P(Techniques, FramePlan, testing::ValuesIn(allTechniqueCa
                            return p.param.label;
                          });
 
+TEST(FramePlan, LightVoxelsRelightsOnlyWhatTheMovedMeshCanReach) {
+  cpu::CpuBackend cpu;
+  expectPartialRelightEqualsScratch(cpu);
+}
+
 // What moved, as the plan says it.
 TEST(FramePlan, SceneChangeSaysWhatMoved) {
   const Scene a = loadScene(sourcePath("scenes/bunny.json"));

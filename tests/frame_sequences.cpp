@@ -1,6 +1,7 @@
 #include "tests/frame_sequences.h"
 
 #include "common/frame_plan.h"
+#include "common/voxelize_update.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {
@@ -10,6 +11,26 @@ bool runs(const std::vector<FrameStep>& steps, StageId id) {
   for (const FrameStep& s : steps)
     if (s.stage->id == id) return s.runs;
   return false;
+}
+
+// A floor at y = 0.27 (voxel layer 4 of 16) under a point light, and a blocker square at y = 0.6 in
+// a mesh of its own, moved by `shift` along x.
+Scene floorAndBlocker(double shift) {
+  Scene scene = makeScene(quad(1, 0.27, {0.0, 0.0}, {1.0, 1.0}), unitGrid(16));
+  Scene blocker = makeScene(quad(1, 0.6, {0.3 + shift, 0.35}, {0.55 + shift, 0.6}), unitGrid(16));
+  scene.meshes.push_back(blocker.meshes.at(0));
+  // Both quads face the light (+y).
+  for (Mesh& m : scene.meshes)
+    for (auto& t : m.triangles) {
+      const glm::dvec3 e1 = m.positions[t.y] - m.positions[t.x];
+      const glm::dvec3 e2 = m.positions[t.z] - m.positions[t.x];
+      if (glm::cross(e1, e2).y < 0.0) std::swap(t.y, t.z);
+    }
+  Light light;
+  light.position = {0.5, 0.95, 0.5};
+  light.intensity = glm::vec3(2.0f);
+  scene.lights = {light};
+  return withCamera(scene, {0.5, 0.8, 1.6}, {0.5, 0.3, 0.5}, {0, 1, 0}, 50.0, 32);
 }
 
 }  // namespace
@@ -87,6 +108,62 @@ void expectIncrementalFramesEqualScratch(const TechniqueCase& c, StageBackend& b
         break;
     }
   }
+}
+
+void expectPartialRelightEqualsScratch(StageBackend& backend) {
+  const Technique& technique = findTechnique("vct");
+  Settings settings;
+  settings.vct.voxelShadow = VoxelShadow::hard;
+  const Scene before = floorAndBlocker(0.0), now = floorAndBlocker(2.0 / 16.0);
+  FrameRunner runner(technique, backend);
+  runner.run(before, settings);
+  runner.run(now, settings);
+  const VoxelTriangles trianglesBefore = prepareVoxelTriangles(before, before.grid);
+  const VoxelTriangles trianglesNow = prepareVoxelTriangles(now, now.grid);
+  BufferSet scratchBefore, scratch;
+  runPipeline(backend, StageContext{technique, before, settings, trianglesBefore}, scratchBefore);
+  StageContext ctx{technique, now, settings, trianglesNow};
+  runPipeline(backend, ctx, scratch);
+  for (const auto& [id, buffer] : scratch)
+    EXPECT_TRUE(sameWords(runner.buffers(), id, scratch, id)) << bufferSpec(id).qualifiedName();
+
+  // The stage again, from a poisoned frame before.
+  const BufferId radiance = BufferId::vct_light_voxels_radiance;
+  PreviousFrame previous{&before, &trianglesBefore, {}};
+  Buffer poison(radiance, glm::ivec3(16));
+  for (uint32_t& w : poison.words) w = std::bit_cast<uint32_t>(-1.0f);
+  previous.stash.put(std::move(poison));
+  ctx.previous = &previous;
+  BufferSet buffers;
+  for (const auto& [id, buffer] : scratch)
+    if (id != radiance) buffers.put(Buffer(buffer));
+  backend.run(StageId::vct_light_voxels, ctx, buffers);
+  const std::optional<VoxelBox> box = changedVoxelBox(ctx);
+  ASSERT_TRUE(box.has_value());
+  size_t kept = 0, shadowMoved = 0;
+  for (int z = 0; z < 16; ++z)
+    for (int y = 0; y < 16; ++y)
+      for (int x = 0; x < 16; ++x) {
+        const glm::ivec3 v(x, y, z);
+        const glm::vec4 got = voxelValue(buffers.at(radiance), v);
+        const glm::vec4 then = voxelValue(scratchBefore.at(radiance), v);
+        const glm::vec4 want = voxelValue(scratch.at(radiance), v);
+        if (got == glm::vec4(-1.0f)) {
+          kept += y == 4 ? 1 : 0;
+          EXPECT_EQ(then, want) << "voxel " << x << " " << y << " " << z << " kept but changed";
+        } else {
+          EXPECT_EQ(got, want) << "voxel " << x << " " << y << " " << z;
+        }
+        const glm::vec3 centre = glm::vec3(v) + 0.5f;
+        const bool inBox = glm::all(glm::greaterThanEqual(centre, box->low)) &&
+                           glm::all(glm::lessThanEqual(centre, box->high));
+        if (y == 4 && then != want) {
+          EXPECT_FALSE(inBox) << "the floor is outside the changed box";
+          ++shadowMoved;
+        }
+      }
+  EXPECT_GT(kept, 16u) << "the partial update relit every floor voxel";
+  EXPECT_GT(shadowMoved, 4u) << "the blocker's shadow did not move on the floor";
 }
 
 }  // namespace voxgi::test

@@ -24,4 +24,12 @@ std::vector<Scene> motionFrames(const Scene& scene);
 // moved, nothing when nothing moved, no voxelization when a light moved.
 void expectIncrementalFramesEqualScratch(const TechniqueCase& c, StageBackend& backend);
 
+// vct's light_voxels relighting in part: a lit floor and, in a mesh of its own, a blocker that
+// moves by two voxels, so that its shadow moves on floor voxels outside the changed box. Expects
+// the frame reached incrementally to equal the frame from scratch, and the stage run on a frame
+// before whose radiance is poisoned (-1) to keep the poison only in voxels whose radiance is the
+// same in both frames from scratch, to keep it in some floor voxels, and to relight every floor
+// voxel the shadow moved on.
+void expectPartialRelightEqualsScratch(StageBackend& backend);
+
 }  // namespace voxgi::test

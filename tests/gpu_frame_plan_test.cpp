@@ -22,5 +22,10 @@ INSTANTIATE_TEST_SUITE_P(Techniques, GpuFramePlan, testing::ValuesIn(allTechniqu
                            return p.param.label;
                          });
 
+TEST(GpuFramePlan, LightVoxelsRelightsOnlyWhatTheMovedMeshCanReach) {
+  gpu::GpuBackend gpu(glContext(gpu::GlPlatform::egl));
+  expectPartialRelightEqualsScratch(gpu);
+}
+
 }  // namespace
 }  // namespace voxgi::test

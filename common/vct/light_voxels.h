@@ -22,4 +22,10 @@ struct LightVoxelsSetup {
 // `emissionVolume`: voxelize produced the emission volume.
 LightVoxelsSetup prepareLightVoxels(const StageContext& ctx, bool emissionVolume);
 
+// In a sequence (ctx.previous holding the frame before's radiance), when meshes moved and the
+// lights and parameters are the frame before's: the box voxelize's buffers changed in, for
+// lightVoxelMayChange; partial = 0 (light every voxel) otherwise. `setup` is this frame's.
+shared::LightVoxelsUpdate lightVoxelsUpdate(const StageContext& ctx, const LightVoxelsSetup& setup,
+                                            bool emissionVolume);
+
 }  // namespace voxgi

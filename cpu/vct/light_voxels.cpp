@@ -39,11 +39,18 @@ void vct::light_voxels(const StageContext& ctx, BufferSet& buffers) {
                                    emission,
                                    setup.lights,
                                    ctx.scene.grid};
-  Buffer radiance(BufferId::vct_light_voxels_radiance, glm::ivec3(n));
+  const shared::LightVoxelsUpdate update = lightVoxelsUpdate(ctx, setup, emission != nullptr);
+  // A partial update starts from the frame before's radiance and relights only the voxels whose
+  // inputs can have changed.
+  Buffer radiance = update.partial == 1
+                        ? ctx.previous->stash.take(BufferId::vct_light_voxels_radiance)
+                        : Buffer(BufferId::vct_light_voxels_radiance, glm::ivec3(n));
   parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
     for (int row = rows.begin(); row != rows.end(); ++row)
       for (int x = 0; x < n; ++x) {
         const glm::ivec3 v(x, row % n, row / n);
+        if (update.partial == 1 && !shared::lightVoxelMayChange(volumes, v, setup.params, update))
+          continue;
         const glm::vec4 r = shared::lightVoxel(volumes, v, setup.params);
         const size_t e = volumes.index(v);
         for (int c = 0; c < 4; ++c) radiance.set(e, c, r[c]);

@@ -1,5 +1,6 @@
 // GPU light_voxels stage: shaders/vct/light_voxels.comp runs the shared kernel per voxel on the
-// voxelize buffers uploaded as textures; the radiance volume is read back.
+// voxelize buffers uploaded as textures (and, in a partial update, the frame before's radiance);
+// the radiance volume is read back.
 #include "common/vct/light_voxels.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
@@ -21,6 +22,13 @@ void vct::light_voxels(GlContext& context, const StageContext& ctx, BufferSet& b
   GlTexture normal(gl, uploadVolume(gl, buffers.at(BufferId::common_voxelize_normal)));
   GlTexture emissionTexture(gl, emissive ? uploadVolume(gl, *emission) : 0);
   GlTexture radiance(gl, createVolume(gl, 4, glm::ivec3(n)));
+  // A partial update copies the frame before's radiance where lightVoxelMayChange says no.
+  const shared::LightVoxelsUpdate update = lightVoxelsUpdate(ctx, setup, emission != nullptr);
+  GlBuffer updateBlock(gl, createBuffer(gl, sizeof update, &update));
+  GlTexture previous(
+      gl, update.partial == 1
+              ? uploadVolume(gl, ctx.previous->stash.at(BufferId::vct_light_voxels_radiance))
+              : 0);
 
   Program program(gl, {&shaders::vct_light_voxels_comp});
   gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, lightBlock.get());
@@ -28,6 +36,8 @@ void vct::light_voxels(GlContext& context, const StageContext& ctx, BufferSet& b
   gl.BindTextureUnit(1, albedo.get());
   gl.BindTextureUnit(2, normal.get());
   gl.BindTextureUnit(3, emissionTexture.get());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, updateBlock.get());
+  gl.BindTextureUnit(4, previous.get());
   gl.BindImageTexture(0, radiance.get(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   program.use();
   const auto groups = static_cast<GLuint>((n + 3) / 4);

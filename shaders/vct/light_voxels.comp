@@ -7,6 +7,7 @@ layout(binding = 0) uniform sampler3D uOpacity;
 layout(binding = 1) uniform sampler3D uAlbedo;
 layout(binding = 2) uniform sampler3D uNormal;
 layout(binding = 3) uniform sampler3D uEmission;
+layout(binding = 4) uniform sampler3D uPrevious;  // the frame before's radiance, when partial
 layout(binding = 0, rgba32f) uniform writeonly image3D uRadiance;
 
 float opacityAt(ivec3 v) { return texelFetch(uOpacity, v, 0).r; }
@@ -22,10 +23,17 @@ layout(std430, binding = 0) readonly buffer Lights {
   LightData lights[];
 };
 
+layout(std430, binding = 1) readonly buffer Update {
+  LightVoxelsUpdate update;
+};
+
 LightData lightAt(int i) { return lights[i]; }
 
 void main() {
   ivec3 v = ivec3(gl_GlobalInvocationID);
   if (any(greaterThanEqual(v, ivec3(params.resolution)))) return;
-  imageStore(uRadiance, v, lightVoxel(v, params));
+  if (update.partial == 1 && !lightVoxelMayChange(v, params, update))
+    imageStore(uRadiance, v, texelFetch(uPrevious, v, 0));
+  else
+    imageStore(uRadiance, v, lightVoxel(v, params));
 }

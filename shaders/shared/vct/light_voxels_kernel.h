@@ -59,6 +59,45 @@ VOLUME_FN float voxelVisibility(VOLUMES_IN vec3 p, vec3 n, vec3 toLight, float d
   return 1.0f - occlusion;
 }
 
+// One light's share of a voxel's irradiance before visibility, and the shadow ray that decides
+// its visibility.
+struct LightTerm {
+  vec3 colour;      // the share is colour * (scale * visibility), scale lightTerm's result
+  vec3 rayNormal;   // the ray leaves the voxel centre this far along it (voxel_shadow.offset)...
+  vec3 toLight;     // ...and marches toward the light
+  float rayLength;  // voxels from the centre to where the march stops
+  bool shadowed;    // whether the light's visibility is marched at all
+};
+
+// Light l at voxel centre p (unit mean normal n, or 0 where the voxel's normals cancel): its term
+// and scale, <= 0 where it adds nothing.
+VOXGI_FN float lightTerm(LightData l, vec3 p, vec3 n, LightVoxelsParams params,
+                         OUT(LightTerm) term) {
+  float distance;
+  if (l.kind == kLightTriangle) {
+    // pi L F, F the form factor (cosine included). A voxel whose normals cancel faces the
+    // triangle's centroid. The visibility ray stops 1.5 voxels short of the centroid, outside
+    // the triangle's own voxels.
+    precise vec3 middle = (vec3(l.position) + vec3(l.direction) + vec3(l.falloff)) * (1.0f / 3.0f);
+    vec3 facing = n != vec3(0.0f) ? n : normalize3(middle - p);
+    float f = triangleFormFactor(l, p, facing, term.toLight, distance);
+    term.colour = vec3(l.intensity);
+    term.rayNormal = facing;
+    term.rayLength = max(distance - 1.5f, 0.0f);
+    term.shadowed = true;
+    return f > 0.0f ? kPi * f : 0.0f;
+  }
+  term.colour = lightIrradiance(l, p, params.voxelSize, term.toLight, distance);
+  term.rayNormal = n;
+  term.rayLength = distance;
+  term.shadowed = l.castsShadows == 1u;
+  if (term.colour == vec3(0.0f)) return 0.0f;
+  // A voxel whose normals cancel has no preferred side: it takes the light unattenuated.
+  if (n == vec3(0.0f)) return 1.0f;
+  return params.normalWeighted == 1 ? normalWeightedAttenuation(n, term.toLight)
+                                    : max(dot3(n, term.toLight), 0.0f);
+}
+
 // Radiance leaving voxel v, premultiplied by its opacity: rgb = opacity * (albedo/pi * sum of
 // irradiance * attenuation * visibility + emission), a = opacity.
 VOLUME_FN vec4 lightVoxel(VOLUMES_IN ivec3 v, LightVoxelsParams params) {
@@ -69,40 +108,70 @@ VOLUME_FN vec4 lightVoxel(VOLUMES_IN ivec3 v, LightVoxelsParams params) {
   precise vec3 p = vec3(v) + vec3(0.5f);
   precise vec3 irradiance = vec3(0.0f);
   for (int i = 0; i < params.lightCount; ++i) {
-    LightData l = FETCH(lightAt)(i);
-    vec3 toLight;
-    float distance;
-    if (l.kind == kLightTriangle) {
-      // pi L F, F the form factor (cosine included). A voxel whose normals cancel faces the
-      // triangle's centroid. The visibility ray stops 1.5 voxels short of the centroid, outside
-      // the triangle's own voxels.
-      precise vec3 middle =
-          (vec3(l.position) + vec3(l.direction) + vec3(l.falloff)) * (1.0f / 3.0f);
-      vec3 facing = n != vec3(0.0f) ? n : normalize3(middle - p);
-      float f = triangleFormFactor(l, p, facing, toLight, distance);
-      if (f <= 0.0f) continue;
-      float seen = voxelVisibility(VOLUMES p, facing, toLight, max(distance - 1.5f, 0.0f), params);
-      precise vec3 add = vec3(l.intensity) * (kPi * f * seen);
-      irradiance = irradiance + add;
-      continue;
-    }
-    vec3 e = lightIrradiance(l, p, params.voxelSize, toLight, distance);
-    if (e == vec3(0.0f)) continue;
-    // A voxel whose normals cancel has no preferred side: it takes the light unattenuated.
-    float att = 1.0f;
-    if (n != vec3(0.0f))
-      att = params.normalWeighted == 1 ? normalWeightedAttenuation(n, toLight)
-                                       : max(dot3(n, toLight), 0.0f);
-    if (att <= 0.0f) continue;
+    LightTerm t;
+    float scale = lightTerm(FETCH(lightAt)(i), p, n, params, t);
+    if (scale <= 0.0f) continue;
     float vis =
-        l.castsShadows == 1u ? voxelVisibility(VOLUMES p, n, toLight, distance, params) : 1.0f;
-    precise vec3 add = e * (att * vis);
+        t.shadowed ? voxelVisibility(VOLUMES p, t.rayNormal, t.toLight, t.rayLength, params) : 1.0f;
+    precise vec3 add = t.colour * (scale * vis);
     irradiance = irradiance + add;
   }
   precise vec3 radiance = albedo * irradiance * kInvPi;
   if (params.emissive == 1) radiance = radiance + FETCH(emissionAt)(v);
   precise vec3 premultiplied = radiance * a;
   return vec4(premultiplied, a);
+}
+
+// A sequence's frame whose geometry moved and whose lights did not (docs/motion.md): voxelize's
+// buffers differ from the frame before's only inside the box [changedLow, changedHigh] (voxel
+// coordinates, a voxel's margin included), so a voxel outside it whose shadow rays all miss it
+// lights as it did then. std430, the vct light_voxels shader's second block.
+struct LightVoxelsUpdate {
+  vec3 changedLow;
+  int partial;  // 1: voxels that lightVoxelMayChange says not keep the frame before's radiance
+  vec3 changedHigh;
+  int padding;
+};
+
+// Whether the segment from o along unit d for `length` meets the box [low, high] (slabs).
+VOXGI_FN bool segmentMeetsBox(vec3 o, vec3 d, float length, vec3 low, vec3 high) {
+  float enter = 0.0f;
+  float leave = length;
+  for (int axis = 0; axis < 3; ++axis) {
+    if (d[axis] == 0.0f) {
+      if (o[axis] < low[axis] || o[axis] > high[axis]) return false;
+      continue;
+    }
+    float t0 = (low[axis] - o[axis]) / d[axis];
+    float t1 = (high[axis] - o[axis]) / d[axis];
+    enter = max(enter, min(t0, t1));
+    leave = min(leave, max(t0, t1));
+  }
+  return enter <= leave;
+}
+
+// Whether voxel v's radiance can differ from the frame before's under `update`: v lies in the
+// changed box, or a shadow ray it marches (voxelVisibility's: from the offset origin, at most
+// its step count) meets the box. A voxel that lightVoxel leaves dark stays dark.
+VOLUME_FN bool lightVoxelMayChange(VOLUMES_IN ivec3 v, LightVoxelsParams params,
+                                   LightVoxelsUpdate update) {
+  precise vec3 p = vec3(v) + vec3(0.5f);
+  if (all(greaterThanEqual(p, update.changedLow)) && all(lessThanEqual(p, update.changedHigh)))
+    return true;
+  if (FETCH(opacityAt)(v) <= 0.0f || params.voxelShadow == kVoxelShadowNone) return false;
+  vec3 n = normalize3(FETCH(normalAt)(v));
+  float maxSteps = ceil(1.7320508f * float(params.resolution)) + 2.0f;
+  for (int i = 0; i < params.lightCount; ++i) {
+    LightTerm t;
+    float scale = lightTerm(FETCH(lightAt)(i), p, n, params, t);
+    if (scale <= 0.0f || !t.shadowed) continue;
+    float length = min(t.rayLength - params.shadowOffset, maxSteps);
+    if (length < 0.0f) continue;
+    if (segmentMeetsBox(p + t.rayNormal * params.shadowOffset, t.toLight, length, update.changedLow,
+                        update.changedHigh))
+      return true;
+  }
+  return false;
 }
 
 VOXGI_NAMESPACE_END
