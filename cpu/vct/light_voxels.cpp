@@ -41,10 +41,12 @@ void vct::light_voxels(const StageContext& ctx, BufferSet& buffers) {
                                    ctx.scene.grid};
   const shared::LightVoxelsUpdate update = lightVoxelsUpdate(ctx, setup, emission != nullptr);
   // A partial update starts from the frame before's radiance and relights only the voxels whose
-  // inputs can have changed.
-  Buffer radiance = update.partial == 1
+  // inputs can have changed; a whole one rewrites every voxel of it (its pages stay mapped).
+  Buffer radiance = ctx.previous != nullptr
                         ? ctx.previous->stash.take(BufferId::vct_light_voxels_radiance)
-                        : Buffer(BufferId::vct_light_voxels_radiance, glm::ivec3(n));
+                        : Buffer{};
+  if (radiance.spec == nullptr)
+    radiance = Buffer(BufferId::vct_light_voxels_radiance, glm::ivec3(n));
   parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
     for (int row = rows.begin(); row != rows.end(); ++row)
       for (int x = 0; x < n; ++x) {

@@ -8,8 +8,9 @@ namespace voxgi::cpu {
 void vct::mip(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, StageId::vct_mip);
   const BufferId id = pyramidBuffer(StageId::vct_mip, ctx.settings.vct.mip);
-  // Rebuilt in place when the set already holds it (a pyramid rebuilt every frame keeps its pages).
-  Buffer pyramid = buffers.take(id);
+  // In a sequence the frame before's pyramid is rebuilt in place, every word rewritten: its pages
+  // stay mapped instead of being faulted in again each frame.
+  Buffer pyramid = ctx.previous != nullptr ? ctx.previous->stash.take(id) : Buffer{};
   buildPyramid(bufferSpec(id), buffers.at(BufferId::vct_light_voxels_radiance),
                ctx.scene.grid.resolution, pyramid);
   buffers.put(std::move(pyramid));
