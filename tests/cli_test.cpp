@@ -563,6 +563,52 @@ TEST(Cli, DumpFramesWritesANumberedVolumePerFrame) {
   EXPECT_EQ(checksumOf(still.output, 0), first);
 }
 
+// study --frames against references that are vct's own frames (render --frames): every frame's
+// error and flicker 0, while a black frame's error and a held sequence's flicker (the block moved)
+// are not; a row per technique and frame; the path tracer and sweeps refused in one line.
+TEST(Cli, StudyFramesMeasuresEachFrameAndItsChange) {
+  const std::string dir = testTempDir() + "study_frames/";
+  std::filesystem::create_directories(dir);
+  const std::string scene = sourcePath("scenes/cornell_box_moving_block.json");
+  const std::string options = " --image 32 --resolution 16 --frames 0:48:48";
+  const CommandResult render = voxgi("render " + scene + options + " --out " + dir + "ref_%d.exr");
+  ASSERT_EQ(render.code, 0) << render.output;
+  const std::string study = "study " + scene + options + " --reference " + dir +
+                            "ref_%d.exr --repeat 1 --csv " + dir + "study.csv";
+  const CommandResult r = voxgi(study + " --technique vct,lpv --plot " + dir + "study.png");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir + "study.png"));
+  std::ifstream csv(dir + "study.csv");
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_EQ(line,
+            "technique,frame,seconds,rebuild_seconds,rmse,rel_mse,mare,ssim,ssim_loss,error,"
+            "black_error,flicker,held,noise");
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cells;
+    std::istringstream in(line);
+    for (std::string cell; std::getline(in, cell, ',');) cells.push_back(cell);
+    if (line.back() == ',') cells.emplace_back();
+    rows.push_back(cells);
+  }
+  ASSERT_EQ(rows.size(), 4u);
+  for (size_t i = 0; i < 2; ++i) {
+    const std::vector<std::string>& vct = rows[i];
+    ASSERT_EQ(vct.size(), 14u) << line;
+    EXPECT_EQ(vct[0], "vct");
+    EXPECT_EQ(vct[1], std::to_string(48 * i));
+    EXPECT_EQ(std::stod(vct[9]), 0.0) << "vct's frame against itself";
+    EXPECT_GT(std::stod(vct[10]), 0.1) << "a black frame";
+    if (i == 0) continue;
+    EXPECT_EQ(std::stod(vct[11]), 0.0) << "vct's change against itself";
+    EXPECT_GT(std::stod(vct[12]), 0.0) << "the block moved";
+    EXPECT_GT(std::stod(rows[2 + i][9]), 0.0) << "lpv against vct";
+  }
+  EXPECT_EQ(voxgi(study + " --technique path").code, 2);
+  EXPECT_EQ(voxgi(study + " --sweep cones.count=6,16").code, 2);
+}
+
 // compare --frames on hand-made sequences: the reference brightens from 1 to 2 to 4, the test from
 // 1 to 3 and stays. In units of each reference frame's mean (2, then 4): flicker |2 - 1| / 2 = 0.5
 // then |0 - 2| / 4 = 0.5, held 1 / 2 then 2 / 4; relMSE per frame (t - r)^2 / (r^2 + 0.01 u^2).

@@ -1,9 +1,5 @@
 #include "tools/study.h"
 
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -35,8 +31,7 @@
 #include "gpu/backend.h"
 #include "validation/reference/path_trace.h"
 #include "tools/command.h"
-
-extern char** environ;
+#include "tools/plot_script.h"
 
 namespace voxgi::tools {
 
@@ -192,8 +187,7 @@ std::vector<Job> makeJobs(const StudyOptions& o, const std::vector<Sweep>& sweep
     for (size_t index = 0; index < count; ++index) {
       Job job;
       job.technique = technique;
-      job.scene = loadScene(o.scene);
-      if (o.image != 0) setImageWidth(job.scene, o.image, "--image");
+      job.scene = loadStudyScene(o);
       if (technique != "path")
         job.settings = resolveSettings(findTechnique(technique), job.scene.settings, job.scene.file,
                                        o.preset, o.sets);
@@ -236,41 +230,12 @@ std::vector<Job> makeJobs(const StudyOptions& o, const std::vector<Sweep>& sweep
   return jobs;
 }
 
-// Runs /usr/bin/python3 on the embedded plotting script; throws when it fails.
+// The plot of error against time (tools/plot_study.py).
 void plot(const std::string& csv, const std::string& png, const std::string& metric,
           const std::string& title, const std::string& noiseFloor) {
-  const std::filesystem::path script = std::filesystem::temp_directory_path() /
-                                       ("voxgi_plot_study_" + std::to_string(getpid()) + ".py");
-  std::ofstream(script) << kPlotStudyScript;
-  const std::map<std::string, std::string> labels{{"rmse", "RMSE"},
-                                                  {"rel_mse", "relative MSE"},
-                                                  {"mare", "mean absolute relative error"},
-                                                  {"ssim_loss", "1 - SSIM"}};
-  // The plot goes to a private temporary first, then to `png` like every other output.
-  const std::filesystem::path drawn = std::filesystem::temp_directory_path() /
-                                      ("voxgi_plot_study_" + std::to_string(getpid()) + ".png");
-  std::vector<std::string> args{
-      "/usr/bin/python3", script.string(), csv, drawn.string(), metric, labels.at(metric), title};
+  std::vector<std::string> args{metric, metricLabel(metric), title};
   if (!noiseFloor.empty()) args.push_back(noiseFloor);
-  std::vector<char*> argv;
-  for (std::string& a : args) argv.push_back(a.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  int status = -1;
-  const int spawned = posix_spawn(&pid, argv[0], nullptr, nullptr, argv.data(), environ);
-  if (spawned == 0) waitpid(pid, &status, 0);
-  std::filesystem::remove(script);
-  if (spawned != 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
-    std::filesystem::remove(drawn);
-    throw std::runtime_error(
-        "plotting with /usr/bin/python3 failed; it needs python3-matplotlib (scripts/setup "
-        "installs it). The CSV is written: " +
-        csv);
-  }
-  std::ifstream in(drawn, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  std::filesystem::remove(drawn);
-  writeFileAtomically(png, bytes);
+  runPlotScript(kPlotStudyScript, csv, png, args);
 }
 
 // The error columns of a CSV row: rmse, rel_mse, mare, ssim, ssim_loss.
@@ -315,6 +280,8 @@ void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
   cmd.add_option("--metric", o.metric, "error for the Pareto front and the plot")
       ->check(CLI::IsMember({"rmse", "rel_mse", "mare", "ssim_loss"}));
   cmd.add_option("--image", o.image, "image width in pixels (the height keeps the aspect)");
+  cmd.add_option("--resolution", o.resolution,
+                 "voxel grid resolution (power of two) before the sweeps; default the scene's");
   cmd.add_option("--repeat", o.repeats, "runs per combination; times are medians")
       ->check(CLI::Range(1, 100));
   cmd.add_flag("--terms", o.terms,
@@ -323,6 +290,11 @@ void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
   cmd.add_option("--gl", o.gl, "GL platform for backend=gpu")
       ->check(CLI::IsMember({"egl", "osmesa"}));
   addUnitsOptions(cmd, o.units, o.skipEmitters);
+  cmd.add_option("--frames", o.frames,
+                 "study frames A to B (A:B or A:B:STEP) of an animated scene on the CPU: per-frame "
+                 "error, flicker and cost (updated and rebuilt); --reference then holds a frame "
+                 "field, REF_%04d.exr (docs/motion.md)");
+  cmd.add_option("--fps", o.fps, "frames per second of --frames")->check(CLI::Range(1e-3, 1e6));
 }
 
 namespace {
@@ -386,16 +358,10 @@ struct Fronts {
 
 Fronts paretoFronts(const StudyOptions& o, const std::vector<Job>& jobs,
                     const std::vector<Measured>& measured) {
-  const auto errorOf = [&](const reference::ImageMetrics& m) {
-    return o.metric == "rmse"      ? m.rmse
-           : o.metric == "rel_mse" ? m.relMse
-           : o.metric == "mare"    ? m.mare
-                                   : 1.0 - m.ssim;
-  };
   std::vector<double> seconds, errors;
   for (const Measured& m : measured) {
     seconds.push_back(m.result.seconds);
-    errors.push_back(errorOf(m.metrics));
+    errors.push_back(metricError(m.metrics, o.metric));
   }
   Fronts fronts{reference::paretoFront(seconds, errors), std::vector<bool>(jobs.size(), false)};
   for (const std::string& technique : o.techniques) {
@@ -512,7 +478,32 @@ void plotStudy(const StudyOptions& o, const StudyReference& ref) {
 
 }  // namespace
 
+Scene loadStudyScene(const StudyOptions& o) {
+  Scene scene = loadScene(o.scene);
+  if (o.image != 0) setImageWidth(scene, o.image, "--image");
+  if (o.resolution != 0) {
+    scene.grid.resolution = readResolution("--resolution", "", o.resolution);
+    checkGrid(scene, "--resolution " + std::to_string(o.resolution));
+  }
+  return scene;
+}
+
+double metricError(const reference::ImageMetrics& m, const std::string& metric) {
+  return metric == "rmse"      ? m.rmse
+         : metric == "rel_mse" ? m.relMse
+         : metric == "mare"    ? m.mare
+                               : 1.0 - m.ssim;
+}
+
+std::string metricLabel(const std::string& metric) {
+  return metric == "rmse"      ? "RMSE"
+         : metric == "rel_mse" ? "relative MSE"
+         : metric == "mare"    ? "mean absolute relative error"
+                               : "1 - SSIM";
+}
+
 int runStudy(const StudyOptions& o) {
+  if (!o.frames.empty()) return runStudyFrames(o);
   checkOutputPath(o.csv);
   if (!o.plot.empty()) checkOutputPath(o.plot);
   std::vector<Sweep> sweeps;

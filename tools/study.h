@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/scene.h"
 #include "validation/reference/image_metrics.h"
 
 namespace voxgi::tools {
@@ -23,13 +24,26 @@ struct StudyOptions {
   std::string metric = "rel_mse";  // the error the Pareto front and the plot use
   std::string gl = "egl";          // for backend=gpu
   int image = 0;                   // image width (height keeps the camera's aspect); 0: the scene's
+  int resolution = 0;              // grid resolution before the sweeps; 0: the scene's
   int repeats = 3;
   bool terms = false;  // also each light term against REFERENCE.<term>.exr (common/light_terms.h)
   bool skipEmitters = false;  // leave out the pixels where the reference sees emission
   reference::MetricUnits units = reference::MetricUnits::reference_mean;
+  // --frames A:B[:STEP]: a study in time of an animated scene, --reference a pattern with a frame
+  // field (tools/study_frames.cpp).
+  std::string frames;
+  double fps = 24.0;
 };
 
 void addStudyOptions(CLI::App& cmd, StudyOptions& options);
 int runStudy(const StudyOptions& options);
+int runStudyFrames(const StudyOptions& options);
+
+// The scene file with --image and --resolution applied.
+Scene loadStudyScene(const StudyOptions& options);
+
+// The error --metric names (rmse, rel_mse, mare or ssim_loss) of `m`, and its axis label.
+double metricError(const reference::ImageMetrics& m, const std::string& metric);
+std::string metricLabel(const std::string& metric);
 
 }  // namespace voxgi::tools
