@@ -103,7 +103,7 @@ SceneChange sceneChange(const Scene& before, const Scene& after) {
 }
 
 std::vector<FrameStep> frameSteps(const StageContext& ctx, const EffectPlan* previous,
-                                  const SceneChange& change) {
+                                  const SceneChange& change, const VolumeUpdate* volumes) {
   const std::vector<const StageSpec*> planned = plannedStages(ctx);
   std::vector<FrameStep> steps;
   if (previous == nullptr || !previous->sameDecisions(ctx.plan)) {
@@ -111,9 +111,18 @@ std::vector<FrameStep> frameSteps(const StageContext& ctx, const EffectPlan* pre
       steps.push_back({s, true, previous == nullptr ? "the first frame" : "the plan changed"});
     return steps;
   }
-  const StageSpec* ran = nullptr;  // the first stage of the frame that runs
+  const StageSpec* ran = nullptr;    // the first stage of the frame that runs
+  bool volume = volumes != nullptr;  // before the first stage that reads the camera
   for (const StageSpec* s : planned) {
-    const unsigned reads = stageSceneInputs(s->id) & change.parts;
+    volume = volume && (stageSceneInputs(s->id) & kSceneCamera) == 0;
+    if (volume && !volumes->due) {
+      steps.push_back({s, false,
+                       "update.interval: the volumes update in " +
+                           count(size_t(volumes->framesLeft), "frame", "frames")});
+      continue;
+    }
+    const SceneChange& since = volume ? volumes->change : change;
+    const unsigned reads = stageSceneInputs(s->id) & since.parts;
     if (reads != 0) {
       std::vector<const char*> parts;
       if (reads & kSceneGeometry) parts.push_back("geometry");
@@ -129,7 +138,7 @@ std::vector<FrameStep> frameSteps(const StageContext& ctx, const EffectPlan* pre
     } else {
       steps.push_back(
           {s, false,
-           change.parts == 0 ? "nothing moved: reuse" : "nothing it reads changed: reuse"});
+           since.parts == 0 ? "nothing moved: reuse" : "nothing it reads changed: reuse"});
     }
   }
   return steps;
@@ -182,12 +191,29 @@ const std::vector<FrameStep>& FrameRunner::run(Scene scene, const Settings& sett
   if (scratch_) buffers_ = BufferSet{};
   const bool same = !first_ && !scratch_ && plan_->sameDecisions(ctx.plan);
   PreviousFrame previous{&previousScene_, prepare ? &previousTriangles_ : &triangles_, {}};
+  // update.interval > 1: the volumes come up to date on every N-th frame since they last did, and
+  // what they update from is the scene they last ran on.
+  const int interval = scratch_ ? 1 : settings_.updateInterval;
+  std::optional<VolumeUpdate> volumes;
+  if (interval > 1 && same) {
+    volumes = VolumeUpdate{framesSinceUpdate_ + 1 >= interval, sceneChange(*volumeScene_, scene_),
+                           interval - 1 - framesSinceUpdate_};  // frames until the next update
+    previous = PreviousFrame{&*volumeScene_, &volumeTriangles_, {}};
+  }
   if (same) ctx.previous = &previous;
-  steps_ = frameSteps(ctx, scratch_ || first_ ? nullptr : &*plan_, change_);
+  steps_ = frameSteps(ctx, scratch_ || first_ ? nullptr : &*plan_, change_,
+                      volumes ? &*volumes : nullptr);
   if (scratch_)
     for (FrameStep& s : steps_) s.why = "from scratch";
   runFrame(backend_, ctx, buffers_, steps_, observe);
   plan_ = ctx.plan;
+  if (interval > 1 && (!volumes || volumes->due)) {
+    volumeScene_ = scene_;
+    volumeTriangles_ = triangles_;
+    framesSinceUpdate_ = 0;
+  } else {
+    ++framesSinceUpdate_;
+  }
   return steps_;
 }
 

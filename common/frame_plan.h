@@ -41,10 +41,20 @@ struct FrameStep {
   std::string why;
 };
 
+// The volume stages of a frame under update.interval: those before the first planned stage that
+// reads the camera. `due`: the frame brings them up to date, from what changed since they last
+// were (`change`); otherwise they keep their buffers and update `framesLeft` frames later.
+struct VolumeUpdate {
+  bool due = true;
+  SceneChange change;
+  int framesLeft = 0;
+};
+
 // The steps of a frame: every planned stage runs in the first frame (`previous` null) and when
-// the plan's decisions changed (EffectPlan::sameDecisions); otherwise as the header says.
+// the plan's decisions changed (EffectPlan::sameDecisions); otherwise as the header says, the
+// volume stages following `volumes` where it is given.
 std::vector<FrameStep> frameSteps(const StageContext& ctx, const EffectPlan* previous,
-                                  const SceneChange& change);
+                                  const SceneChange& change, const VolumeUpdate* volumes = nullptr);
 
 // Runs the steps that run on `backend`, in order; a reused stage's buffers stay in `buffers` as
 // the previous frame left them. Throws std::logic_error when a stage that runs does not write
@@ -55,7 +65,8 @@ void runFrame(StageBackend& backend, const StageContext& ctx, BufferSet& buffers
 // The frames of a sequence on one backend: each frame's scene and settings in, the stages
 // frameSteps says run (all of them when `scratch`), the others keeping the buffers the frame
 // before left; a stage that reruns gets the frame before (StageContext::previous) when the plan
-// decided the same.
+// decided the same. Under update.interval=N > 1 the volume stages run on every N-th frame (and on
+// any whose plan decided otherwise) and their previous frame is the last one they ran on.
 class FrameRunner {
  public:
   FrameRunner(const Technique& technique, StageBackend& backend, bool scratch = false);
@@ -82,6 +93,11 @@ class FrameRunner {
   BufferSet buffers_;
   std::optional<EffectPlan> plan_;
   SceneChange change_;
+  // Under update.interval > 1: the scene and triangles the volume stages last ran on, and the
+  // frames run since.
+  std::optional<Scene> volumeScene_;
+  VoxelTriangles volumeTriangles_;
+  int framesSinceUpdate_ = 0;
   std::vector<FrameStep> steps_;
 };
 

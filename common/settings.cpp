@@ -38,11 +38,11 @@ std::pair<std::string, std::string> split(const std::string& assignment,
   return {assignment.substr(0, eq), assignment.substr(eq + 1)};
 }
 
-// Whether the technique reads a shared key: plan.mode always, a shared stage's keys when it runs
-// the stage (the octree does not voxelize).
+// Whether the technique reads a shared key: plan.mode and update.interval always, a shared stage's
+// keys when it runs the stage (the octree does not voxelize).
 bool readsSharedKey(const Technique& technique, const Param& p) {
   const std::string_view prefix = std::string_view(p.key).substr(0, p.key.find('.'));
-  if (prefix == "plan") return true;
+  if (prefix == "plan" || prefix == "update") return true;
   const auto& steps = technique.steps();
   return std::any_of(steps.begin(), steps.end(), [&](const StageSpec* s) {
     return s->owner == std::string_view("common") && s->name == prefix;
@@ -68,6 +68,9 @@ const std::vector<Param>& sharedParams() {
              "light), or over its emitting surfaces alone"),
       choice("plan.mode", &Settings::planMode, {"planned", "full"},
              "skip effects the scene does not use, or compute all (docs/effect-plan.md)"),
+      number("update.interval", &Settings::updateInterval, 1, 1000,
+             "in a sequence, bring the volume stages up to date every N frames rendered; between, "
+             "they keep their buffers while the image stages follow the scene (docs/motion.md)"),
   };
   return table;
 }

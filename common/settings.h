@@ -27,6 +27,10 @@ struct Settings {
   VoxelizeEmission voxelizeEmission = VoxelizeEmission::surfaces;
   // full: every optional effect is computed even where the plan shows it contributes nothing
   PlanMode planMode = PlanMode::planned;
+  // In a sequence the volume stages (those before the first that reads the camera) are brought up
+  // to date every `updateInterval` frames rendered and keep their buffers between
+  // (docs/motion.md, [Villegas 2017, §1.2]).
+  int updateInterval = 1;
   // Not a key: voxgi diff and dump set it, and planners then keep intermediate volumes a render
   // drops (lpv: every propagation step).
   bool inspect = false;

@@ -94,7 +94,7 @@ Param choice(std::string key, E S::*member, std::vector<std::string> names, std:
           }};
 }
 
-// The shared stages' keys (voxelize.mode, plan.mode).
+// The shared keys (voxelize.mode, plan.mode, update.interval).
 const std::vector<Param>& sharedParams();
 
 }  // namespace voxgi

@@ -80,9 +80,9 @@ std::string techniqueNames();
 // The settings keys' one scheme: a key is `<stage>.<name>` when one stage reads it
 // (propagate.steps, build.seed; voxelize.mode for a technique that runs voxelize), `<owner>.<name>`
 // when several of a technique's stages do (lpv.bands, svo.first_step), `plan.mode` for the
-// planner, and `<kernel>.<name>` for the kernels several techniques' stages share, in
-// Settings::vct: these groups (tests/settings_test.cpp checks every technique's keys against the
-// scheme).
+// planner, `update.interval` for the planner in time (common/frame_plan.h), and `<kernel>.<name>`
+// for the kernels several techniques' stages share, in Settings::vct: these groups
+// (tests/settings_test.cpp checks every technique's keys against the scheme).
 inline constexpr std::string_view kKernelKeyGroups[] = {
     "emitters", "light", "voxel_shadow", "cones", "shadow", "specular", "ao"};
 

@@ -30,6 +30,18 @@ INSTANTIATE_TEST_SUITE_P(Techniques, FramePlan, testing::ValuesIn(allTechniqueCa
                            return p.param.label;
                          });
 
+// update.interval=3 on vct's and lpv's first motion cases: volumes of frames 0, 3 and 6.
+TEST(FramePlan, VolumesUpdateEveryIntervalFrames) {
+  cpu::CpuBackend cpu;
+  for (const char* technique : {"vct", "lpv"})
+    for (const TechniqueCase& c : allTechniqueCases("motion"))
+      if (c.technique == technique) {
+        SCOPED_TRACE(c.label);
+        expectVolumesUpdateEveryInterval(c, cpu, 3);
+        break;
+      }
+}
+
 TEST(FramePlan, LightVoxelsRelightsOnlyWhatTheMovedMeshCanReach) {
   cpu::CpuBackend cpu;
   expectPartialRelightEqualsScratch(cpu);

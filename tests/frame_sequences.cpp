@@ -110,6 +110,44 @@ void expectIncrementalFramesEqualScratch(const TechniqueCase& c, StageBackend& b
   }
 }
 
+void expectVolumesUpdateEveryInterval(const TechniqueCase& c, StageBackend& backend, int interval) {
+  ASSERT_TRUE(c.error.empty()) << c.error;
+  const Technique& technique = findTechnique(c.technique);
+  const std::vector<Scene> frames = motionFrames(caseScene(c));
+  const auto settingsOf = [&](const Scene& scene) {
+    Settings s = caseSettings(c, scene);
+    s.updateInterval = interval;
+    return s;
+  };
+  FrameRunner runner(technique, backend);
+  for (size_t f = 0; f < frames.size(); ++f) {
+    const std::vector<FrameStep>& steps = runner.run(frames[f], settingsOf(frames[f]));
+    const size_t update = f - f % size_t(interval);
+    const Scene& scene = frames[f];
+    const Settings settings = settingsOf(scene), volumeSettings = settingsOf(frames[update]);
+    const VoxelTriangles triangles = prepareVoxelTriangles(scene, scene.grid);
+    const VoxelTriangles volumeTriangles = prepareVoxelTriangles(frames[update], scene.grid);
+    const StageContext ctx{technique, scene, settings, triangles};
+    const StageContext volumeCtx{technique, frames[update], volumeSettings, volumeTriangles};
+    BufferSet scratch;
+    bool volume = true;  // before the first stage that reads the camera
+    for (const StageSpec* stage : plannedStages(ctx)) {
+      volume = volume && (stageSceneInputs(stage->id) & kSceneCamera) == 0;
+      ASSERT_TRUE(runStage(backend, *stage, volume ? volumeCtx : ctx, scratch).ok());
+      for (const FrameStep& s : steps) {
+        if (s.stage == stage && volume && f != update) {
+          EXPECT_FALSE(s.runs) << "frame " << f << ": " << stage->qualifiedName() << ": " << s.why;
+        }
+      }
+    }
+    ASSERT_EQ(runner.buffers().size(), scratch.size()) << "frame " << f;
+    for (const auto& [id, buffer] : scratch)
+      EXPECT_TRUE(sameWords(runner.buffers(), id, scratch, id))
+          << "frame " << f << " (volumes of frame " << update
+          << "): " << bufferSpec(id).qualifiedName();
+  }
+}
+
 void expectPartialRelightEqualsScratch(StageBackend& backend) {
   const Technique& technique = findTechnique("vct");
   Settings settings;

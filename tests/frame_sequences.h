@@ -24,6 +24,11 @@ std::vector<Scene> motionFrames(const Scene& scene);
 // moved, nothing when nothing moved, no voxelization when a light moved.
 void expectIncrementalFramesEqualScratch(const TechniqueCase& c, StageBackend& backend);
 
+// The case's motionFrames under update.interval=`interval`: every frame equals, word for word, the
+// frame whose volume stages ran from scratch on the scene of the last frame numbered a multiple
+// of `interval` and whose other stages ran from scratch on its own; no volume stage runs between.
+void expectVolumesUpdateEveryInterval(const TechniqueCase& c, StageBackend& backend, int interval);
+
 // vct's light_voxels relighting in part: a lit floor and, in a mesh of its own, a blocker that
 // moves by two voxels, so that its shadow moves on floor voxels outside the changed box. Expects
 // the frame reached incrementally to equal the frame from scratch, and the stage run on a frame

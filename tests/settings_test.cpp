@@ -80,10 +80,11 @@ TEST(Settings, ATechniqueTakesTheKeysItSharesAndRefusesOthers) {
 }
 
 // Every key of every technique follows the one scheme of common/technique.h: named after a stage
-// the technique runs, after the owner of its stages, the planner, or a shared kernel.
+// the technique runs, after the owner of its stages, the planner (plan), the planner in time
+// (update), or a shared kernel.
 TEST(Settings, EveryKeyNamesTheStageOrKernelThatReadsIt) {
   for (const Technique& t : techniques()) {
-    std::set<std::string_view> allowed{"plan"};
+    std::set<std::string_view> allowed{"plan", "update"};
     for (const std::string_view group : kKernelKeyGroups) allowed.insert(group);
     for (const StageSpec* s : t.steps()) {
       allowed.insert(s->name);

@@ -20,27 +20,29 @@ struct PlanOptions {
 };
 
 // Per frame of --frames: what moved since the frame before, and which stages run or reuse their
-// buffers, as `voxgi render --frames` runs them.
+// buffers, as `voxgi render --frames` runs them (update.interval included: FrameRunner's steps on
+// a backend that runs nothing).
+class PlanOnly : public StageBackend {
+ public:
+  std::string name() const override { return "plan"; }
+  void run(StageId stage, const StageContext& ctx, BufferSet& buffers) override {
+    putDarkOutputs(ctx, stage, buffers);  // zero buffers of the planned sizes: nothing computed
+  }
+};
+
 void printFramePlans(const PlanOptions& o, const Technique& technique, const Scene& scene) {
   const FrameRange range = parseFrames(o.frames, "--frames");
-  const VoxelTriangles none;  // the steps read the plan, not the triangles
-  std::optional<Scene> previous;
-  std::optional<EffectPlan> previousPlan;
+  PlanOnly backend;
+  FrameRunner runner(technique, backend);
   for (int f = range.first; f <= range.last; f += range.step) {
     const double seconds = frameSeconds(f, o.fps);
     Scene at = sceneAt(scene, seconds);
     const Settings settings = o.scene.settings(at);
-    const StageContext ctx{technique, at, settings, none};
-    const SceneChange change = previous ? sceneChange(*previous, at) : SceneChange{};
-    const std::vector<FrameStep> steps =
-        frameSteps(ctx, previousPlan ? &*previousPlan : nullptr, change);
-    std::cout << "\nframe " << f << " (" << seconds
-              << " s): " << (previous ? change.describe() : "the first frame") << "\n";
+    const std::vector<FrameStep>& steps = runner.run(std::move(at), settings);
+    std::cout << "\nframe " << f << " (" << seconds << " s): " << runner.why() << "\n";
     for (const FrameStep& s : steps)
       std::cout << "  " << (s.runs ? "run  " : "reuse") << "  " << std::left << std::setw(20)
                 << s.stage->qualifiedName() << "  " << s.why << "\n";
-    previousPlan = ctx.plan;
-    previous = std::move(at);
   }
 }
 

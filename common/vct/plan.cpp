@@ -37,8 +37,8 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   p.dark = scene.unlit() && !p.full;
 
   p.lightStage(StageId::common_voxelize, true,
-               "surfaces -> albedo, normal, opacity volumes; the geometry is static, so one "
-               "voxelization serves every frame and any relighting");
+               "surfaces -> albedo, normal, opacity volumes; in a sequence, redone (in part when "
+               "few meshes moved) only when geometry moves");
   const MeshesWith emitters = meshesWith(scene, [](const Material& m) { return m.emissive(); });
   p.effect("emission volume", Effect::emission, p.full || !emitters.names.empty(),
            !emitters.names.empty() ? "emissive material " + emitters.names
