@@ -45,7 +45,7 @@ void vct::light_voxels(const StageContext& ctx, BufferSet& buffers) {
   Buffer radiance = ctx.previous != nullptr
                         ? ctx.previous->stash.take(BufferId::vct_light_voxels_radiance)
                         : Buffer{};
-  if (radiance.spec == nullptr)
+  if (radiance.spec == nullptr || radiance.extent != glm::ivec3(n))
     radiance = Buffer(BufferId::vct_light_voxels_radiance, glm::ivec3(n));
   parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
     for (int row = rows.begin(); row != rows.end(); ++row)
