@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "common/svo/propagate.h"
 #include "common/voxel_triangles.h"
 
 namespace voxgi {
@@ -37,6 +38,16 @@ unsigned stageSceneInputs(StageId stage) {
       return all;
   }
   return all;
+}
+
+bool stageReadsBuffers(StageId stage) {
+  return stage != StageId::common_voxelize && stage != StageId::common_gbuffer &&
+         stage != StageId::svo_build;
+}
+
+bool stageCarries(const StageContext& ctx, StageId stage) {
+  return ctx.history != nullptr && stage == StageId::svo_propagate &&
+         svo::carriesLight(ctx.settings);
 }
 
 namespace {
@@ -133,12 +144,16 @@ std::vector<FrameStep> frameSteps(const StageContext& ctx, const EffectPlan* pre
         why += std::string(i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
       steps.push_back({s, true, why});
       if (ran == nullptr) ran = s;
-    } else if (ran != nullptr) {
+    } else if (ran != nullptr && stageReadsBuffers(s->id)) {
       steps.push_back({s, true, "after " + ran->qualifiedName() + ", which runs"});
+    } else if (stageCarries(ctx, s->id) && ctx.history->settled.count(s->id) == 0) {
+      steps.push_back({s, true, "it carries light from the frame before: one more bounce"});
+      ran = s;
     } else {
-      steps.push_back(
-          {s, false,
-           since.parts == 0 ? "nothing moved: reuse" : "nothing it reads changed: reuse"});
+      steps.push_back({s, false,
+                       stageCarries(ctx, s->id) ? "the light it carries settled: reuse"
+                       : since.parts == 0       ? "nothing moved: reuse"
+                                                : "nothing it reads changed: reuse"});
     }
   }
   return steps;
@@ -201,6 +216,7 @@ const std::vector<FrameStep>& FrameRunner::run(Scene scene, const Settings& sett
     previous = PreviousFrame{&*volumeScene_, &volumeTriangles_, {}};
   }
   if (same) ctx.previous = &previous;
+  ctx.history = &history_;
   steps_ = frameSteps(ctx, scratch_ || first_ ? nullptr : &*plan_, change_,
                       volumes ? &*volumes : nullptr);
   if (scratch_)

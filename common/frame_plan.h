@@ -1,9 +1,10 @@
 // The planner in time (docs/motion.md): in a sequence, which of a frame's planned stages run and
 // which keep the buffers the previous frame left, from what moved between the two scenes. A stage
 // runs when a part of the scene it reads changed (stageSceneInputs) or when a stage before it in
-// the plan ran; otherwise its buffers are the previous frame's, which is what running it would
-// give, since every stage is a deterministic function of the scene, the settings and the buffers
-// before it (the incremental-equals-scratch tests hold the runner to this).
+// the plan ran and it reads buffers (stageReadsBuffers); otherwise its buffers are the previous
+// frame's, which is what running it would give, since every stage is a deterministic function of
+// the scene, the settings and the buffers before it (the incremental-equals-scratch tests hold the
+// runner to this).
 #pragma once
 
 #include <optional>
@@ -24,6 +25,15 @@ enum SceneInput : unsigned {
 
 // The scene inputs of a stage (a switch over every StageId: a new stage must say what it reads).
 unsigned stageSceneInputs(StageId stage);
+
+// Whether `stage` reads buffers of the stages before it (gbuffer, voxelize and the octree's build
+// read the scene alone): one that does not, runs only when what it reads of the scene changed.
+bool stageReadsBuffers(StageId stage);
+
+// Whether `stage` carries a state of its own from frame to frame (FrameHistory) under ctx's
+// settings and runner: such a stage runs in a frame where nothing it reads changed, until its
+// state settles.
+bool stageCarries(const StageContext& ctx, StageId stage);
 
 // What moved from one frame's scene to the next's: a set of SceneInput bits and, for messages,
 // what it was ("the camera moved", "1 mesh moved: 120 of 4,000 triangles (3 %)").
@@ -64,9 +74,10 @@ void runFrame(StageBackend& backend, const StageContext& ctx, BufferSet& buffers
 
 // The frames of a sequence on one backend: each frame's scene and settings in, the stages
 // frameSteps says run (all of them when `scratch`), the others keeping the buffers the frame
-// before left; a stage that reruns gets the frame before (StageContext::previous) when the plan
-// decided the same. Under update.interval=N > 1 the volume stages run on every N-th frame (and on
-// any whose plan decided otherwise) and their previous frame is the last one they ran on.
+// before left, and every stage given the state stages carry (StageContext::history); a stage that
+// reruns gets the frame before (StageContext::previous) when the plan decided the same. Under
+// update.interval=N > 1 the volume stages run on every N-th frame (and on any whose plan decided
+// otherwise) and their previous frame is the last one they ran on.
 class FrameRunner {
  public:
   FrameRunner(const Technique& technique, StageBackend& backend, bool scratch = false);
@@ -98,6 +109,8 @@ class FrameRunner {
   std::optional<Scene> volumeScene_;
   VoxelTriangles volumeTriangles_;
   int framesSinceUpdate_ = 0;
+  // What the stages carry from frame to frame, kept from scratch too.
+  FrameHistory history_;
   std::vector<FrameStep> steps_;
 };
 

@@ -2,7 +2,10 @@
 // for both backends.
 #pragma once
 
+#include <map>
+#include <set>
 #include <string>
+#include <vector>
 
 #include "common/buffer.h"
 #include "common/effect_plan.h"
@@ -23,6 +26,16 @@ struct PreviousFrame {
   BufferSet stash;
 };
 
+// What stages carry from one frame of a sequence to the next as an input of their own, not a
+// cache: a stage run from scratch reads it too, and its output depends on it (the octree's
+// progressive bounces, [Salm 2015, §4.4.3]). Each stage packs its own words; `settled` holds the
+// stages whose last run left their carried words as it found them, so that running them again on
+// unchanged inputs would change nothing (the planner reuses them then).
+struct FrameHistory {
+  std::map<StageId, std::vector<uint32_t>> carried;
+  std::set<StageId> settled;
+};
+
 struct StageContext {
   StageContext(const Technique& t, const Scene& s, const Settings& st, const VoxelTriangles& tr)
       : technique(t), scene(s), settings(st), triangles(tr), plan(t.plan(s, st)) {}
@@ -33,6 +46,8 @@ struct StageContext {
   const EffectPlan plan;            // technique.plan(scene, settings)
   // Set by the runner of a sequence when the frame before ran under the same decisions.
   PreviousFrame* previous = nullptr;
+  // Set by the runner of a sequence from its first frame on, from scratch too.
+  FrameHistory* history = nullptr;
 };
 
 // Bytes of the buffers `stage` produces under the plan.

@@ -42,6 +42,14 @@ TEST(FramePlan, VolumesUpdateEveryIntervalFrames) {
       }
 }
 
+// svo's motion case under propagate.carry=on: the carried light is the same whether the frames
+// were reached incrementally or from scratch.
+TEST(FramePlan, CarriedLightIsTheSameFromScratch) {
+  cpu::CpuBackend cpu;
+  for (const TechniqueCase& c : allTechniqueCases("motion"))
+    if (c.technique == "svo") expectCarriedFramesEqualScratch(c, cpu);
+}
+
 TEST(FramePlan, LightVoxelsRelightsOnlyWhatTheMovedMeshCanReach) {
   cpu::CpuBackend cpu;
   expectPartialRelightEqualsScratch(cpu);

@@ -148,6 +148,29 @@ void expectVolumesUpdateEveryInterval(const TechniqueCase& c, StageBackend& back
   }
 }
 
+void expectCarriedFramesEqualScratch(TechniqueCase c, StageBackend& backend) {
+  ASSERT_TRUE(c.error.empty()) << c.error;
+  const Technique& technique = findTechnique(c.technique);
+  c.resolution = 16;  // two runners through seven frames: the smallest tree that moves
+  c.image = 24;
+  const std::vector<Scene> frames = motionFrames(caseScene(c));
+  FrameRunner incremental(technique, backend), scratch(technique, backend, true);
+  for (size_t f = 0; f < frames.size(); ++f) {
+    Settings settings = caseSettings(c, frames[f]);
+    settings.svo.carry = SvoToggle::on;
+    const std::vector<FrameStep>& steps = incremental.run(frames[f], settings);
+    scratch.run(frames[f], settings);
+    EXPECT_TRUE(runs(steps, StageId::svo_propagate)) << "frame " << f;
+    if (f == 2) {
+      EXPECT_FALSE(runs(steps, StageId::svo_build)) << "nothing moved in frame 2";
+    }
+    ASSERT_EQ(incremental.buffers().size(), scratch.buffers().size()) << "frame " << f;
+    for (const auto& [id, buffer] : scratch.buffers())
+      EXPECT_TRUE(sameWords(incremental.buffers(), scratch.buffers(), id))
+          << "frame " << f << ": " << bufferSpec(id).qualifiedName();
+  }
+}
+
 void expectPartialRelightEqualsScratch(StageBackend& backend) {
   const Technique& technique = findTechnique("vct");
   Settings settings;

@@ -29,6 +29,11 @@ void expectIncrementalFramesEqualScratch(const TechniqueCase& c, StageBackend& b
 // of `interval` and whose other stages ran from scratch on its own; no volume stage runs between.
 void expectVolumesUpdateEveryInterval(const TechniqueCase& c, StageBackend& backend, int interval);
 
+// The case's motionFrames at 16^3 under propagate.carry=on (svo): every frame reached incrementally
+// equals, word for word, the frame a runner reached from scratch (which carries the same light: the
+// carry is an input, not a cache), and propagate runs in every frame, nothing having moved or not.
+void expectCarriedFramesEqualScratch(TechniqueCase c, StageBackend& backend);
+
 // vct's light_voxels relighting in part: a lit floor and, in a mesh of its own, a blocker that
 // moves by two voxels, so that its shadow moves on floor voxels outside the changed box. Expects
 // the frame reached incrementally to equal the frame from scratch, and the stage run on a frame

@@ -22,6 +22,12 @@ INSTANTIATE_TEST_SUITE_P(Techniques, GpuFramePlan, testing::ValuesIn(allTechniqu
                            return p.param.label;
                          });
 
+TEST(GpuFramePlan, CarriedLightIsTheSameFromScratch) {
+  gpu::GpuBackend gpu(glContext(gpu::GlPlatform::egl));
+  for (const TechniqueCase& c : allTechniqueCases("motion"))
+    if (c.technique == "svo") expectCarriedFramesEqualScratch(c, gpu);
+}
+
 TEST(GpuFramePlan, LightVoxelsRelightsOnlyWhatTheMovedMeshCanReach) {
   gpu::GpuBackend gpu(glContext(gpu::GlPlatform::egl));
   expectPartialRelightEqualsScratch(gpu);

@@ -41,15 +41,17 @@ int runDiff(const DiffOptions& o) {
   std::cerr << "voxgi: diff on " << context->renderer() << "\n";
   cpu::CpuBackend cpuBackend;
   gpu::GpuBackend gpuBackend(*context);
-  // Each frame of the scene at its time, from scratch on both backends; an animated scene without
-  // --frames is its frame 0.
+  // Each frame of the scene at its time, from scratch on both backends but for the light a stage
+  // carries from the frame before; an animated scene without --frames is its frame 0.
   bool pass = true;
   nlohmann::json json = nlohmann::json::array();
+  FrameHistory history;  // what stages carry from frame to frame (propagate.carry)
   for (const int f : frames) {
     const Scene at = scene.motion.empty() ? scene : sceneAt(scene, frameSeconds(f, o.fps));
     const Settings settings = o.scene.settings(at, true);
     const VoxelTriangles triangles = prepareVoxelTriangles(at, at.grid);
-    const StageContext ctx{technique, at, settings, triangles};
+    StageContext ctx{technique, at, settings, triangles};
+    if (!o.frames.empty()) ctx.history = &history;
     std::string dump = o.dumpDir;
     if (!dump.empty() && !o.frames.empty()) {
       dump = o.dumpDir + "/frame_" + std::to_string(f);
@@ -81,7 +83,8 @@ void addDiffCommand(CLI::App& app, Globals& globals, Commands& commands) {
                   "frame_F per frame)");
   cmd->add_option("--frames", o->frames,
                   "diff frames A to B (A:B or A:B:STEP) of an animated scene, each from scratch "
-                  "on both backends (docs/motion.md)");
+                  "on both backends but for what stages carry from frame to frame "
+                  "(propagate.carry, given to both as the CPU found it; docs/motion.md)");
   cmd->add_option("--fps", o->fps, "frames per second of --frames")->check(CLI::Range(1e-3, 1e6));
   commands.push_back({cmd, [o] { return runDiff(*o); }});
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -253,14 +254,20 @@ std::vector<StageReport> diffStages(const StageContext& ctx, StageBackend& cpu, 
     if (wanted(s)) last = s;
   BufferSet inputs;  // the CPU's outputs of the stages run so far
   for (const StageSpec* stage : plannedStages(ctx, last)) {
+    // In a sequence, the GPU gets the state stages carry as the CPU found it (ctx.history goes on
+    // with the CPU's), as it gets the CPU's buffers.
+    std::optional<FrameHistory> carried;
+    if (ctx.history != nullptr && wanted(stage)) carried = *ctx.history;
     BufferSet cpuOut = inputs;
     auto start = std::chrono::steady_clock::now();
     const StageOutputs cpuOutputs = runStage(cpu, *stage, ctx, cpuOut);
     const double cpuSeconds = seconds(start);
     if (wanted(stage)) {
       BufferSet gpuOut = inputs;
+      StageContext gpuCtx = ctx;
+      gpuCtx.history = carried ? &*carried : nullptr;
       start = std::chrono::steady_clock::now();
-      const StageOutputs gpuOutputs = runStage(gpu, *stage, ctx, gpuOut);
+      const StageOutputs gpuOutputs = runStage(gpu, *stage, gpuCtx, gpuOut);
       const double gpuSeconds = seconds(start);
       const TieClassifier classify = classifierFor(*stage, ctx, cpuOut, gpuOut);
       StageReport report = compareStage(*stage, ctx.plan, cpuOut, gpuOut, classify);

@@ -55,9 +55,10 @@ StageReport compareStage(const StageSpec& stage, const EffectPlan& plan, const B
 
 // Runs the planned stages of ctx's technique up to the last of `stages` on the CPU, and each of
 // `stages` on both backends from the CPU's outputs of the stages before it, and compares them
-// (a requested stage the plan skips is reported as such). With a non-empty `dumpDir`, writes
-// <dir>/<stage>_cpu.vdb, _gpu.vdb and _diff.vdb (gpu - cpu per buffer, plus a `classification`
-// grid: 0 agree, 1 tie, 2 not a tie).
+// (a requested stage the plan skips is reported as such). In a sequence (ctx.history set), both
+// backends get the state stages carry as the CPU found it, and ctx.history goes on with the CPU's.
+// With a non-empty `dumpDir`, writes <dir>/<stage>_cpu.vdb, _gpu.vdb and _diff.vdb (gpu - cpu per
+// buffer, plus a `classification` grid: 0 agree, 1 tie, 2 not a tie).
 std::vector<StageReport> diffStages(const StageContext& ctx, StageBackend& cpu, StageBackend& gpu,
                                     const std::vector<const StageSpec*>& stages,
                                     const std::string& dumpDir);

@@ -32,10 +32,12 @@ struct NodeLevels {
 enum class FirstStep { plain, ndf };
 
 // What a frame leaves besides the radiance: the mipmap it gathered from, and per leaf the gathered
-// E / pi premultiplied by the clamped opacity (a: that opacity), which shading interpolates.
+// E / pi premultiplied by the clamped opacity (a: that opacity), which shading interpolates, and
+// straight (what propagate.carry carries to the next frame, common/svo/propagate.h).
 struct FrameOutputs {
   NodeLevels pyramid;
   LeafRadiance gathered;
+  std::vector<glm::vec3> gatheredStraight;
 };
 
 }  // namespace voxgi::svo

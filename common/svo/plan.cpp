@@ -3,6 +3,7 @@
 
 #include "common/lights.h"
 #include "common/error.h"
+#include "common/svo/propagate.h"
 #include "common/svo/tree_depth.h"
 #include "common/technique.h"
 
@@ -53,7 +54,10 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   frames << " injected with " << settingValue(settings, "voxel_shadow.mode") << " voxel shadows; "
          << s.frames << " frame(s) (propagate.frames)"
          << (s.clearEachFrame == SvoToggle::on ? " each gathering from the direct light alone"
-                                               : ", one more bounce each");
+                                               : ", one more bounce each")
+         << (carriesLight(settings)
+                 ? ", in a sequence from the light the frame before gathered (propagate.carry)"
+                 : "");
   p.lightStage(StageId::svo_propagate, true, frames.str());
   p.lightStage(StageId::svo_mip, true,
                "the last frame's radiance up the tree (svo.first_step=" +

@@ -17,6 +17,10 @@ const std::vector<Param>& params() {
                     "the last (0: direct light only)"),
         choice<svo>("propagate.clear_each_frame", &SvoSettings::clearEachFrame, {"off", "on"},
                     "every frame gathers from the direct light alone: exactly one bounce"),
+        choice<svo>("propagate.carry", &SvoSettings::carry, {"off", "on"},
+                    "in a sequence, each frame's gathers start from the frame before's gathered "
+                    "light, so bounces build up over the frames rendered and lag the scene "
+                    "(Salm 2015, 4.4.3); propagate then runs every frame until its light settles"),
         choice<svo>("svo.first_step", &SvoSettings::firstStep, {"plain", "ndf"},
                     "the first mip step composites the leaves as the dense mip does, or weights "
                     "each by its normal distribution per face (Salm 2015, 4.4.2)"),

@@ -16,6 +16,9 @@ struct SvoSettings {
   float meshDensity = 4.0f;                   // points sampled per leaf face of mesh area
   int frames = 1;                             // progressive bounces [Salm 2015, §4.4.3]
   SvoToggle clearEachFrame = SvoToggle::off;  // every frame gathers from the direct light alone
+  // In a sequence, a frame's gathers start from the frame before's gathered light (by leaf), so
+  // bounces build up over the frames rendered [Salm 2015, §4.4.3] (common/svo/carry.h).
+  SvoToggle carry = SvoToggle::off;
   SvoFirstStep firstStep = SvoFirstStep::plain;
   int seed = 1;  // of the points sampled on meshes
   SvoShadeFilter shadeFilter = SvoShadeFilter::trilinear;

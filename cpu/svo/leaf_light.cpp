@@ -139,22 +139,26 @@ LeafRadiance bounceOnce(const Octree& octree, const Leaves& leaves, const LeafRa
                         FrameOutputs* outputs) {
   NodeLevels mips = mipTree(octree, leaves, source, first);
   LeafRadiance next(source.size(), glm::vec4(0.0f));
-  LeafRadiance gathered(outputs != nullptr ? source.size() : 0, glm::vec4(0.0f));
+  const size_t kept = outputs != nullptr ? source.size() : 0;
+  LeafRadiance gathered(kept, glm::vec4(0.0f));
+  std::vector<glm::vec3> straight(kept, glm::vec3(0.0f));
   forEachRealLeaf(octree, [&](size_t slot, glm::ivec3 v) {
     const SvoVolumes volumes{octree, leaves, &source, &mips, &direct, nullptr, &cones};
     const glm::vec3 g = shared::gatherVoxel(volumes, v, params);
     next[slot] = shared::addReflected(direct[slot], volumes.albedoAt(v), g);
-    if (outputs != nullptr) gathered[slot] = glm::vec4(g * direct[slot].a, direct[slot].a);
+    if (outputs == nullptr) return;
+    gathered[slot] = glm::vec4(g * direct[slot].a, direct[slot].a);
+    straight[slot] = g;
   });
-  if (outputs != nullptr) *outputs = {std::move(mips), std::move(gathered)};
+  if (outputs != nullptr) *outputs = {std::move(mips), std::move(gathered), std::move(straight)};
   return next;
 }
 
 LeafRadiance propagateFrames(const Octree& octree, const Leaves& leaves, const LeafRadiance& direct,
                              const std::vector<shared::ConeData>& cones,
                              const shared::ConeTraceParams& params, int frames, bool clearEachFrame,
-                             FirstStep first, FrameOutputs* outputs) {
-  LeafRadiance current = direct;
+                             FirstStep first, FrameOutputs* outputs, const LeafRadiance* start) {
+  LeafRadiance current = start != nullptr ? *start : direct;
   for (int frame = 0; frame < frames; ++frame)
     current = bounceOnce(octree, leaves, direct, clearEachFrame ? direct : current, cones, params,
                          first, frame + 1 == frames ? outputs : nullptr);

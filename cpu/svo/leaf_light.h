@@ -93,11 +93,13 @@ LeafRadiance bounceOnce(const Octree& octree, const Leaves& leaves, const LeafRa
 
 // `frames` progressive bounces [Salm 2015, §4.4.3]: each frame gathers, at every real leaf, the
 // diffuse cones over the previous frame's mipmap (bounce_kernel.h), so L_{t+1} = direct +
-// albedo x gather(L_t); with `clearEachFrame`, every frame gathers from `direct` alone (one
-// bounce). Returns the last frame's radiance; `outputs` gets that frame's.
+// albedo x gather(L_t), from L_0 = `start` (the light a sequence carried, common/svo/propagate.h)
+// or `direct`; with `clearEachFrame`, every frame gathers from `direct` alone (one bounce).
+// Returns the last frame's radiance; `outputs` gets that frame's.
 LeafRadiance propagateFrames(const Octree& octree, const Leaves& leaves, const LeafRadiance& direct,
                              const std::vector<shared::ConeData>& cones,
                              const shared::ConeTraceParams& params, int frames, bool clearEachFrame,
-                             FirstStep first, FrameOutputs* outputs = nullptr);
+                             FirstStep first, FrameOutputs* outputs = nullptr,
+                             const LeafRadiance* start = nullptr);
 
 }  // namespace voxgi::cpu::svo

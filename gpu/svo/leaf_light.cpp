@@ -143,11 +143,15 @@ LeafRadiance bounceOnce(GlContext& context, const Tree& tree, const voxgi::svo::
            {coneBlock.get(), directBlock.get(), frame.get()}, "propagate_gather");
   const std::vector<glm::vec4> both = download(gl, frame.get(), 2 * v.slots);
   LeafRadiance next(v.slots), gathered(v.slots);
+  std::vector<glm::vec3> straight(v.slots);
   for (size_t s = 0; s < v.slots; ++s) {
     next[s] = both[2 * s];
-    gathered[s] = both[2 * s + 1];
+    const glm::vec4 g = both[2 * s + 1];
+    // The CPU's product (one rounding each), not the shader's: the same bits either way.
+    gathered[s] = glm::vec4(glm::vec3(g) * g.a, g.a);
+    straight[s] = glm::vec3(g);
   }
-  if (outputs != nullptr) *outputs = {std::move(mips), std::move(gathered)};
+  if (outputs != nullptr) *outputs = {std::move(mips), std::move(gathered), std::move(straight)};
   return next;
 }
 

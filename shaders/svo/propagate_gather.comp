@@ -1,14 +1,14 @@
 #version 450 core
 // One gather at every leaf that holds samples (shaders/shared/vct/bounce_kernel.h through the
 // octree): the diffuse cones over the mipmap of the previous frame's radiance, giving the next
-// frame's radiance and the gathered E / pi premultiplied by the opacity. One invocation per leaf
-// slot.
+// frame's radiance and the gathered E / pi with the opacity (straight: the host premultiplies it,
+// as the CPU does, and keeps it for propagate.carry). One invocation per leaf slot.
 layout(local_size_x = 64) in;
 #include "shared/vct/cone_types.h"
 #include "svo_volumes.glsl"
 
 layout(std430, binding = 6) readonly buffer Direct { vec4 direct[]; };
-// per leaf slot: the next radiance, then the gathered light
+// per leaf slot: the next radiance, then the gathered light (rgb) and the opacity (a)
 layout(std430, binding = 7) writeonly buffer Frame { vec4 frame[]; };
 uniform uint uCount;
 
@@ -39,5 +39,5 @@ void main() {
   vec3 g = gatherVoxel(v, params);
   vec4 d = direct[s];
   frame[2u * s] = addReflected(d, albedoAt(v), g);
-  frame[2u * s + 1u] = vec4(g * d.a, d.a);
+  frame[2u * s + 1u] = vec4(g, d.a);
 }
