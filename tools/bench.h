@@ -100,7 +100,8 @@ struct BenchFramesOptions {
   std::vector<int> threads{1, 2};
   int repeats = 3;
   bool gpu = true;
-  std::string gl = "osmesa";  // the GPU column's GL platform (--gl)
+  std::string gl = "osmesa";      // the GPU column's GL platform (--gl)
+  std::vector<std::string> sets;  // key=value for every technique (a key it lacks: refused)
   std::string json;
 };
 

@@ -76,6 +76,7 @@ void addBenchFramesOptions(CLI::App& cmd, BenchFramesOptions& o) {
   cmd.add_option("--repeat", o.repeats, "runs of each sequence (the median is reported)")
       ->check(CLI::Range(1, 100));
   addGpuColumnOptions(cmd, o.gpu, o.gl);
+  cmd.add_option("--set", o.sets, "technique parameter key=value (repeatable)");
   cmd.add_option("--json", o.json, "also write the figures as JSON");
 }
 
@@ -96,7 +97,7 @@ int runBenchFrames(const BenchFramesOptions& o) {
         checkGrid(scene, file);
         const Technique& technique = findTechnique(name);
         const Settings settings =
-            resolveSettings(technique, scene.settings, scene.file, "default", {});
+            resolveSettings(technique, scene.settings, scene.file, "default", o.sets);
         std::vector<std::pair<std::string, std::function<std::map<std::string, double>(bool)>>>
             backends;
         cpu::CpuBackend cpu;

@@ -88,6 +88,27 @@ TEST(SvoCarry, PropagateStopsWhenItsLightSettles) {
   EXPECT_TRUE(stepOf(runner.run(moved, carrying(1)), StageId::svo_propagate).runs);
 }
 
+// S16 in a sequence: voxgi builds the tree of each frame from that frame's samples, so an object
+// that moves away and back leaves the tree, word for word, as it was ([Salm 2015, §4.5] restores
+// the bricks it backed up); the carried light is what changes (docs/svo.md, Z17).
+TEST(SvoCarry, AnObjectThatMovesAwayAndBackLeavesTheTreeAsItWas) {
+  Scene scene = litBox(4.0f, 0.6f);
+  scene.meshes.push_back(
+      makeScene(quad(1, 0.3, {0.3, 0.3}, {0.5, 0.5}), unitGrid(16)).meshes.at(0));
+  Scene away = scene;
+  for (glm::dvec3& p : away.meshes.back().positions) p += glm::dvec3(0.25, 0.2, 0.1);
+  cpu::CpuBackend cpu;
+  FrameRunner runner(findTechnique("svo"), cpu);
+  runner.run(scene, carrying(1));
+  const BufferSet before = runner.buffers();
+  EXPECT_TRUE(stepOf(runner.run(away, carrying(1)), StageId::svo_build).runs);
+  EXPECT_FALSE(sameWords(runner.buffers(), before, BufferId::svo_build_tiles));
+  EXPECT_TRUE(stepOf(runner.run(scene, carrying(1)), StageId::svo_build).runs);
+  for (const BufferSpec* b : stageBuffers(stageSpec(StageId::svo_build)))
+    EXPECT_TRUE(sameWords(runner.buffers(), before, b->id)) << b->qualifiedName();
+  EXPECT_FALSE(sameWords(runner.buffers(), before, BufferId::svo_propagate_radiance));
+}
+
 // The carried light follows the leaves by key: leaves of the same key in both trees start from
 // their direct light plus albedo times the light they gathered, leaves new to the tree from their
 // direct light, and an empty leaf stays empty.
@@ -97,7 +118,8 @@ TEST(SvoCarry, TheLightFollowsTheLeavesByKey) {
   for (size_t s = 0; s < 24; ++s) before.gathered.push_back(glm::vec3(float(s + 1), 0.5f, 0.25f));
   const std::vector<uint32_t> keys{3, 4, 5};
   Words leafTiles(keys.size() * shared::kTileWords, 0u);
-  for (size_t t = 0; t < keys.size(); ++t) leafTiles[t * shared::kTileWords + shared::kTileKey] = keys[t];
+  for (size_t t = 0; t < keys.size(); ++t)
+    leafTiles[t * shared::kTileWords + shared::kTileKey] = keys[t];
   svo::Leaves leaves;
   svo::LeafRadiance direct;
   for (size_t s = 0; s < 24; ++s) {
