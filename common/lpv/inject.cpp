@@ -78,9 +78,11 @@ std::vector<float> injectedVolume(const StageContext& ctx, const Buffer& sums) {
   const glm::vec4 scale = injectionScale(ctx);
   const auto coefficients = size_t(ctx.settings.lpv.coefficients());
   std::vector<float> out(sums.words.size());
-  for (size_t w = 0; w < out.size(); ++w)
-    out[w] = shared::injectedIntensity(static_cast<int32_t>(sums.words[w]),
-                                       scale[int(w % (3 * coefficients) / coefficients)]);
+  // Cell by cell and colour by colour (a word's colour by division cost more than the decoding).
+  for (size_t cell = 0; cell < out.size(); cell += 3 * coefficients)
+    for (int c = 0; c < 3; ++c)
+      for (size_t w = cell + size_t(c) * coefficients; w < cell + size_t(c + 1) * coefficients; ++w)
+        out[w] = shared::injectedIntensity(static_cast<int32_t>(sums.words[w]), scale[c]);
   return out;
 }
 

@@ -1,7 +1,9 @@
 // CPU propagate stage: propagate.steps gather steps of the shared kernel
-// (shaders/shared/lpv/propagate_kernel.h), each cell of a step written by one task, between two
+// (shaders/shared/lpv/propagate_kernel.h), run for a row of cells at a time in SIMD lanes
+// (cpu/lpv/propagate_lanes.h, bit for bit the kernel), each row written by one task, between two
 // volumes; the accumulated volume is added to in step order, so any thread count gives the same
-// bits.
+// bits. The volumes live in the lanes' padded layout during the stage and are laid out as the
+// registered buffers (a cell's words together) only where a buffer is written.
 #include <tbb/blocked_range.h>
 
 #include <cstring>
@@ -10,45 +12,35 @@
 #include "common/lpv/propagate.h"
 #include "common/lpv/sh_buffers.h"
 #include "common/parallel.h"
+#include "cpu/lpv/propagate_lanes_setup.h"
 #include "cpu/stages.h"
-#include "shaders/shared/lpv/propagate_kernel.h"
+#include "shaders/shared/lpv/storage.h"
 
 namespace voxgi::cpu {
 namespace {
 
-template <int Coefficients>
-struct PropagateVolumes {
-  const std::vector<shared::PropagationEntry>& entries;
-  const float* previous;  // the last step, 3C floats per cell
-  float* next;
-  float* accumulated;
-  const Buffer* blocking;  // null without occlusion
-  const shared::PropagateParams& params;
-  int n, words;
+using lpv_lanes::Layout;
 
-  size_t index(glm::ivec3 v) const {
-    return size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z));
-  }
-  static int coefficientCount() { return Coefficients; }
-  static int colourCount() { return 3; }
-  const shared::PropagationEntry& entryAt(int e) const { return entries[size_t(e)]; }
-  float intensityAt(glm::ivec3 cell, int word) const {
-    return previous[index(cell) * size_t(words) + size_t(word)];
-  }
-  glm::vec4 blockingAt(glm::ivec3 g) const {
-    if (glm::any(glm::lessThan(g, glm::ivec3(0))) ||
-        glm::any(glm::greaterThanEqual(g, glm::ivec3(n))))
-      return glm::vec4(0.0f);
-    const size_t e = index(g);
-    return {blocking->get<float>(e, 0), blocking->get<float>(e, 1), blocking->get<float>(e, 2),
-            blocking->get<float>(e, 3)};
-  }
-  void storeIntensity(glm::ivec3 cell, int word, float value) const {
-    const size_t w = index(cell) * size_t(words) + size_t(word);
-    next[w] = value;
-    accumulated[w] = shared::accumulatedValue(accumulated[w], value, params);
-  }
-};
+// Every occluded step reads the same visibility of each entry at each cell; it is computed once
+// ahead when it takes at most this much memory (a 64^3 HOLPV's 54 entries take 58 MB), and per
+// step beyond (the same bits either way).
+constexpr double kVisibilityAheadBytes = 64.0 * 1024 * 1024;
+
+// One step over rows [begin, end). With lpv.storage=f16 the lanes leave the raw sums in `next`
+// and the rows are rounded here, as the kernel's storeIntensity does, before being accumulated.
+void stepRows(const lpv_lanes::Step& step, const Layout& l, int words,
+              const shared::PropagateParams& params, float* accumulated, int begin, int end) {
+  lpv_lanes::propagateRows(simdLevel(), step, begin, end);
+  if (step.accumulated) return;
+  for (int row = begin; row != end; ++row)
+    for (int w = 0; w < words; ++w)
+      for (int x = 0; x < l.n; ++x) {
+        const size_t i = l.index(words, row, w, x);
+        const float stored = shared::storedValue(step.next[i], params);
+        step.next[i] = stored;
+        accumulated[i] = shared::accumulatedValue(accumulated[i], stored, params);
+      }
+}
 
 }  // namespace
 
@@ -58,44 +50,72 @@ void lpv::propagate(const StageContext& ctx, BufferSet& buffers) {
   const int n = ctx.scene.grid.resolution;
   const int words = 3 * s.coefficients();
   const size_t count = size_t(n) * size_t(n) * size_t(n) * size_t(words);
-  // The stage's buffers and the two step volumes it swaps between.
-  const double stageBytes = double(stageBufferBytes(StageId::lpv_propagate, ctx.scene, ctx.plan));
-  checkStageMemory(ctx, StageId::lpv_propagate, 1.0 + 2.0 * 4.0 * double(count) / stageBytes);
+  const Layout layout(n);
   voxgi::lpv::Propagation setup = voxgi::lpv::preparePropagation(s, n);
+  const bool occlusion = voxgi::lpv::occludedStep(s, setup.steps);
+  const double visibilityBytes = 4.0 * double(layout.volumeFloats(int(setup.entries.size())));
+  const bool visibilityAhead = occlusion && visibilityBytes <= kVisibilityAheadBytes;
+  // The stage's buffers, the injected volume, the three volumes in the lanes' layout (previous,
+  // next, accumulated), the geometry and the visibility computed ahead.
+  const double stageBytes = double(stageBufferBytes(StageId::lpv_propagate, ctx.scene, ctx.plan));
+  const double scratchBytes =
+      4.0 * (double(count) + 3.0 * double(layout.volumeFloats(words)) +
+             (occlusion ? 4.0 * double(n + 2) * double(n + 2) * double(layout.stride) : 0.0)) +
+      (visibilityAhead ? visibilityBytes : 0.0);
+  checkStageMemory(ctx, StageId::lpv_propagate, 1.0 + scratchBytes / stageBytes);
 
-  std::vector<float> previous = voxgi::lpv::injectedVolume(ctx, buffers.at(sh.intensitySum));
-  voxgi::lpv::prepareStorage(s, setup.params, previous);
-  std::vector<float> next(count);
-  Buffer accumulated(sh.accumulated, glm::ivec3(n));
+  std::vector<float> injected = voxgi::lpv::injectedVolume(ctx, buffers.at(sh.intensitySum));
+  voxgi::lpv::prepareStorage(s, setup.params, injected);
   const bool history = ctx.plan.on(sh.history);
   Buffer steps = history ? Buffer(sh.steps, glm::ivec3(n, n, n * (setup.steps + 1))) : Buffer();
-  float* acc = reinterpret_cast<float*>(accumulated.words.data());
-  if (s.accumulateInjection == LpvToggle::on) std::memcpy(acc, previous.data(), count * 4);
-  if (history) std::memcpy(steps.words.data(), previous.data(), count * 4);
+  if (history) std::memcpy(steps.words.data(), injected.data(), count * 4);
+  std::vector<float> previous(layout.volumeFloats(words), 0.0f), next(previous.size(), 0.0f);
+  lpv_lanes::toLayout(layout, words, injected.data(), previous.data());
+  std::vector<float> accumulated =
+      s.accumulateInjection == LpvToggle::on ? previous : std::vector<float>(previous.size(), 0.0f);
+  injected = {};
+  const std::vector<float> geometry =
+      occlusion ? lpv_lanes::geometryLayout(
+                      layout, reinterpret_cast<const float*>(
+                                  buffers.at(BufferId::lpv_inject_geometry_blocking).words.data()))
+                : std::vector<float>();
+  const std::vector<lpv_lanes::Entry> entries =
+      lpv_lanes::laneEntries(setup.entries, s.coefficients());
+  lpv_lanes::Step lanes;
+  lanes.n = n;
+  lanes.coefficients = s.coefficients();
+  lanes.stride = layout.stride;
+  lanes.entries = entries.data();
+  lanes.entryCount = int(entries.size());
+  lanes.clampNegative = setup.params.clampNegative != 0;
+  std::vector<float> visibility;
+  if (visibilityAhead) {
+    visibility.resize(layout.volumeFloats(int(entries.size())));
+    lanes.blocking = geometry.data();
+    parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
+      lpv_lanes::visibilityRows(simdLevel(), lanes, visibility.data(), rows.begin(), rows.end());
+    });
+  }
 
   for (int step = 1; step <= setup.steps; ++step) {
-    const bool occlude = voxgi::lpv::occludedStep(s, step);
-    setup.params.occlude = occlude ? 1 : 0;
-    const Buffer* blocking =
-        occlude ? &buffers.at(BufferId::lpv_inject_geometry_blocking) : nullptr;
-    const auto run = [&](const auto& volumes) {
-      parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
-        for (int row = rows.begin(); row != rows.end(); ++row)
-          for (int x = 0; x < n; ++x)
-            shared::propagateCell(volumes, glm::ivec3(x, row % n, row / n), setup.params);
-      });
-    };
-    // The coefficient count as a constant: the compiler unrolls the kernel's loops.
-    if (s.coefficients() == 4)
-      run(PropagateVolumes<4>{setup.entries, previous.data(), next.data(), acc, blocking,
-                              setup.params, n, words});
-    else
-      run(PropagateVolumes<9>{setup.entries, previous.data(), next.data(), acc, blocking,
-                              setup.params, n, words});
-    if (history) std::memcpy(steps.words.data() + size_t(step) * count, next.data(), count * 4);
+    lanes.previous = previous.data();
+    lanes.next = next.data();
+    lanes.accumulated = setup.params.halfPrecision ? nullptr : accumulated.data();
+    const bool occluded = voxgi::lpv::occludedStep(s, step);
+    lanes.blocking = occluded && !visibilityAhead ? geometry.data() : nullptr;
+    lanes.visibility = occluded && visibilityAhead ? visibility.data() : nullptr;
+    parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
+      stepRows(lanes, layout, words, setup.params, accumulated.data(), rows.begin(), rows.end());
+    });
+    if (history)
+      lpv_lanes::fromLayout(layout, words, next.data(),
+                            reinterpret_cast<float*>(steps.words.data()) + size_t(step) * count);
     std::swap(previous, next);
   }
-  buffers.put(std::move(accumulated));
+  Buffer out(sh.accumulated, glm::ivec3(n));
+  lpv_lanes::fromLayout(layout, words, accumulated.data(),
+                        reinterpret_cast<float*>(out.words.data()));
+  buffers.put(std::move(out));
   if (history) buffers.put(std::move(steps));
 }
 

@@ -3,7 +3,11 @@
 // source's intensity toward the face's centre, I_f = sum_i c_i Y_i(omega_f), attenuated by the
 // geometry volume at the point where light leaves the source cell, re-emitted as the face's
 // clamped-cosine lobe (PropagationEntry::reprojected holds its weight: Omega_f / pi, or the
-// thesis's Omega_f / (4 pi)). Sums run in the entry table's order on both backends.
+// thesis's Omega_f / (4 pi)). Sums run in the entry table's order on both backends. Products with
+// a zero weight are skipped: the axis-aligned lobes are zero in 2 of 4 (5 or 6 of 9) coefficients,
+// and so is the source's basis toward a face straight ahead; a sum starts at +0, so adding the
+// product's +-0 would change no bit of it (for finite values), and skipping it is the same kernel.
+// The CPU's lanes (cpu/lpv/propagate_lanes.h) skip the same products.
 //
 // Reads FETCH(entryAt)(e) -> PropagationEntry, FETCH(intensityAt)(cell, word) -> float (the
 // previous step; word = colour * C + i), FETCH(blockingAt)(g) -> vec4 (0 outside the grid), and
@@ -70,11 +74,13 @@ VOLUME_FN void propagateCell(VOLUMES_IN ivec3 x, PropagateParams p) {
     for (int c = 0; c < colours; ++c) {
       precise float intensity = 0.0f;
       for (int i = 0; i < coefficients; ++i)
-        intensity = intensity + FETCH(intensityAt)(src, c * coefficients + i) * f.sampled[i];
+        if (f.sampled[i] != 0.0f)
+          intensity = intensity + FETCH(intensityAt)(src, c * coefficients + i) * f.sampled[i];
       if (clampNegative) intensity = max(intensity, 0.0f);
       precise float flux = intensity * visibility;
       for (int i = 0; i < coefficients; ++i)
-        dst[c * coefficients + i] = dst[c * coefficients + i] + flux * f.reprojected[i];
+        if (f.reprojected[i] != 0.0f)
+          dst[c * coefficients + i] = dst[c * coefficients + i] + flux * f.reprojected[i];
     }
   }
   for (int w = 0; w < colours * coefficients; ++w)
