@@ -1,6 +1,8 @@
 // The voxgi command line (docs/architecture.md, "Command line"): one file per command
 // (tools/command.h). Exit codes: 0 ok, 1 internal failure or a failed diff, 2 bad input (one line
 // naming the file and field).
+#include <malloc.h>
+
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -15,6 +17,13 @@
 using namespace voxgi;
 
 int main(int argc, char** argv) {
+  // Keep what is freed for the next allocation instead of returning it to the system: a stage
+  // that runs again (the next frame, a benchmark's repeat) then reuses its scratch and outputs of
+  // the run before rather than faulting in fresh pages, which costs ~3 ms per MB on the VMs voxgi
+  // is benchmarked on, 40 x a memcpy (docs/benchmarks.md). glibc otherwise maps every block over
+  // 32 MB afresh and returns it on free.
+  mallopt(M_MMAP_THRESHOLD, 1 << 30);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   CLI::App app{"voxgi: real-time global illumination with a CPU reference and OpenGL shaders"};
   app.require_subcommand(1);
   tools::Globals globals;

@@ -75,14 +75,11 @@ glm::vec4 injectionScale(const StageContext& ctx) {
 }
 
 std::vector<float> injectedVolume(const StageContext& ctx, const Buffer& sums) {
-  const glm::vec4 scale = injectionScale(ctx);
-  const auto coefficients = size_t(ctx.settings.lpv.coefficients());
+  const int n = ctx.scene.grid.resolution, words = 3 * ctx.settings.lpv.coefficients();
   std::vector<float> out(sums.words.size());
-  // Cell by cell and colour by colour (a word's colour by division cost more than the decoding).
-  for (size_t cell = 0; cell < out.size(); cell += 3 * coefficients)
-    for (int c = 0; c < 3; ++c)
-      for (size_t w = cell + size_t(c) * coefficients; w < cell + size_t(c + 1) * coefficients; ++w)
-        out[w] = shared::injectedIntensity(static_cast<int32_t>(sums.words[w]), scale[c]);
+  decodeInjected(ctx, sums, [&](int row, int x, int word, float value) {
+    out[(size_t(row) * size_t(n) + size_t(x)) * size_t(words) + size_t(word)] = value;
+  });
   return out;
 }
 

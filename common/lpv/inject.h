@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "common/stage.h"
+#include "shaders/shared/lpv/inject_kernel.h"
 #include "shaders/shared/lpv/lpv_types.h"
 
 namespace voxgi::lpv {
@@ -27,7 +28,21 @@ Injection prepareInjection(const StageContext& ctx);
 // prepareInjection(ctx).params.scale without the VPLs.
 glm::vec4 injectionScale(const StageContext& ctx);
 // LPV_0, the volume propagate starts from: inject's fixed-point `sums` as floats (the same
-// words for both backends, computed once on the host).
+// words for both backends, computed once on the host), a cell's 3C words together.
 std::vector<float> injectedVolume(const StageContext& ctx, const Buffer& sums);
+// The same values handed to at(row, x, word, value) (row = y + n z) in the sums' order, for a
+// caller that lays the volume out its own way.
+template <class At>
+void decodeInjected(const StageContext& ctx, const Buffer& sums, At&& at) {
+  const glm::vec4 scale = injectionScale(ctx);
+  const int n = ctx.scene.grid.resolution, coefficients = ctx.settings.lpv.coefficients();
+  size_t w = 0;
+  for (int row = 0; row < n * n; ++row)
+    for (int x = 0; x < n; ++x)
+      for (int c = 0; c < 3; ++c)
+        for (int i = 0; i < coefficients; ++i, ++w)
+          at(row, x, c * coefficients + i,
+             shared::injectedIntensity(static_cast<int32_t>(sums.words[w]), scale[c]));
+}
 
 }  // namespace voxgi::lpv

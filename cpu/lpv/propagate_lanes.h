@@ -47,11 +47,11 @@ struct Entry {
 // One gather step over rows [rowBegin, rowEnd) (row = y + n z).
 struct Step {
   int n = 0;
-  int coefficients = 4;  // C: 4 or 9
-  int stride = 0;        // Layout::stride
+  int coefficients = 4;             // C: 4 or 9
+  int stride = 0;                   // Layout::stride
   const float* previous = nullptr;  // Layout of 3C words, pads zero
-  float* next = nullptr;             // the same: each row's cells written, pads written zero
-  float* accumulated = nullptr;      // the same: next added to it; null to leave it (f16 storage)
+  float* next = nullptr;            // the same: each row's cells written, pads written zero
+  float* accumulated = nullptr;     // the same: next added to it; null to leave it (f16 storage)
   // The geometry volume: Layout of 4 words over (n+2)^2 rows (y, z from -1), zero outside the
   // grid; null: no occlusion.
   const float* blocking = nullptr;

@@ -103,9 +103,12 @@ void reprojectAny(Lanes* dst, const Lanes* flux, const Entry& f) {
   const float* r = f.reprojected;
   if constexpr (C == 4) {
     switch (f.lobe) {
-      case Entry::kLobeX: return reproject<C>(dst, flux, r, std::integer_sequence<int, 0, 3>());
-      case Entry::kLobeY: return reproject<C>(dst, flux, r, std::integer_sequence<int, 0, 1>());
-      case Entry::kLobeZ: return reproject<C>(dst, flux, r, std::integer_sequence<int, 0, 2>());
+      case Entry::kLobeX:
+        return reproject<C>(dst, flux, r, std::integer_sequence<int, 0, 3>());
+      case Entry::kLobeY:
+        return reproject<C>(dst, flux, r, std::integer_sequence<int, 0, 1>());
+      case Entry::kLobeZ:
+        return reproject<C>(dst, flux, r, std::integer_sequence<int, 0, 2>());
     }
   } else {
     switch (f.lobe) {
@@ -113,7 +116,8 @@ void reprojectAny(Lanes* dst, const Lanes* flux, const Entry& f) {
         return reproject<C>(dst, flux, r, std::integer_sequence<int, 0, 3, 6, 8>());
       case Entry::kLobeY:
         return reproject<C>(dst, flux, r, std::integer_sequence<int, 0, 1, 6, 8>());
-      case Entry::kLobeZ: return reproject<C>(dst, flux, r, std::integer_sequence<int, 0, 2, 6>());
+      case Entry::kLobeZ:
+        return reproject<C>(dst, flux, r, std::integer_sequence<int, 0, 2, 6>());
     }
   }
 }
@@ -132,48 +136,48 @@ void propagateRows(const Step& s, int rowBegin, int rowEnd) {
     const float* visibilityRow =
         s.visibility ? s.visibility + size_t(row) * size_t(s.entryCount) * stride + 1 : nullptr;
     for (int x0 = 0; x0 < n; x0 += kWidth) {
-        // Unrolled, so that every index is a constant and the sums live in registers.
-        Lanes dst[3 * C];
+      // Unrolled, so that every index is a constant and the sums live in registers.
+      Lanes dst[3 * C];
 #pragma GCC unroll 32
-        for (int w = 0; w < 3 * C; ++w) dst[w] = Lanes(0.0f);
-        int blockedFor[3] = {0, 0, 0};  // the offset `blocking` holds (0: none yet)
-        Lanes blocking[4];
-        for (int e = 0; e < s.entryCount; ++e) {
-          const Entry& f = s.entries[e];
-          const int sy = y - f.dy, sz = z - f.dz;
-          if (sy < 0 || sy >= n || sz < 0 || sz >= n) continue;
-          // The source row; lanes whose source x is outside the grid read the pads' +0.
-          const float* src = s.previous + (size_t(sy) + size_t(n) * size_t(sz)) * rowFloats +
-                             size_t(1 + x0 - f.dx);
-          Lanes visibility(1.0f);
-          if (s.visibility)
-            visibility = load(visibilityRow + size_t(e) * stride + size_t(x0));
-          else if (s.blocking)
-            visibility = visibilityOf(s, f, x0, y, z, blockedFor, blocking);
-          // The colours' sums side by side, each in the kernel's order. The kernel skips a zero
-          // basis value; adding its +-0 product to a sum that started at +0 changes no bit.
-          Lanes flux[3] = {Lanes(0.0f), Lanes(0.0f), Lanes(0.0f)};
-          for (int i = 0; i < C; ++i) {
-            const Lanes sampled(f.sampled[i]);
-            for (int c = 0; c < 3; ++c)
-              flux[c] = flux[c] + load(src + size_t(c * C + i) * stride) * sampled;
-          }
-          for (int c = 0; c < 3; ++c) {
-            if (s.clampNegative) flux[c] = glmMax(flux[c], Lanes(0.0f));
-            // The kernel multiplies by a visibility of 1 without occlusion: x * 1 is x.
-            if (occlude) flux[c] = flux[c] * visibility;
-          }
-          reprojectAny<C>(dst, flux, f);
+      for (int w = 0; w < 3 * C; ++w) dst[w] = Lanes(0.0f);
+      int blockedFor[3] = {0, 0, 0};  // the offset `blocking` holds (0: none yet)
+      Lanes blocking[4];
+      for (int e = 0; e < s.entryCount; ++e) {
+        const Entry& f = s.entries[e];
+        const int sy = y - f.dy, sz = z - f.dz;
+        if (sy < 0 || sy >= n || sz < 0 || sz >= n) continue;
+        // The source row; lanes whose source x is outside the grid read the pads' +0.
+        const float* src =
+            s.previous + (size_t(sy) + size_t(n) * size_t(sz)) * rowFloats + size_t(1 + x0 - f.dx);
+        Lanes visibility(1.0f);
+        if (s.visibility)
+          visibility = load(visibilityRow + size_t(e) * stride + size_t(x0));
+        else if (s.blocking)
+          visibility = visibilityOf(s, f, x0, y, z, blockedFor, blocking);
+        // The colours' sums side by side, each in the kernel's order. The kernel skips a zero
+        // basis value; adding its +-0 product to a sum that started at +0 changes no bit.
+        Lanes flux[3] = {Lanes(0.0f), Lanes(0.0f), Lanes(0.0f)};
+        for (int i = 0; i < C; ++i) {
+          const Lanes sampled(f.sampled[i]);
+          for (int c = 0; c < 3; ++c)
+            flux[c] = flux[c] + load(src + size_t(c * C + i) * stride) * sampled;
         }
-        // Lanes past the grid's end hold light spilled from the last cell: the pads stay +0.
-        const LaneMask inside = lanes < Lanes(float(n - x0));
+        for (int c = 0; c < 3; ++c) {
+          if (s.clampNegative) flux[c] = glmMax(flux[c], Lanes(0.0f));
+          // The kernel multiplies by a visibility of 1 without occlusion: x * 1 is x.
+          if (occlude) flux[c] = flux[c] * visibility;
+        }
+        reprojectAny<C>(dst, flux, f);
+      }
+      // Lanes past the grid's end hold light spilled from the last cell: the pads stay +0.
+      const LaneMask inside = lanes < Lanes(float(n - x0));
 #pragma GCC unroll 32
-        for (int w = 0; w < 3 * C; ++w) {
-          const size_t at = rowAt + size_t(w) * stride + size_t(x0);
-          const Lanes value = xsimd::select(inside, dst[w], Lanes(0.0f));
-          value.store_unaligned(s.next + at);
-          if (s.accumulated) (load(s.accumulated + at) + value).store_unaligned(s.accumulated + at);
-        }
+      for (int w = 0; w < 3 * C; ++w) {
+        const size_t at = rowAt + size_t(w) * stride + size_t(x0);
+        const Lanes value = xsimd::select(inside, dst[w], Lanes(0.0f));
+        value.store_unaligned(s.next + at);
+        if (s.accumulated) (load(s.accumulated + at) + value).store_unaligned(s.accumulated + at);
+      }
     }
   }
 }
@@ -184,12 +188,12 @@ void propagateRows(const Step& s, int rowBegin, int rowEnd) {
 #define VOXGI_LANES_NAME(name, suffix) VOXGI_LANES_PASTE(name, suffix)
 
 void VOXGI_LANES_NAME(visibilityRows, VOXGI_LANES_SUFFIX)(const Step& step, float* visibility,
-                                                           int rowBegin, int rowEnd) {
+                                                          int rowBegin, int rowEnd) {
   visibilityRowsOf(step, visibility, rowBegin, rowEnd);
 }
 
 void VOXGI_LANES_NAME(propagateRows, VOXGI_LANES_SUFFIX)(const Step& step, int rowBegin,
-                                                          int rowEnd) {
+                                                         int rowEnd) {
   if (step.coefficients == 4)
     propagateRows<4>(step, rowBegin, rowEnd);
   else

@@ -22,13 +22,13 @@ int lobeOf(const float* r, int coefficients) {
     int lobe;
     std::vector<int> nonZero;
   };
-  const std::vector<Lobe> lobes =
-      coefficients == 4 ? std::vector<Lobe>{{Entry::kLobeX, {0, 3}},
-                                            {Entry::kLobeY, {0, 1}},
-                                            {Entry::kLobeZ, {0, 2}}}
-                        : std::vector<Lobe>{{Entry::kLobeX, {0, 3, 6, 8}},
-                                            {Entry::kLobeY, {0, 1, 6, 8}},
-                                            {Entry::kLobeZ, {0, 2, 6}}};
+  const std::vector<Lobe> lobes = coefficients == 4
+                                      ? std::vector<Lobe>{{Entry::kLobeX, {0, 3}},
+                                                          {Entry::kLobeY, {0, 1}},
+                                                          {Entry::kLobeZ, {0, 2}}}
+                                      : std::vector<Lobe>{{Entry::kLobeX, {0, 3, 6, 8}},
+                                                          {Entry::kLobeY, {0, 1, 6, 8}},
+                                                          {Entry::kLobeZ, {0, 2, 6}}};
   for (const Lobe& l : lobes) {
     bool match = true;
     for (int i = 0; i < coefficients; ++i)
@@ -45,7 +45,8 @@ void toLayout(const Layout& l, int words, const float* cells, float* out) {
   parallelFor(tbb::blocked_range<int>(0, l.n * l.n), [&](const auto& rows) {
     for (int row = rows.begin(); row != rows.end(); ++row)
       for (int w = 0; w < words; ++w)
-        for (int x = 0; x < l.n; ++x) out[l.index(words, row, w, x)] = cells[cellWord(l, words, row, x, w)];
+        for (int x = 0; x < l.n; ++x)
+          out[l.index(words, row, w, x)] = cells[cellWord(l, words, row, x, w)];
   });
 }
 
@@ -53,7 +54,8 @@ void fromLayout(const Layout& l, int words, const float* in, float* cells) {
   parallelFor(tbb::blocked_range<int>(0, l.n * l.n), [&](const auto& rows) {
     for (int row = rows.begin(); row != rows.end(); ++row)
       for (int w = 0; w < words; ++w)
-        for (int x = 0; x < l.n; ++x) cells[cellWord(l, words, row, x, w)] = in[l.index(words, row, w, x)];
+        for (int x = 0; x < l.n; ++x)
+          cells[cellWord(l, words, row, x, w)] = in[l.index(words, row, w, x)];
   });
 }
 
@@ -63,7 +65,8 @@ std::vector<float> geometryLayout(const Layout& l, const float* blocking) {
   for (int row = 0; row < n * n; ++row) {
     const int padded = (row % n + 1) + side * (row / n + 1);
     for (int k = 0; k < 4; ++k)
-      for (int x = 0; x < n; ++x) out[l.index(4, padded, k, x)] = blocking[cellWord(l, 4, row, x, k)];
+      for (int x = 0; x < n; ++x)
+        out[l.index(4, padded, k, x)] = blocking[cellWord(l, 4, row, x, k)];
   }
   return out;
 }

@@ -28,7 +28,6 @@ std::vector<Entry> laneEntries(const std::vector<shared::PropagationEntry>& entr
 
 // propagateRows* and visibilityRows* of `level`.
 void propagateRows(SimdLevel level, const Step& step, int rowBegin, int rowEnd);
-void visibilityRows(SimdLevel level, const Step& step, float* visibility, int rowBegin,
-                    int rowEnd);
+void visibilityRows(SimdLevel level, const Step& step, float* visibility, int rowBegin, int rowEnd);
 
 }  // namespace voxgi::cpu::lpv_lanes

@@ -37,7 +37,8 @@ struct ScalarVolumes {
     return previous[cell(c) * size_t(3 * coefficients) + size_t(word)];
   }
   glm::vec4 blockingAt(glm::ivec3 g) const {
-    if (glm::any(glm::lessThan(g, glm::ivec3(0))) || glm::any(glm::greaterThanEqual(g, glm::ivec3(n))))
+    if (glm::any(glm::lessThan(g, glm::ivec3(0))) ||
+        glm::any(glm::greaterThanEqual(g, glm::ivec3(n))))
       return glm::vec4(0.0f);
     return (*blocking)[cell(g)];
   }
@@ -82,7 +83,7 @@ void expectLanesEqualTheKernel(const Case& c, int n, SimdLevel level) {
   shared::PropagateParams params = setup.params;
   params.occlude = c.occlusion ? 1 : 0;
   const ScalarVolumes scalar{setup.entries, previous, c.occlusion ? &blocking : nullptr,
-                             want, n, C};
+                             want,          n,        C};
   for (int z = 0; z < n; ++z)
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) shared::propagateCell(scalar, glm::ivec3(x, y, z), params);
@@ -152,21 +153,21 @@ TEST_P(PropagateLanes, EqualTheKernelBitForBitOnEveryInstructionSet) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Cases, PropagateLanes,
-    testing::Values(Case{2, LpvDirections::six, false, false, false},
-                    Case{2, LpvDirections::six, true, false, false},
-                    Case{2, LpvDirections::six, true, true, true},
-                    Case{3, LpvDirections::twenty_six, true, false, false},
-                    Case{3, LpvDirections::twenty_six, true, false, true},
-                    Case{3, LpvDirections::six, false, true, false},
-                    Case{2, LpvDirections::twenty_six, true, true, true}),
-    [](const testing::TestParamInfo<Case>& p) {
-      const Case& c = p.param;
-      return "sh" + std::to_string(c.bands * c.bands) + "_" +
-             (c.directions == LpvDirections::six ? "6" : "26") + (c.occlusion ? "_occluded" : "") +
-             (c.clamp ? "_clamped" : "") + (c.precomputedVisibility ? "_visibility_ahead" : "");
-    });
+INSTANTIATE_TEST_SUITE_P(Cases, PropagateLanes,
+                         testing::Values(Case{2, LpvDirections::six, false, false, false},
+                                         Case{2, LpvDirections::six, true, false, false},
+                                         Case{2, LpvDirections::six, true, true, true},
+                                         Case{3, LpvDirections::twenty_six, true, false, false},
+                                         Case{3, LpvDirections::twenty_six, true, false, true},
+                                         Case{3, LpvDirections::six, false, true, false},
+                                         Case{2, LpvDirections::twenty_six, true, true, true}),
+                         [](const testing::TestParamInfo<Case>& p) {
+                           const Case& c = p.param;
+                           return "sh" + std::to_string(c.bands * c.bands) + "_" +
+                                  (c.directions == LpvDirections::six ? "6" : "26") +
+                                  (c.occlusion ? "_occluded" : "") + (c.clamp ? "_clamped" : "") +
+                                  (c.precomputedVisibility ? "_visibility_ahead" : "");
+                         });
 
 // VOXGI_SIMD=sse2 lowers the level the stages use (ctest runs this binary's Simd tests with and
 // without it); nothing raises it above what the CPU has.
