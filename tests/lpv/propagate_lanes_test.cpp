@@ -13,39 +13,13 @@
 #include "common/lpv/propagate.h"
 #include "cpu/lpv/propagate_lanes_setup.h"
 #include "shaders/shared/lpv/propagate_kernel.h"
+#include "tests/lpv/kernel_volumes.h"
 
 namespace voxgi::test {
 namespace {
 
 using cpu::SimdLevel;
 using cpu::lpv_lanes::Layout;
-
-// The shared kernel's accessor over cell-major volumes (a cell's 3C words together).
-struct ScalarVolumes {
-  const std::vector<shared::PropagationEntry>& entries;
-  const std::vector<float>& previous;
-  const std::vector<glm::vec4>* blocking;  // null: no occlusion
-  std::vector<float>& next;
-  int n, coefficients;
-  size_t cell(glm::ivec3 v) const {
-    return size_t(v.x) + size_t(n) * (size_t(v.y) + size_t(n) * size_t(v.z));
-  }
-  int coefficientCount() const { return coefficients; }
-  static int colourCount() { return 3; }
-  const shared::PropagationEntry& entryAt(int e) const { return entries[size_t(e)]; }
-  float intensityAt(glm::ivec3 c, int word) const {
-    return previous[cell(c) * size_t(3 * coefficients) + size_t(word)];
-  }
-  glm::vec4 blockingAt(glm::ivec3 g) const {
-    if (glm::any(glm::lessThan(g, glm::ivec3(0))) ||
-        glm::any(glm::greaterThanEqual(g, glm::ivec3(n))))
-      return glm::vec4(0.0f);
-    return (*blocking)[cell(g)];
-  }
-  void storeIntensity(glm::ivec3 c, int word, float value) const {
-    next[cell(c) * size_t(3 * coefficients) + size_t(word)] = value;
-  }
-};
 
 struct Case {
   int bands;
@@ -82,8 +56,8 @@ void expectLanesEqualTheKernel(const Case& c, int n, SimdLevel level) {
   std::vector<float> want(previous.size());
   shared::PropagateParams params = setup.params;
   params.occlude = c.occlusion ? 1 : 0;
-  const ScalarVolumes scalar{setup.entries, previous, c.occlusion ? &blocking : nullptr,
-                             want,          n,        C};
+  const KernelVolumes scalar{
+      setup.entries, previous, c.occlusion ? &blocking : nullptr, want, nullptr, params, n, C};
   for (int z = 0; z < n; ++z)
     for (int y = 0; y < n; ++y)
       for (int x = 0; x < n; ++x) shared::propagateCell(scalar, glm::ivec3(x, y, z), params);
