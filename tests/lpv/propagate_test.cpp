@@ -86,8 +86,9 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(StageCase{"lpv", {}}, StageCase{"holpv", {}},
                     StageCase{"lpv", {"propagate.directions=26", "propagate.clamp=on"}},
                     StageCase{"holpv", {"lpv.storage=f16", "propagate.directions=6"}},
-                    StageCase{"lpv", {"propagate.occlusion=off", "propagate.accumulate_injection=off",
-                                      "lpv.storage=f16"}}));
+                    StageCase{"lpv",
+                              {"propagate.occlusion=off", "propagate.accumulate_injection=off",
+                               "lpv.storage=f16"}}));
 
 }  // namespace
 }  // namespace voxgi::test
