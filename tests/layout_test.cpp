@@ -19,6 +19,7 @@
 #include "shaders/shared/svo/build_kernel.h"
 #include "shaders/shared/vct/compose_kernel.h"
 #include "shaders/shared/vct/cone_types.h"
+#include "shaders/shared/vct/diffuse_upsample.h"
 #include "shaders/shared/vct/light_voxels_kernel.h"
 #include "shaders/shared/texture_layout.h"
 #include "shaders/shared/voxelize_layout.h"
@@ -154,6 +155,7 @@ std::vector<Layout> vctLayouts() {
         VOXGI_FIELD(ConeTraceParams, lightAngleSpecular),
         VOXGI_FIELD(ConeTraceParams, ambientOcclusion),
         VOXGI_FIELD(ConeTraceParams, maxSteps),
+        VOXGI_FIELD(ConeTraceParams, diffuseScale),
         VOXGI_FIELD(ConeTraceParams, coneStep),
         VOXGI_FIELD(ConeTraceParams, coneOffset),
         VOXGI_FIELD(ConeTraceParams, minStep),
@@ -182,6 +184,12 @@ std::vector<Layout> vctLayouts() {
        sizeof(ObjectData),
        {VOXGI_FIELD(ObjectData, specularTanHalfAperture), VOXGI_FIELD(ObjectData, shininess)},
        {{"vct/trace_cones", "objects[0]", 0, true}, {"svo/shade", "objects[0]", 0, true}}},
+      {"DiffuseSample",
+       sizeof(DiffuseSample),
+       {VOXGI_FIELD(DiffuseSample, position), VOXGI_FIELD(DiffuseSample, normal),
+        VOXGI_FIELD(DiffuseSample, radiance), VOXGI_FIELD(DiffuseSample, sums)},
+       {{"vct/trace_cones", "samples[0]", 0, true},
+        {"vct/trace_cones_samples", "samples[0]", 0, true}}},
       {"PixelTerms",
        sizeof(PixelTerms),
        {VOXGI_FIELD(PixelTerms, directDiffuse), VOXGI_FIELD(PixelTerms, directSpecular),

@@ -30,10 +30,11 @@ const std::vector<Param>& params() {
                     "how shading samples the leaves' gathered light: trilinearly, or with a cubic "
                     "B-spline over 4^3 leaves (smoother, 8 trilinear samples)"),
     };
-    // Voxel cone tracing's keys that the octree's stages read.
+    // Voxel cone tracing's keys that the octree's stages read; svo's shade traces the diffuse
+    // cones of every pixel (cones.diffuse_scale is trace_cones').
     for (Param& p :
          vct::kernelParams({"emitters", "cones", "shadow", "specular", "light", "voxel_shadow"}))
-      out.push_back(std::move(p));
+      if (p.key != "cones.diffuse_scale") out.push_back(std::move(p));
     return out;
   }();
   return table;

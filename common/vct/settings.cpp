@@ -25,6 +25,10 @@ const std::vector<Param>& params() {
                   "diffuse cone set (docs/stages/vct/trace_cones.md)"),
       choice<vct>("cones.diffuse", &VctSettings::diffuseCones, {"weighted", "first_hit"},
                   "composite each diffuse cone, or take the first surface it hits (Kahl)"),
+      number<vct>("cones.diffuse_scale", &VctSettings::diffuseScale, 1, 4,
+                  "the diffuse cones traced once per SCALE x SCALE block of pixels and upsampled "
+                  "by depth and normal, a pixel no block's sample matches tracing its own (1: "
+                  "every pixel; docs/stages/vct/trace_cones.md)"),
       number<vct>("cones.step", &VctSettings::coneStep, 0.05f, 4.0f,
                   "step along a cone as a fraction of its diameter (beta)"),
       number<vct>("cones.offset", &VctSettings::coneOffset, 0.0f, 8.0f,

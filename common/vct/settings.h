@@ -32,6 +32,7 @@ struct VctSettings {
   // trace_cones
   ConeSet cones = ConeSet::equal7;
   DiffuseCones diffuseCones = DiffuseCones::weighted;
+  int diffuseScale = 1;     // the diffuse cones traced once per scale x scale pixels, upsampled
   float coneStep = 0.5f;    // beta: step = beta * cone diameter
   float coneOffset = 1.0f;  // along the normal before a cone starts, in coneOffsetUnit
   ConeOffsetUnit coneOffsetUnit = ConeOffsetUnit::grid64;

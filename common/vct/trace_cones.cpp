@@ -61,6 +61,7 @@ shared::ConeTraceParams coneTraceParams(const StageContext& ctx, int lightCount,
   p.lightAngleSpecular = s.specularBrdf == SpecularBrdf::light_angle ? 1 : 0;
   p.ambientOcclusion = ctx.plan.on(Effect::ambient_occlusion) ? 1 : 0;
   p.maxSteps = steps;
+  p.diffuseScale = s.diffuseScale;
   p.coneStep = s.coneStep;
   p.coneOffset = offset;
   p.minStep = minStep;

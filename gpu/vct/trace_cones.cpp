@@ -1,5 +1,6 @@
 // GPU trace_cones stage: shaders/vct/trace_cones.comp runs the shared cone tracer per pixel on the
-// uploaded gbuffer, radiance volume and pyramid; the light terms are read back.
+// uploaded gbuffer, radiance volume and pyramid; the light terms are read back. At
+// cones.diffuse_scale > 1, trace_cones_samples.comp first traces each block's diffuse sample.
 #include <vector>
 
 #include "common/vct/trace_cones.h"
@@ -30,22 +31,35 @@ void vct::trace_cones(GlContext& context, const StageContext& ctx, BufferSet& bu
   GlBuffer normals(gl, uploadWords(gl, buffers.at(BufferId::common_gbuffer_pixel_normal)));
   GlBuffer ids(gl, uploadWords(gl, buffers.at(BufferId::common_gbuffer_object_id)));
   GlBuffer terms(gl, createBuffer(gl, pixels * sizeof(shared::PixelTerms), nullptr));
+  // One sample per block (one unused record at scale 1: the binding must hold a buffer).
+  const int scale = params.diffuseScale;
+  const glm::ivec2 blocks = (glm::ivec2(extent) + scale - 1) / scale;
+  const size_t sampleCount = scale > 1 ? size_t(blocks.x) * size_t(blocks.y) : 1;
+  GlBuffer samples(gl, createBuffer(gl, sampleCount * sizeof(shared::DiffuseSample), nullptr));
   GlTexture radiance(gl, uploadVolume(gl, buffers.at(lit.radiance)));
   GlTexture pyramid(gl, mipLevelCount(n) == 0
                             ? createVolume(gl, 4, glm::ivec3(1))
                             : uploadPyramid(gl, buffers.at(lit.pyramid), n, faces));
 
-  Program program(gl, {&shaders::vct_trace_cones_comp});
-  program.set("uResolution", n);
-  program.set("uWidth", extent.x);
-  program.set("uHeight", extent.y);
-  program.use();
   gl.BindTextureUnit(0, radiance.get());
   gl.BindTextureUnit(1, pyramid.get());
-  const GLuint blocks[] = {lightBlock.get(), coneBlock.get(), objectBlock.get(), positions.get(),
-                           normals.get(),    ids.get(),       terms.get()};
-  for (GLuint i = 0; i < 7; ++i) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, blocks[i]);
-  gl.DispatchCompute(GLuint((extent.x + 7) / 8), GLuint((extent.y + 7) / 8), 1);
+  const GLuint bound[] = {lightBlock.get(), coneBlock.get(), objectBlock.get(), positions.get(),
+                          normals.get(),    ids.get(),       terms.get(),       samples.get()};
+  for (GLuint i = 0; i < 8; ++i) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, bound[i]);
+  const auto run = [&](const ShaderSource& shader, glm::ivec2 size) {
+    Program program(gl, {&shader});
+    program.set("uResolution", n);
+    program.set("uWidth", extent.x);
+    program.set("uHeight", extent.y);
+    program.use();
+    gl.DispatchCompute(GLuint((size.x + 7) / 8), GLuint((size.y + 7) / 8), 1);
+  };
+  if (scale > 1) {
+    run(shaders::vct_trace_cones_samples_comp, blocks);
+    gl.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    gl.check("trace_cones: the blocks' diffuse samples");
+  }
+  run(shaders::vct_trace_cones_comp, glm::ivec2(extent));
   gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   gl.check("trace_cones: dispatch");
 

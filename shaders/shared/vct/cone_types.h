@@ -21,7 +21,7 @@ struct ConeTraceParams {
   int lightAngleSpecular;  // 1: specular.brdf=light_angle
   int ambientOcclusion;    // 1: diffuse cones accumulate ambient occlusion
   int maxSteps;            // steps per cone at most, enough to leave the grid
-  int pad0;
+  int diffuseScale;        // trace_cones: diffuse cones once per scale x scale pixels (upsampled)
   int pad1;
   float coneStep;               // beta: a step is beta times the cone's diameter (cones.step)
   float coneOffset;             // a cone starts this far above its surface
@@ -65,6 +65,16 @@ struct PixelLight {
   vec3 indirectDiffuse;    // cone-traced E / pi
   vec3 indirectSpecular;   // cone-traced radiance around the mirror direction
   float ambientOcclusion;  // delta of [Villegas 2017, §4.2], weighted over the diffuse cones
+};
+
+// At cones.diffuse_scale = s > 1, the diffuse light traced once for an s x s block of pixels
+// (shaders/shared/vct/diffuse_upsample.h), std430, 64 bytes.
+struct DiffuseSample {
+  vec4 position;  // xyz: the sample pixel's surface point (voxel-local); w: 1, or 0 for a block
+                  // without a surface (it stands for no pixel)
+  vec4 normal;    // xyz: unit
+  vec4 radiance;  // xyz: the sample's DiffuseSum.radiance
+  vec4 sums;      // x: its DiffuseSum.ambient, y: its DiffuseSum.weights
 };
 
 // What shaders/vct/trace_cones.comp writes per pixel (std430, 80 bytes; PixelLight's vec3s would

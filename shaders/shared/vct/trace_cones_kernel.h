@@ -132,9 +132,9 @@ VOXGI_FN PixelLight finishPixel(DirectLight d, DiffuseSum diffuse, ConeHit specu
 }
 
 // Everything trace_cones computes for the surface point p (voxel-local) with unit normal n facing
-// the camera: direct light with a shadow cone per shadow-casting light, the diffuse cone set, the
-// specular cone along the mirror direction, and ambient occlusion.
-VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
+// the camera but its diffuse cones, whose sum is `diffuse`: direct light with a shadow cone per
+// shadow-casting light, the specular cone along the mirror direction, and ambient occlusion.
+VOLUME_FN PixelLight shadePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object, DiffuseSum diffuse,
                                 ConeTraceParams params) {
   vec3 origin = coneOrigin(p, n, params);
   vec3 mirror = mirrorDirection(p, n, params);
@@ -149,12 +149,23 @@ VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
                               .occlusion;
     d = addLight(d, path, visibility, mirror, object, params);
   }
-  DiffuseSum diffuse = gatherDiffuse(VOLUMES origin, n, diffuseMarchKind(params), params);
   ConeHit specularHit = noConeHit();
   if (object.specularTanHalfAperture > 0.0f)
     specularHit = marchCone(VOLUMES origin, mirror, dot3(n, mirror), object.specularTanHalfAperture,
                             params.maxDistance, kMarchRadiance, params);
   return finishPixel(d, diffuse, specularHit, object, params);
+}
+
+// The diffuse cone set of the surface point p with unit normal n.
+VOLUME_FN DiffuseSum traceDiffuse(VOLUMES_IN vec3 p, vec3 n, ConeTraceParams params) {
+  return gatherDiffuse(VOLUMES coneOrigin(p, n, params), n, diffuseMarchKind(params), params);
+}
+
+// Everything trace_cones computes for p with every cone traced: shadePixel with the pixel's own
+// diffuse cones.
+VOLUME_FN PixelLight tracePixel(VOLUMES_IN vec3 p, vec3 n, ObjectData object,
+                                ConeTraceParams params) {
+  return shadePixel(VOLUMES p, n, object, traceDiffuse(VOLUMES p, n, params), params);
 }
 
 VOXGI_NAMESPACE_END
