@@ -23,6 +23,12 @@ SimdLevel simdLevel() {
   return level;
 }
 
+std::vector<SimdLevel> runnableSimdLevels() {
+  std::vector<SimdLevel> levels;
+  for (int l = 0; l <= int(detectedSimdLevel()); ++l) levels.push_back(SimdLevel(l));
+  return levels;
+}
+
 std::string_view simdLevelName(SimdLevel level) {
   constexpr std::string_view kNames[] = {"sse2", "avx2", "avx512"};  // SimdLevel's order
   return kNames[int(level)];

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string_view>
+#include <vector>
 
 namespace voxgi::cpu {
 
@@ -17,5 +18,7 @@ SimdLevel detectedSimdLevel();
 // What the lanes use: detectedSimdLevel(), lowered by VOXGI_SIMD (read once).
 SimdLevel simdLevel();
 std::string_view simdLevelName(SimdLevel level);
+// Every level this CPU runs, SSE2 first (tests compare them).
+std::vector<SimdLevel> runnableSimdLevels();
 
 }  // namespace voxgi::cpu

@@ -1,5 +1,6 @@
-// The CPU's fast path for shared::marchCone: a stream of cones marched four at a time, one per
-// SIMD lane (xsimd over SSE2). A lane whose cone ends takes the next cone of the stream, so lanes
+// The CPU's fast path for shared::marchCone: a stream of cones marched several at a time, one per
+// SIMD lane (xsimd: two batches of 4 lanes on SSE2, 8 on AVX2, 16 on AVX-512, the widest this CPU
+// runs, cpu/simd.h). A lane whose cone ends takes the next cone of the stream, so lanes
 // stay busy while neighbouring cones end at different steps. The per-step arithmetic (position,
 // width, level, opacity correction, compositing) runs in the lanes; each lane's sample is filtered
 // on its own, a voxel's four words in one register. It computes exactly what marchCone computes:
@@ -9,6 +10,7 @@
 
 #include <span>
 
+#include "cpu/simd.h"
 #include "cpu/vct/cone_volumes.h"
 
 namespace voxgi::cpu {
@@ -22,8 +24,22 @@ struct ConeJob {
   float maxDistance;    // voxels
 };
 
-// hits[i] = shared::marchCone(volumes, jobs[i]..., kind, params), bit for bit.
+// hits[i] = shared::marchCone(volumes, jobs[i]..., kind, params), bit for bit, on the lanes of
+// simdLevel().
 void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int kind,
                 const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
+// The same on the lanes of `level`, which this CPU must run (tests compare the levels).
+void marchCones(SimdLevel level, const ConeVolumes& volumes, std::span<const ConeJob> jobs,
+                int kind, const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
+
+// Each instruction set's march (cone_lanes_impl.h), for the dispatch above.
+namespace cone_lanes {
+void marchConesSse2(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int kind,
+                    const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
+void marchConesAvx2(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int kind,
+                    const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
+void marchConesAvx512(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int kind,
+                      const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
+}  // namespace cone_lanes
 
 }  // namespace voxgi::cpu

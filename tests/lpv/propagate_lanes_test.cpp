@@ -27,14 +27,6 @@ struct Case {
   bool occlusion, clamp, precomputedVisibility;
 };
 
-std::vector<SimdLevel> levelsOfThisCpu() {
-  std::vector<SimdLevel> levels{SimdLevel::sse2};
-  const SimdLevel best = cpu::detectedSimdLevel();
-  if (best >= SimdLevel::avx2) levels.push_back(SimdLevel::avx2);
-  if (best >= SimdLevel::avx512) levels.push_back(SimdLevel::avx512);
-  return levels;
-}
-
 // One step on an n^3 grid of random intensities (a sixth of them exact zeros, signed) and
 // blocking coefficients (some outside [0, 1], so that the clamp bites), both ways.
 void expectLanesEqualTheKernel(const Case& c, int n, SimdLevel level) {
@@ -120,7 +112,7 @@ void PrintTo(const Case& c, std::ostream* os) {
 class PropagateLanes : public testing::TestWithParam<Case> {};
 
 TEST_P(PropagateLanes, EqualTheKernelBitForBitOnEveryInstructionSet) {
-  for (const SimdLevel level : levelsOfThisCpu())
+  for (const SimdLevel level : cpu::runnableSimdLevels())
     for (const int n : {1, 5, 16, 19}) {
       SCOPED_TRACE(std::string(cpu::simdLevelName(level)) + " at " + std::to_string(n) + "^3");
       expectLanesEqualTheKernel(GetParam(), n, level);

@@ -1,6 +1,7 @@
 // The lanes (cpu/vct/cone_lanes.h) compute exactly what the shared marchCone computes: bit for
-// bit, on random cones through a lit Cornell box, for every kind of march and the settings that
-// change the arithmetic (step factor, clearance, pyramid mode, ambient occlusion, step limit).
+// bit, on every instruction set this CPU runs, on random cones through a lit Cornell box, for
+// every kind of march and the settings that change the arithmetic (step factor, clearance,
+// pyramid mode, ambient occlusion, step limit).
 #include <bit>
 #include <random>
 
@@ -85,24 +86,27 @@ TEST(ConeLanes, BitIdenticalToTheSharedMarch) {
     const std::vector<cpu::ConeJob> jobs = randomCones(scene.grid.resolution, 3000, 7);
     for (const int kind : {shared::kMarchRadiance, shared::kMarchFirstHit, shared::kMarchShadow,
                            shared::kMarchShadowKahl}) {
-      std::vector<shared::ConeHit> hits(jobs.size());
-      cpu::marchCones(volumes, jobs, kind, params, hits);
+      std::vector<shared::ConeHit> scalar;
       size_t seen = 0;
-      for (size_t i = 0; i < jobs.size(); ++i) {
-        const cpu::ConeJob& j = jobs[i];
-        const shared::ConeHit scalar = shared::marchCone(volumes, j.origin, j.direction, j.rise,
-                                                         j.tanHalf, j.maxDistance, kind, params);
-        expectSameBits(hits[i], scalar, i);
-        seen += scalar.occlusion > 0.0f;
-        if (::testing::Test::HasFailure()) return;
+      for (const cpu::ConeJob& j : jobs) {
+        scalar.push_back(shared::marchCone(volumes, j.origin, j.direction, j.rise, j.tanHalf,
+                                           j.maxDistance, kind, params));
+        seen += scalar.back().occlusion > 0.0f;
       }
       // The cones meet the walls: the comparison is not between empty marches.
       EXPECT_GT(seen, jobs.size() / 4) << "kind " << kind;
+      for (const cpu::SimdLevel level : cpu::runnableSimdLevels()) {
+        SCOPED_TRACE(std::string(cpu::simdLevelName(level)) + ", kind " + std::to_string(kind));
+        std::vector<shared::ConeHit> hits(jobs.size());
+        cpu::marchCones(level, volumes, jobs, kind, params, hits);
+        for (size_t i = 0; i < jobs.size(); ++i) expectSameBits(hits[i], scalar[i], i);
+        if (::testing::Test::HasFailure()) return;
+      }
     }
   }
 }
 
-// A stream shorter than the lanes and an empty one.
+// A stream shorter than the lanes and an empty one, on every instruction set.
 TEST(ConeLanes, ShortStreams) {
   Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
   scene.grid.resolution = 16;
@@ -114,16 +118,19 @@ TEST(ConeLanes, ShortStreams) {
   const RadianceBuffers lit = finalRadiance(ctx);
   const cpu::ConeVolumes volumes(buffers.at(lit.radiance), buffers.at(lit.pyramid),
                                  settings.vct.mip, 16, setup.lights, setup.cones);
-  cpu::marchCones(volumes, {}, shared::kMarchRadiance, setup.params, {});
   const std::vector<cpu::ConeJob> jobs = randomCones(16, 3, 11);
-  std::vector<shared::ConeHit> hits(jobs.size());
-  cpu::marchCones(volumes, jobs, shared::kMarchRadiance, setup.params, hits);
-  for (size_t i = 0; i < jobs.size(); ++i) {
-    const cpu::ConeJob& j = jobs[i];
-    expectSameBits(hits[i],
-                   shared::marchCone(volumes, j.origin, j.direction, j.rise, j.tanHalf,
-                                     j.maxDistance, shared::kMarchRadiance, setup.params),
-                   i);
+  for (const cpu::SimdLevel level : cpu::runnableSimdLevels()) {
+    SCOPED_TRACE(cpu::simdLevelName(level));
+    cpu::marchCones(level, volumes, {}, shared::kMarchRadiance, setup.params, {});
+    std::vector<shared::ConeHit> hits(jobs.size());
+    cpu::marchCones(level, volumes, jobs, shared::kMarchRadiance, setup.params, hits);
+    for (size_t i = 0; i < jobs.size(); ++i) {
+      const cpu::ConeJob& j = jobs[i];
+      expectSameBits(hits[i],
+                     shared::marchCone(volumes, j.origin, j.direction, j.rise, j.tanHalf,
+                                       j.maxDistance, shared::kMarchRadiance, setup.params),
+                     i);
+    }
   }
 }
 
