@@ -18,13 +18,14 @@ class CellOccupancy {
 
   // True when every voxel of the cell whose lowest corner is `i` (i in [-1, s-1]^3, voxels
   // outside the volume read as 0) is +0 in every word.
-  bool empty(glm::ivec3 i) const { return empty(i.x, i.y, i.z); }
-  // Always inlined: the cone lanes built for AVX2 call it, and an out-of-line copy compiled there
-  // could be the one the whole program links (tests/simd_symbols_test.cmake).
-  [[gnu::always_inline]] bool empty(int x, int y, int z) const {
-    const size_t c = size_t(x + 1) + side_ * (size_t(y + 1) + side_ * size_t(z + 1));
-    return (bits_.data()[c >> 6] >> (c & 63) & 1u) == 0u;
+  bool empty(glm::ivec3 i) const {
+    const size_t c = size_t(i.x + 1) + side_ * (size_t(i.y + 1) + side_ * size_t(i.z + 1));
+    return (bits_[c >> 6] >> (c & 63) & 1u) == 0u;
   }
+  // The bits as empty() reads them (cell c's bit: c >> 6, c & 63), and the cells a side, for the
+  // cone lanes, which read them without calling into this class (cpu/vct/cone_lanes.h).
+  const uint64_t* bits() const { return bits_.data(); }
+  size_t side() const { return side_; }
 
  private:
   size_t side_ = 0;  // s + 1 cells a side

@@ -32,13 +32,22 @@ void marchCones(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int k
 void marchCones(SimdLevel level, const ConeVolumes& volumes, std::span<const ConeJob> jobs,
                 int kind, const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
 
-// Each instruction set's march (cone_lanes_impl.h), for the dispatch above.
+// Each instruction set's march (cone_lanes_impl.h), for the dispatch above. They read the volumes
+// as plain pointers, so that the code built for AVX2 or AVX-512 calls no inline function another
+// unit shares (an out-of-line copy of one could be the one the whole program links).
 namespace cone_lanes {
-void marchConesSse2(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int kind,
+struct Volumes {
+  const uint32_t* levels[16];    // ConeVolumes::levels
+  const uint64_t* occupied[16];  // each level's CellOccupancy::bits()
+  size_t occupiedSide[16];       // and CellOccupancy::side()
+  int faces;
+  int n;
+};
+void marchConesSse2(const Volumes& volumes, std::span<const ConeJob> jobs, int kind,
                     const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
-void marchConesAvx2(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int kind,
+void marchConesAvx2(const Volumes& volumes, std::span<const ConeJob> jobs, int kind,
                     const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
-void marchConesAvx512(const ConeVolumes& volumes, std::span<const ConeJob> jobs, int kind,
+void marchConesAvx512(const Volumes& volumes, std::span<const ConeJob> jobs, int kind,
                       const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
 }  // namespace cone_lanes
 

@@ -3,8 +3,12 @@
 // mask is a mask register there: its bits are the lanes'.
 // GCC 12's avx512fintrin.h passes a deliberately undefined register (_mm512_undefined_*) as the
 // unused source of the unmasked conversions and shifts xsimd calls, which -Wmaybe-uninitialized
-// reports in the header; no value of it reaches a lane.
+// (and, in the sanitizer builds, -Wuninitialized) reports in the header; no value of it reaches a
+// lane.
+#if defined(__GNUC__) && !defined(__clang__)  // clang has no -Wmaybe-uninitialized, nor this case
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
+#endif
 #define VOXGI_CONE_LANES_ARCH xsimd::avx512f
 #define VOXGI_CONE_LANES_SUFFIX Avx512
 #define VOXGI_CONE_LANES_BITS(mask) __mmask16(mask)

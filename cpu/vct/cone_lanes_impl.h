@@ -137,7 +137,7 @@ struct CellTaps {
   const uint32_t* voxel[8];
 };
 
-CellTaps cellTaps(const ConeVolumes& volumes, int level, const Cell& c, size_t stride) {
+CellTaps cellTaps(const Volumes& volumes, int level, const Cell& c, size_t stride) {
   const int size = volumes.n >> level;
   const size_t s = size_t(size);
   const uint32_t* words = volumes.levels[level];
@@ -164,10 +164,18 @@ Texel tapAt(const uint32_t* voxel, size_t face) {
   return lerp(y0, y1, f[2]);
 }
 
+// CellOccupancy::empty, read from its bits.
+bool cellEmpty(const Volumes& volumes, int level, const Cell& c) {
+  const size_t side = volumes.occupiedSide[level];
+  const size_t i =
+      size_t(c.base[0] + 1) + side * (size_t(c.base[1] + 1) + side * size_t(c.base[2] + 1));
+  return (volumes.occupied[level][i >> 6] >> (i & 63) & 1u) == 0u;
+}
+
 // shared::sampleLevel over the trilinear cell c of `level`.
-Texel sampleLevel(const ConeVolumes& volumes, int level, const Cell& c, const LaneCone& cone,
+Texel sampleLevel(const Volumes& volumes, int level, const Cell& c, const LaneCone& cone,
                   const shared::ConeTraceParams& params) {
-  if (volumes.occupancy[level].empty(c.base[0], c.base[1], c.base[2])) return texel(0.0f);
+  if (cellEmpty(volumes, level, c)) return texel(0.0f);
   const bool directional = level > 0 && params.directional != 0;
   const CellTaps taps = cellTaps(volumes, level, c, directional ? 4 * size_t(volumes.faces) : 4);
   if (!directional) return blendCell(taps, 0, c.f);
@@ -230,7 +238,7 @@ float component(const glm::vec3& v, int k) {
 #define VOXGI_CONE_LANES_ENTRY(suffix) marchCones##suffix
 #define VOXGI_CONE_LANES_NAME(suffix) VOXGI_CONE_LANES_ENTRY(suffix)
 
-void VOXGI_CONE_LANES_NAME(VOXGI_CONE_LANES_SUFFIX)(const ConeVolumes& volumes,
+void VOXGI_CONE_LANES_NAME(VOXGI_CONE_LANES_SUFFIX)(const Volumes& volumes,
                                                     std::span<const ConeJob> jobs, int kind,
                                                     const shared::ConeTraceParams& params,
                                                     std::span<shared::ConeHit> hits) {

@@ -37,7 +37,8 @@ void main() {
                           surfaceVertex(first + 2));
   vec3 albedo = surfaceAlbedo(t, materials[t.material], b.xy,
                               surfaceFootprint(t, rsmTexelSide(v, b.z, resolution)));
-  outFlux = vec4(rsmFlux(lights[v.light], vPosition, albedo, footprint, voxelSize), 0.0f);
+  vec3 p = rsmHitPoint(origin, dir, b.z);
+  outFlux = vec4(rsmFlux(lights[v.light], p, albedo, footprint, voxelSize), 0.0f);
   outNormal = vec4(facingNormal(t.normal.xyz, dir), 0.0f);
   outDepth = vec4(depth, 0.0f, 0.0f, 0.0f);
   outPrimitiveId = uint(gl_PrimitiveID) + 1u;

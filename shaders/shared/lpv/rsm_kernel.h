@@ -48,6 +48,14 @@ VOXGI_FN float rsmFootprint(RsmView v, vec3 dir, float depth, int resolution, fl
   return side * side;
 }
 
+// Where a texel's ray meets its surface, s along it (rayTriangleHit's z): the point both backends
+// compute the texel's flux at. Neither Embree's distance nor the rasterizer's interpolation:
+// those round differently, and an emitter's irradiance turns on within an ULP of its plane.
+VOXGI_FN vec3 rsmHitPoint(vec3 origin, vec3 dir, float s) {
+  precise vec3 p = origin + dir * s;
+  return p;
+}
+
 // The side of the texel's cross-section at distance s along its ray (the depth, its direction
 // having unit component along the view axis), in cells: the scale of its texture footprint
 // (shared/surface_hit.h).
