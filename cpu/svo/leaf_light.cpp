@@ -39,15 +39,15 @@ struct Children {
 
 }  // namespace
 
+uint32_t SvoVolumes::tileAt(int level, glm::uvec3 tile) const {
+  if (level == memoLevel && tile == memoTile) return memoIndex;
+  const uint32_t t = shared::svoFindTile(*this, level, tile);
+  memoLevel = level, memoTile = tile, memoIndex = t;
+  return t;
+}
+
 int64_t SvoVolumes::slot(int level, glm::ivec3 v) const {
-  const glm::uvec3 tile(v >> 1);
-  uint32_t t;
-  if (level == memoLevel && tile == memoTile) {
-    t = memoIndex;
-  } else {
-    t = shared::svoFindTile(*this, level, tile);
-    memoLevel = level, memoTile = tile, memoIndex = t;
-  }
+  const uint32_t t = tileAt(level, glm::uvec3(v >> 1));
   if (t == kSvoNull) return -1;
   const size_t first = level == octree.depth ? 0 : octree.levelStart[size_t(level)];
   return int64_t((t - first) * 8 + shared::localId(glm::uvec3(v)));
@@ -87,6 +87,45 @@ glm::vec4 SvoVolumes::pyramidAt(int level, int face, glm::ivec3 v) const {
   if (s < 0) return glm::vec4(0.0f);
   if (level == 0) return (*radiance)[size_t(s)];
   return nodes->levels[size_t(tree)][size_t(s) * shared::kFaces + size_t(face)];
+}
+
+bool SvoVolumes::filterBrickCell(int level, int face, const shared::TrilinearCell& c,
+                                 glm::vec4& out) const {
+  if (bricks == nullptr) return false;
+  const int tree = octree.depth - level;
+  const glm::ivec3 t = glm::max(c.base, glm::ivec3(0)) >> 1;
+  const uint32_t tile = tileAt(tree, glm::uvec3(t));
+  if (tile == kSvoNull) {
+    out = glm::vec4(0.0f);  // eight zero taps blend to +0
+    return true;
+  }
+  const bool leafLevel = tree == octree.depth;
+  const size_t first = leafLevel ? 0 : octree.levelStart[size_t(tree)];
+  const size_t faces = leafLevel ? 1 : size_t(shared::kFaces);
+  const size_t f = leafLevel ? 0 : size_t(face);
+  const glm::vec4* brick =
+      bricks->levels[size_t(tree)].data() + (tile - first) * shared::kBrickTexels * faces;
+  const glm::ivec3 o = c.base - t * 2;
+  const auto texel = [&](int dx, int dy, int dz) {
+    const glm::ivec3 q = o + glm::ivec3(dx, dy, dz);
+    if (q.x < 0 || q.y < 0 || q.z < 0) return glm::vec4(0.0f);  // left of the grid
+    return brick[shared::brickTexel(q) * faces + f];
+  };
+  out = shared::blendCell(texel(0, 0, 0), texel(1, 0, 0), texel(0, 1, 0), texel(1, 1, 0),
+                          texel(0, 0, 1), texel(1, 0, 1), texel(0, 1, 1), texel(1, 1, 1), c.f);
+  return true;
+}
+
+TreeBricks treeBricks(const Octree& octree, const LeafRadiance& radiance, const NodeLevels& mips) {
+  TreeBricks b;
+  b.levels.resize(size_t(octree.depth) + 1);
+  using Values = std::vector<glm::vec4>;
+  b.levels[size_t(octree.depth)] =
+      completeBricks<Values>(octree, octree.depth, std::span<const glm::vec4>(radiance), 1);
+  for (int level = 1; level < octree.depth; ++level)
+    b.levels[size_t(level)] = completeBricks<Values>(
+        octree, level, std::span<const glm::vec4>(mips.levels[size_t(level)]), shared::kFaces);
+  return b;
 }
 
 LeafRadiance injectLeaves(const Octree& octree, const Leaves& leaves,
@@ -138,12 +177,14 @@ LeafRadiance bounceOnce(const Octree& octree, const Leaves& leaves, const LeafRa
                         const shared::ConeTraceParams& params, FirstStep first,
                         FrameOutputs* outputs) {
   NodeLevels mips = mipTree(octree, leaves, source, first);
+  const TreeBricks bricks = treeBricks(octree, source, mips);
   LeafRadiance next(source.size(), glm::vec4(0.0f));
   const size_t kept = outputs != nullptr ? source.size() : 0;
   LeafRadiance gathered(kept, glm::vec4(0.0f));
   std::vector<glm::vec3> straight(kept, glm::vec3(0.0f));
   forEachRealLeaf(octree, [&](size_t slot, glm::ivec3 v) {
-    const SvoVolumes volumes{octree, leaves, &source, &mips, &direct, nullptr, &cones};
+    SvoVolumes volumes{octree, leaves, &source, &mips, &direct, nullptr, &cones};
+    volumes.bricks = &bricks;
     const glm::vec3 g = shared::gatherVoxel(volumes, v, params);
     next[slot] = shared::addReflected(direct[slot], volumes.albedoAt(v), g);
     if (outputs == nullptr) return;

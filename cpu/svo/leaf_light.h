@@ -22,6 +22,14 @@ using voxgi::svo::LeafRadiance;
 using voxgi::svo::Leaves;
 using voxgi::svo::NodeLevels;
 
+// Every level's values as bricks (completeBricks) for the gather's trilinear cells, indexed by
+// tree level: the leaves' radiance (one RGBA a texel) and each node level's six faces (six a
+// texel).
+struct TreeBricks {
+  std::vector<std::vector<glm::vec4>> levels;
+};
+TreeBricks treeBricks(const Octree& octree, const LeafRadiance& radiance, const NodeLevels& mips);
+
 // What the shared kernels read: the leaves (pyramid level 0) and node levels (pyramid level m is
 // tree level depth - m), found by walking the tree (svo_layout.h) with the last tile remembered.
 // One per task: the memo is not shared.
@@ -33,12 +41,15 @@ struct SvoVolumes {
   const LeafRadiance* direct = nullptr;    // the bounce's directAt
   const std::vector<shared::LightData>* lights = nullptr;
   const std::vector<shared::ConeData>* cones = nullptr;
-  const Words* leafBricks = nullptr;  // svoBrickAt's leaf bricks, 4 floats a texel
+  const Words* leafBricks = nullptr;   // svoBrickAt's leaf bricks, 4 floats a texel
+  const TreeBricks* bricks = nullptr;  // filterBrickCell's; without them the kernel reads taps
   mutable int memoLevel = -1;
   mutable glm::uvec3 memoTile{0};
   mutable uint32_t memoIndex = shared::kSvoNull;
 
   uint svoNodeWord(uint i) const { return octree.nodes[i]; }
+  // The tile of tree `level` at tile coordinate `tile` (svoFindTile), remembered for the next call.
+  uint32_t tileAt(int level, glm::uvec3 tile) const;
   // The value index (tile slot x 8 + local id) of voxel v of tree level `level`; -1 if its tile
   // does not exist.
   int64_t slot(int level, glm::ivec3 v) const;
@@ -49,6 +60,11 @@ struct SvoVolumes {
   glm::vec4 directAt(glm::ivec3 v) const;
   glm::vec4 pyramidAt(int level, int face, glm::ivec3 v) const;
   bool cellEmpty(int, glm::ivec3) const { return false; }
+  // shared::filterCell of pyramid `level` from the cell's tile brick when `bricks` are set: one
+  // tile lookup and eight texels, the same values in the same order as the kernel's eight
+  // pyramidAt taps ([Salm 2015, §4.4]'s sampling; the border tiles make a missing tile's cell 0).
+  // False without bricks.
+  bool filterBrickCell(int level, int face, const shared::TrilinearCell& c, glm::vec4& out) const;
   shared::LightData lightAt(int i) const { return (*lights)[size_t(i)]; }
   shared::ConeData coneAt(int i) const { return (*cones)[size_t(i)]; }
   glm::vec4 svoBrickAt(int, int, uint tile, uint texel) const {

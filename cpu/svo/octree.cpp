@@ -434,7 +434,9 @@ Words accumulateLeaves(const Octree& octree, std::span<const shared::SvoSample> 
   return sums;
 }
 
-Words completeBricks(const Octree& octree, int level, const Words& interior, int components) {
+template <class Out>
+Out completeBricks(const Octree& octree, int level,
+                   std::span<const typename Out::value_type> interior, int components) {
   using namespace shared;
   const bool leaves = level == octree.depth;
   const Words& tiles = leaves ? octree.leafTiles : octree.tiles;
@@ -443,7 +445,7 @@ Words completeBricks(const Octree& octree, int level, const Words& interior, int
       leaves ? octree.leafTileCount()
              : octree.levelStart[size_t(level) + 1] - octree.levelStart[size_t(level)];
   const auto c = size_t(components);
-  Words bricks(count * kBrickTexels * c);
+  Out bricks(count * kBrickTexels * c);  // value-initialized: texels without a source stay 0
   parallelFor(size_t(0), count, [&](size_t t) {
     const uint32_t parent = tiles[(first + t) * kTileWords + kTileParent];
     for (int k = 0; k < 3; ++k)
@@ -472,5 +474,10 @@ Words completeBricks(const Octree& octree, int level, const Words& interior, int
   });
   return bricks;
 }
+
+template Words completeBricks<Words>(const Octree&, int, std::span<const uint32_t>, int);
+template std::vector<glm::vec4> completeBricks<std::vector<glm::vec4>>(const Octree&, int,
+                                                                       std::span<const glm::vec4>,
+                                                                       int);
 
 }  // namespace voxgi::cpu::svo

@@ -1,7 +1,7 @@
 // CPU shade stage: per pixel, trace_cones' direct light with a shadow cone per light and the
-// specular cone, read through the tree (no diffuse cones: the leaves hold the diffuse light), plus
-// the leaves' gathered light through their bricks (shaders/shared/svo/shade_kernel.h), composed as
-// the dense technique composes (compose_kernel.h). The twin of shaders/svo/shade.comp.
+// specular cone, read through the tree's bricks (no diffuse cones: the leaves hold the diffuse
+// light), plus the leaves' gathered light through their bricks (shaders/shared/svo/shade_kernel.h),
+// composed as the dense technique composes (compose_kernel.h). The twin of shaders/svo/shade.comp.
 #include "common/gbuffer.h"
 #include "common/parallel.h"
 #include "common/svo/stage_inputs.h"
@@ -23,6 +23,8 @@ void svo::shade(const StageContext& ctx, BufferSet& buffers) {
   const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_radiance));
   const NodeLevels mips = nodeLevels(buffers.at(BufferId::svo_mip_node_faces), o.tiles, depth);
   const Words& bricks = buffers.at(BufferId::svo_mip_gathered_bricks).words;
+  // The cones' trilinear cells from bricks (cpu/svo/leaf_light.h), one tile lookup each.
+  const TreeBricks cells = treeBricks(o, radiance, mips);
   const ConeTraceSetup trace = treeConeTrace(ctx, depth);
   const bool tricubic = ctx.settings.svo.shadeFilter == SvoShadeFilter::tricubic;
   const glm::vec3 background = ctx.scene.background;
@@ -51,6 +53,7 @@ void svo::shade(const StageContext& ctx, BufferSet& buffers) {
     }
     SvoVolumes volumes{o, leaves, &radiance, &mips, nullptr, &trace.lights, nullptr};
     volumes.leafBricks = &bricks;
+    volumes.bricks = &cells;
     const glm::vec3 p = position.vec3At(i);
     shared::PixelLight l =
         shared::tracePixel(volumes, p, normal.vec3At(i), trace.objects[id], trace.params);

@@ -41,6 +41,14 @@ VOLUME_FN vec4 pyramidVoxel(VOLUMES_IN int level, int face, ivec3 v, int size, b
 
 // Trilinear filter of one face of `level` over cell c, zero outside the grid.
 VOLUME_FN vec4 filterCell(VOLUMES_IN int level, int face, TrilinearCell c, int size) {
+#ifdef __cplusplus
+  // A CPU accessor that stores whole cells (the octree's bricks, cpu/svo/leaf_light.h) blends the
+  // same eight values in the same order itself, one lookup instead of eight.
+  if constexpr (requires(vec4 & cell) { volumes.filterBrickCell(level, face, c, cell); }) {
+    vec4 fromBricks;
+    if (volumes.filterBrickCell(level, face, c, fromBricks)) return fromBricks;
+  }
+#endif
   ivec3 i = c.base;
   vec3 f = c.f;
   bool inside = c.inside;
