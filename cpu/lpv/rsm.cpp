@@ -37,9 +37,9 @@ void lpv::rsm(const StageContext& ctx, BufferSet& buffers) {
       const RayScene::Hit hit = rays.intersect(origin, dir);
       if (!hit.found) continue;
       const SurfaceTriangle& s = g.triangles[hit.primitive];
-      const float footprint = shared::rsmFootprint(v, dir, hit.t, r, voxelSize);
       const glm::vec3* t = &g.vertices[3 * size_t(hit.primitive)];
       const glm::vec3 b = shared::rayTriangleHit(origin, dir, t[0], t[1], t[2]);
+      const float footprint = shared::rsmFootprint(v, dir, b.z, r, voxelSize);
       const glm::vec3 p = shared::rsmHitPoint(origin, dir, b.z);
       const glm::vec3 albedo =
           shared::surfaceAlbedo(textures, s, materials[s.material], {b.x, b.y},

@@ -31,10 +31,10 @@ void main() {
   vec3 origin, dir;
   rsmTexelRay(v, ivec2(gl_FragCoord.xy), resolution, origin, dir);
   precise float depth = dot3(vPosition - vec3(v.origin), vec3(v.forward));
-  float footprint = rsmFootprint(v, dir, depth, resolution, voxelSize);
   int first = 3 * gl_PrimitiveID;
   vec3 b = rayTriangleHit(origin, dir, surfaceVertex(first), surfaceVertex(first + 1),
                           surfaceVertex(first + 2));
+  float footprint = rsmFootprint(v, dir, b.z, resolution, voxelSize);
   vec3 albedo = surfaceAlbedo(t, materials[t.material], b.xy,
                               surfaceFootprint(t, rsmTexelSide(v, b.z, resolution)));
   vec3 p = rsmHitPoint(origin, dir, b.z);
