@@ -115,6 +115,26 @@ const char* scalarTypeName(ScalarType t) {
   return "?";
 }
 
+const char* bufferShapeName(BufferShape shape) {
+  switch (shape) {
+    case BufferShape::volume:
+      return "volume";
+    case BufferShape::mips:
+      return "mips";
+    case BufferShape::mips6:
+      return "mips6";
+    case BufferShape::image:
+      return "image";
+    case BufferShape::series:
+      return "series";
+    case BufferShape::maps:
+      return "maps";
+    case BufferShape::sparse:
+      return "sparse";
+  }
+  return "?";
+}
+
 std::string StageSpec::qualifiedName() const {
   return shared() ? std::string(name) : std::string(owner) + "/" + std::string(name);
 }

@@ -23,6 +23,7 @@ const char* scalarTypeName(ScalarType t);
 // below another (R x R*count); sparse: as many elements as the stage allocates (an octree's pools,
 // common/svo/stages.inc), one row, its memory checked by the stage from the counts it finds.
 enum class BufferShape { volume, mips, mips6, image, series, maps, sparse };
+const char* bufferShapeName(BufferShape shape);  // as common/stages.inc spells it
 
 // An effect of the plan (common/effect_plan.h) a buffer may depend on; `always` for none.
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)

@@ -1,4 +1,5 @@
 #include "tools/compare.h"
+#include "tools/metrics_json.h"
 
 #include <algorithm>
 #include <cmath>
@@ -25,11 +26,6 @@ namespace {
 
 bool finite(glm::vec3 p) {
   return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
-// JSON has no NaN: an undefined metric (a black reference, a term black in it) is null.
-nlohmann::json numberOrNull(double v) {
-  return std::isnan(v) ? nlohmann::json() : nlohmann::json(v);
 }
 
 }  // namespace
@@ -61,15 +57,6 @@ std::vector<uint8_t> withoutEmitters(bool skip, const std::string& referencePath
   if (std::find(mask.begin(), mask.end(), 1) == mask.end())
     throw InputError(path, "", "--skip-emitters leaves no pixel: the reference sees only emission");
   return mask;
-}
-
-nlohmann::json metricsJson(const reference::ImageMetrics& m) {
-  return {
-      {"rmse", numberOrNull(m.rmse)},
-      {"rel_mse", numberOrNull(m.relMse)},
-      {"mare", numberOrNull(m.mare)},
-      {"ssim", numberOrNull(m.ssim)},
-      {"energy", {numberOrNull(m.energy.r), numberOrNull(m.energy.g), numberOrNull(m.energy.b)}}};
 }
 
 void addCompareOptions(CLI::App& cmd, CompareOptions& o) {

@@ -27,9 +27,6 @@ struct CompareOptions {
 // --units mean|absolute (reference::kMetricUnitsNames) and --skip-emitters, for compare and study.
 void addUnitsOptions(CLI::App& cmd, reference::MetricUnits& units, bool& skipEmitters);
 
-// The metrics as JSON; NaN (undefined) as null.
-nlohmann::json metricsJson(const reference::ImageMetrics& m);
-
 void addCompareOptions(CLI::App& cmd, CompareOptions& options);
 int runCompare(const CompareOptions& options);
 // --frames: each frame's metrics beside black's, and the flicker of every frame after the first

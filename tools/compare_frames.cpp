@@ -12,6 +12,7 @@
 #include "common/io/output_file.h"
 #include "tools/compare.h"
 #include "tools/frames.h"
+#include "tools/metrics_json.h"
 #include "validation/reference/path_trace.h"
 #include "validation/reference/temporal_metrics.h"
 

@@ -27,9 +27,10 @@ double ulpDistance(float a, float b) {
   return std::abs(static_cast<double>(ordered(a) - ordered(b)));
 }
 
-// The tie classifier of a stage's comparisons (one rule for all its buffers).
-TieClassifier classifierFor(const StageSpec& stage, const StageContext& ctx, const BufferSet& cpu,
-                            const BufferSet& gpu) {
+}  // namespace
+
+TieClassifier stageTies(const StageSpec& stage, const StageContext& ctx, const BufferSet& cpu,
+                        const BufferSet& gpu) {
   switch (comparisonFor(stageBuffers(stage).front()->id).ties) {
     case Ties::none:
       return {};
@@ -42,6 +43,8 @@ TieClassifier classifierFor(const StageSpec& stage, const StageContext& ctx, con
   }
   return {};
 }
+
+namespace {
 
 // The relative tolerance of element e of a buffer whose comparison widens with f16 steps, under a
 // plan that stores half floats: a rounding that falls the other way on the two backends moves a
@@ -269,7 +272,7 @@ std::vector<StageReport> diffStages(const StageContext& ctx, StageBackend& cpu, 
       start = std::chrono::steady_clock::now();
       const StageOutputs gpuOutputs = runStage(gpu, *stage, gpuCtx, gpuOut);
       const double gpuSeconds = seconds(start);
-      const TieClassifier classify = classifierFor(*stage, ctx, cpuOut, gpuOut);
+      const TieClassifier classify = stageTies(*stage, ctx, cpuOut, gpuOut);
       StageReport report = compareStage(*stage, ctx.plan, cpuOut, gpuOut, classify);
       reportForeignWrites(report, *stage, cpuOutputs, cpu.name());
       reportForeignWrites(report, *stage, gpuOutputs, gpu.name());

@@ -53,6 +53,11 @@ using TieClassifier = std::function<bool(size_t element)>;
 StageReport compareStage(const StageSpec& stage, const EffectPlan& plan, const BufferSet& cpu,
                          const BufferSet& gpu, const TieClassifier& classify);
 
+// The tie classifier of `stage`'s comparisons (one rule for all its buffers; empty for none).
+// The buffers must outlive it.
+TieClassifier stageTies(const StageSpec& stage, const StageContext& ctx, const BufferSet& cpu,
+                        const BufferSet& gpu);
+
 // Runs the planned stages of ctx's technique up to the last of `stages` on the CPU, and each of
 // `stages` on both backends from the CPU's outputs of the stages before it, and compares them
 // (a requested stage the plan skips is reported as such). In a sequence (ctx.history set), both

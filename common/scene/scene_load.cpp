@@ -465,11 +465,9 @@ void readGrid(const Field& root, Scene& scene) {
   checkGrid(scene, scene.file);
 }
 
-}  // namespace
-
-Scene loadScene(const std::string& path, const SceneLoadOptions& options) {
-  if (fs::path(path).extension().string() != ".json") return loadBareFile(path, options);
-  const json doc = parseSceneFile(path);
+// A scene file's JSON; `path` names it in errors, and relative file names are relative to its
+// folder.
+Scene loadSceneDocument(const json& doc, const std::string& path, const SceneLoadOptions& options) {
   Scene scene;
   scene.file = path;
   const Field root{path, doc, ""};
@@ -502,6 +500,24 @@ Scene loadScene(const std::string& path, const SceneLoadOptions& options) {
   estimatePointCloudProperties(scene, cloudOptions);
   readGrid(root, scene);
   return scene;
+}
+
+}  // namespace
+
+Scene loadScene(const std::string& path, const SceneLoadOptions& options) {
+  if (fs::path(path).extension().string() != ".json") return loadBareFile(path, options);
+  return loadSceneDocument(parseSceneFile(path), path, options);
+}
+
+Scene loadSceneText(const std::string& text, const std::string& path,
+                    const SceneLoadOptions& options) {
+  json doc;
+  try {
+    doc = json::parse(text);
+  } catch (const json::exception& e) {
+    throw InputError(path, "", std::string("malformed JSON: ") + e.what());
+  }
+  return loadSceneDocument(doc, path, options);
 }
 
 void setImageWidth(Scene& scene, int width, const std::string& source) {

@@ -28,6 +28,10 @@ struct SceneLoadOptions {
 
 // Throws InputError naming the file and field for anything malformed.
 Scene loadScene(const std::string& path, const SceneLoadOptions& options = {});
+// A scene file's JSON given as text (a scene built in a script): `path` names it in errors, and
+// the files it refers to are relative to its folder, as if the text were read from `path`.
+Scene loadSceneText(const std::string& text, const std::string& path,
+                    const SceneLoadOptions& options = {});
 
 // Checks a grid resolution (power of two in [1, kMaxResolution]); throws InputError(file, field).
 int readResolution(const std::string& file, const std::string& field, int64_t n);
