@@ -1,6 +1,8 @@
 #include "tools/frames.h"
 
+#include <charconv>
 #include <regex>
+#include <string_view>
 
 #include "common/error.h"
 
@@ -8,6 +10,21 @@ namespace voxgi::tools {
 
 namespace {
 constexpr int kMaxFrames = 100000;
+}
+
+Shard parseShard(const std::string& text, const std::string& option) {
+  Shard s;
+  const std::string_view all(text);
+  const size_t slash = all.find('/');
+  const auto number = [](std::string_view part, size_t& out) {
+    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), out);
+    return error == std::errc() && end == part.data() + part.size() && !part.empty();
+  };
+  if (slash == std::string_view::npos || !number(all.substr(0, slash), s.index) ||
+      !number(all.substr(slash + 1), s.count) || s.count < 1 || s.count > 10000 ||
+      s.index >= s.count)
+    throw InputError(option, "", "expected I/N with 0 <= I < N <= 10000, got '" + text + "'");
+  return s;
 }
 
 FrameRange parseFrames(const std::string& text, const std::string& option) {

@@ -34,6 +34,7 @@ struct RenderOptions {
   std::string frames;  // --frames A:B[:STEP]; empty: one image
   double fps = 24.0;
   bool scratch = false;  // --scratch: every frame from scratch
+  std::string shard;     // --shard I/N: the path tracer's share of --frames for a job array
 };
 
 // An image with a NaN or infinite pixel is not written: it would be garbage with exit 0. Input
@@ -146,6 +147,17 @@ int render(const RenderOptions& o) {
       frames.emplace_back(f, frame);
     }
   }
+  if (!o.shard.empty()) {
+    // Only the path tracer's frames are independent of one another: a technique's sequence reuses
+    // and carries buffers from frame to frame (docs/motion.md).
+    if (!path || o.frames.empty())
+      throw InputError("--shard", "", "shards the path tracer's --frames (--technique path)");
+    const Shard shard = parseShard(o.shard, "--shard");
+    std::vector<std::pair<int, RenderOptions>> mine;
+    for (size_t k = 0; k < frames.size(); ++k)
+      if (shard.owns(k)) mine.push_back(frames[k]);
+    frames = std::move(mine);
+  }
   for (const auto& [f, frame] : frames) checkOutputs(frame, path);
   if (!path) findTechnique(o.scene.technique);
   const Scene scene = o.scene.load();
@@ -214,6 +226,10 @@ void addRenderCommand(CLI::App& app, Globals& globals, Commands& commands) {
                   "fps seconds; --out (and --png) then hold a frame field such as %04d "
                   "(docs/motion.md)");
   cmd->add_option("--fps", o->fps, "frames per second of --frames")->check(CLI::Range(1e-3, 1e6));
+  cmd->add_option("--shard", o->shard,
+                  "I/N: with --technique path and --frames, render the frames k (in the range's "
+                  "order) with k % N == I only, for a batch scheduler's job array "
+                  "(docs/accuracy.md, \"Studies on a cluster\")");
   cmd->add_flag("--scratch", o->scratch,
                 "run every stage of every frame, instead of reusing the buffers of the stages "
                 "whose inputs did not change since the frame before (the frames are the same "

@@ -31,6 +31,7 @@
 #include "gpu/backend.h"
 #include "validation/reference/path_trace.h"
 #include "tools/command.h"
+#include "tools/metrics_json.h"
 #include "tools/plot_script.h"
 
 namespace voxgi::tools {
@@ -290,6 +291,14 @@ void addStudyOptions(CLI::App& cmd, StudyOptions& o) {
   cmd.add_option("--gl", o.gl, "GL platform for backend=gpu")
       ->check(CLI::IsMember({"egl", "osmesa"}));
   addUnitsOptions(cmd, o.units, o.skipEmitters);
+  cmd.add_option("--shard", o.shard,
+                 "I/N: run the jobs k with k % N == I only and write their records to "
+                 "CSV.shard-I-of-N.json, for a batch scheduler's job array (docs/accuracy.md, "
+                 "\"Studies on a cluster\")");
+  cmd.add_option("--merge", o.merge,
+                 "N: write the CSV (and plot) from the records of shards 0..N-1, as one run "
+                 "writes them")
+      ->check(CLI::Range(1, 10000));
   cmd.add_option("--frames", o.frames,
                  "study frames A to B (A:B or A:B:STEP) of an animated scene on the CPU: per-frame "
                  "error, flicker and cost (updated and rebuilt); --reference then holds a frame "
@@ -476,6 +485,117 @@ void plotStudy(const StudyOptions& o, const StudyReference& ref) {
   std::cout << "wrote " << o.plot << "\n";
 }
 
+// A study's jobs and reference, checked before anything runs.
+struct StudyPlan {
+  std::vector<Sweep> sweeps;
+  StudyReference ref;
+  std::vector<Job> jobs;
+};
+
+StudyPlan planStudy(const StudyOptions& o) {
+  StudyPlan plan;
+  for (const std::string& s : o.sweeps) plan.sweeps.push_back(parseSweep(s));
+  plan.ref = readStudyReference(o);
+  plan.jobs = makeJobs(o, plan.sweeps);
+  checkSameSize(plan.jobs.front().scene.camera.width, plan.jobs.front().scene.camera.height,
+                o.scene + " camera.resolution (or --image)", plan.ref.image);
+  return plan;
+}
+
+void checkOutputs(const StudyOptions& o) {
+  checkOutputPath(o.csv);
+  if (!o.plot.empty()) checkOutputPath(o.plot);
+}
+
+void printProgress(size_t k, size_t count, const Job& job, const Measured& measured) {
+  const reference::ImageMetrics& m = measured.metrics;
+  std::cout << "[" << k + 1 << "/" << count << "] " << job.technique << " " << job.label() << ": "
+            << measured.result.seconds << " s, RMSE " << m.rmse << ", relMSE " << m.relMse
+            << ", SSIM " << m.ssim << ", energy " << m.energy.r << " / " << m.energy.g << " / "
+            << m.energy.b << std::endl;
+}
+
+// Metrics as a record holds them: voxgi compare's names, NaN as null, doubles exact.
+nlohmann::json metricsRecord(const reference::ImageMetrics& m) {
+  nlohmann::json j = metricsJson(m);
+  j["pixels"] = m.pixels;
+  return j;
+}
+
+double numberOf(const nlohmann::json& v) {
+  return v.is_null() ? std::nan("") : v.get<double>();
+}
+
+reference::ImageMetrics metricsFrom(const nlohmann::json& j) {
+  reference::ImageMetrics m;
+  m.rmse = numberOf(j.at("rmse"));
+  m.relMse = numberOf(j.at("rel_mse"));
+  m.mare = numberOf(j.at("mare"));
+  m.ssim = numberOf(j.at("ssim"));
+  for (int c = 0; c < 3; ++c) m.energy[c] = numberOf(j.at("energy").at(size_t(c)));
+  m.pixels = j.at("pixels").get<size_t>();
+  return m;
+}
+
+// What the CSV needs of a job's run, as JSON (the image itself stays where it ran).
+nlohmann::json record(size_t k, const Job& job, const Measured& m) {
+  nlohmann::json terms = nlohmann::json::array();
+  for (const reference::TermMetrics& t : m.terms)
+    terms.push_back({{"own", metricsRecord(t.own)},
+                     {"share", numberOrNull(t.share)},
+                     {"brightness", numberOrNull(t.meanRatio)}});
+  return {{"job", k},
+          {"technique", job.technique},
+          {"label", job.label()},
+          {"seconds", m.result.seconds},
+          {"stages", m.result.stages},
+          {"metrics", metricsRecord(m.metrics)},
+          {"direct_only", m.directOnly ? metricsRecord(*m.directOnly) : nlohmann::json()},
+          {"terms", terms}};
+}
+
+Measured measuredFrom(const nlohmann::json& r) {
+  try {
+    Measured m;
+    m.result.seconds = r.at("seconds").get<double>();
+    m.result.stages = r.at("stages").get<std::map<std::string, double>>();
+    m.metrics = metricsFrom(r.at("metrics"));
+    if (!r.at("direct_only").is_null()) m.directOnly = metricsFrom(r.at("direct_only"));
+    for (const nlohmann::json& t : r.at("terms"))
+      m.terms.push_back(
+          {metricsFrom(t.at("own")), numberOf(t.at("share")), numberOf(t.at("brightness"))});
+    return m;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError("study", "job record", std::string("malformed: ") + e.what());
+  }
+}
+
+// The CSV (with the baselines and the Pareto fronts) and the plot of every job's measurements.
+int writeResults(const StudyOptions& o, const StudyPlan& plan,
+                 const std::vector<Measured>& measured) {
+  const std::vector<Job>& jobs = plan.jobs;
+  const StudyReference& ref = plan.ref;
+  const reference::Baselines baselines =
+      reference::trivialBaselines(ref.image, ref.mask, ref.scale);
+  std::cout << "baselines: black relMSE " << baselines.black.relMse << ", SSIM "
+            << baselines.black.ssim << "; constant relMSE " << baselines.constant.relMse
+            << ", SSIM " << baselines.constant.ssim << std::endl;
+  const Fronts fronts = paretoFronts(o, jobs, measured);
+  const std::vector<std::string> stages = stageColumns(o);
+  const bool terms = ref.terms.has_value();
+  std::ostringstream csv;
+  csvHeader(csv, plan.sweeps, stages, terms);
+  csv.precision(6);
+  for (size_t k = 0; k < jobs.size(); ++k)
+    csvRow(csv, jobs[k], measured[k], plan.sweeps, stages, fronts.all[k], fronts.ownTechnique[k],
+           terms);
+  csvBaselines(csv, baselines, plan.sweeps.size(), stages.size(), terms);
+  writeFileAtomically(o.csv, csv.str());
+  std::cout << "wrote " << o.csv << " (" << jobs.size() << " rows)\n";
+  if (!o.plot.empty()) plotStudy(o, ref);
+  return kExitOk;
+}
+
 }  // namespace
 
 Scene loadStudyScene(const StudyOptions& o) {
@@ -503,43 +623,69 @@ std::string metricLabel(const std::string& metric) {
 }
 
 int runStudy(const StudyOptions& o) {
-  if (!o.frames.empty()) return runStudyFrames(o);
-  checkOutputPath(o.csv);
-  if (!o.plot.empty()) checkOutputPath(o.plot);
-  std::vector<Sweep> sweeps;
-  for (const std::string& s : o.sweeps) sweeps.push_back(parseSweep(s));
-  const StudyReference ref = readStudyReference(o);
-  const std::vector<Job> jobs = makeJobs(o, sweeps);
-  checkSameSize(jobs.front().scene.camera.width, jobs.front().scene.camera.height,
-                o.scene + " camera.resolution (or --image)", ref.image);
+  if (!o.frames.empty()) {
+    if (!o.shard.empty() || o.merge > 0)
+      throw InputError(o.shard.empty() ? "--merge" : "--shard", "",
+                       "a study in time (--frames) runs in one piece");
+    return runStudyFrames(o);
+  }
+  if (!o.shard.empty()) return runStudyShard(o);
+  if (o.merge > 0) return runStudyMerge(o);
+  checkOutputs(o);
+  const StudyPlan plan = planStudy(o);
   std::unique_ptr<gpu::GlContext> context;
   std::vector<Measured> measured;
-  for (size_t k = 0; k < jobs.size(); ++k) {
-    measured.push_back(measure(jobs[k], o, ref, context));
-    const reference::ImageMetrics& m = measured.back().metrics;
-    std::cout << "[" << k + 1 << "/" << jobs.size() << "] " << jobs[k].technique << " "
-              << jobs[k].label() << ": " << measured.back().result.seconds << " s, RMSE " << m.rmse
-              << ", relMSE " << m.relMse << ", SSIM " << m.ssim << ", energy " << m.energy.r
-              << " / " << m.energy.g << " / " << m.energy.b << std::endl;
+  for (size_t k = 0; k < plan.jobs.size(); ++k) {
+    measured.push_back(measure(plan.jobs[k], o, plan.ref, context));
+    printProgress(k, plan.jobs.size(), plan.jobs[k], measured.back());
   }
-  const reference::Baselines baselines =
-      reference::trivialBaselines(ref.image, ref.mask, ref.scale);
-  std::cout << "baselines: black relMSE " << baselines.black.relMse << ", SSIM "
-            << baselines.black.ssim << "; constant relMSE " << baselines.constant.relMse
-            << ", SSIM " << baselines.constant.ssim << std::endl;
-  const Fronts fronts = paretoFronts(o, jobs, measured);
-  const std::vector<std::string> stages = stageColumns(o);
-  const bool terms = ref.terms.has_value();
-  std::ostringstream csv;
-  csvHeader(csv, sweeps, stages, terms);
-  csv.precision(6);
-  for (size_t k = 0; k < jobs.size(); ++k)
-    csvRow(csv, jobs[k], measured[k], sweeps, stages, fronts.all[k], fronts.ownTechnique[k], terms);
-  csvBaselines(csv, baselines, sweeps.size(), stages.size(), terms);
-  writeFileAtomically(o.csv, csv.str());
-  std::cout << "wrote " << o.csv << " (" << jobs.size() << " rows)\n";
-  if (!o.plot.empty()) plotStudy(o, ref);
-  return kExitOk;
+  return writeResults(o, plan, measured);
+}
+
+size_t studyJobCount(const StudyOptions& o) {
+  std::vector<Sweep> sweeps;
+  for (const std::string& s : o.sweeps) sweeps.push_back(parseSweep(s));
+  return makeJobs(o, sweeps).size();
+}
+
+std::vector<nlohmann::json> runStudyJobs(const StudyOptions& o, const std::vector<size_t>& jobs) {
+  const StudyPlan plan = planStudy(o);
+  std::unique_ptr<gpu::GlContext> context;
+  std::vector<nlohmann::json> records;
+  for (const size_t k : jobs) {
+    if (k >= plan.jobs.size())
+      throw InputError("study", "job",
+                       "the study has " + std::to_string(plan.jobs.size()) + " jobs, no job " +
+                           std::to_string(k));
+    const Measured m = measure(plan.jobs[k], o, plan.ref, context);
+    printProgress(k, plan.jobs.size(), plan.jobs[k], m);
+    records.push_back(record(k, plan.jobs[k], m));
+  }
+  return records;
+}
+
+int writeStudy(const StudyOptions& o, const std::vector<nlohmann::json>& records) {
+  checkOutputs(o);
+  const StudyPlan plan = planStudy(o);
+  std::vector<Measured> measured(plan.jobs.size());
+  std::vector<bool> seen(plan.jobs.size(), false);
+  for (const nlohmann::json& r : records) {
+    const size_t k = r.at("job").get<size_t>();
+    if (k >= plan.jobs.size() || seen[k] || r.at("technique") != plan.jobs[k].technique ||
+        r.at("label") != plan.jobs[k].label())
+      throw InputError("study", "job " + std::to_string(k),
+                       seen.size() > k && seen[k]
+                           ? "given twice"
+                           : "is not this study's (another study's record, or other options)");
+    seen[k] = true;
+    measured[k] = measuredFrom(r);
+  }
+  for (size_t k = 0; k < seen.size(); ++k)
+    if (!seen[k])
+      throw InputError(
+          "study", "job " + std::to_string(k),
+          "missing: no record of it among the " + std::to_string(records.size()) + " given");
+  return writeResults(o, plan, measured);
 }
 
 void addStudyCommand(CLI::App& app, Commands& commands) {

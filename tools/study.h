@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "common/scene.h"
 #include "validation/reference/image_metrics.h"
@@ -33,11 +34,28 @@ struct StudyOptions {
   // field (tools/study_frames.cpp).
   std::string frames;
   double fps = 24.0;
+  // A study spread over batch jobs (tools/study_shards.cpp): --shard I/N runs every job k with
+  // k % N == I and writes their records beside --csv; --merge N writes the CSV and plot from the
+  // N shards' records.
+  std::string shard;
+  int merge = 0;
 };
 
 void addStudyOptions(CLI::App& cmd, StudyOptions& options);
 int runStudy(const StudyOptions& options);
 int runStudyFrames(const StudyOptions& options);
+
+// A study in pieces, on other processes or machines (docs/accuracy.md, "Studies on a cluster"):
+// its jobs are every combination in the serial order; each runs alone, deterministic but for its
+// times, and gives a record (JSON, its doubles exact); the records of all jobs give the CSV and
+// plot runStudy writes.
+size_t studyJobCount(const StudyOptions& options);
+std::vector<nlohmann::json> runStudyJobs(const StudyOptions& options,
+                                         const std::vector<size_t>& jobs);
+int writeStudy(const StudyOptions& options, const std::vector<nlohmann::json>& records);
+// --shard and --merge (tools/study_shards.cpp).
+int runStudyShard(const StudyOptions& options);
+int runStudyMerge(const StudyOptions& options);
 
 // The scene file with --image and --resolution applied.
 Scene loadStudyScene(const StudyOptions& options);

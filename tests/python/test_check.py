@@ -64,3 +64,44 @@ def test_an_array_of_another_layout_is_refused(box, gpu_run):
     # indistinguishable by shape, which is why docs/python.md states the order.
     swapped = np.ascontiguousarray(radiance.transpose(2, 1, 0, 3))
     assert not voxgi.check(box, "vct/light_voxels.radiance", swapped)["pass"]
+
+
+def test_the_octrees_gpu_build_passes_in_canonical_order(box):
+    gpu = voxgi.run(box, "svo", stage="svo/build", backend="gpu", threads=2)
+    names = [n for n in gpu.names if n.startswith("svo/build.")]
+    report = voxgi.check(box, {n: gpu[n] for n in names})
+    assert report["pass"], report
+    assert len(report["stages"][0]["buffers"]) == len(names) == 5
+    # The pools are compared in the canonical order (common/svo/canonical.h): the same nodes
+    # allocated in another order are another buffer.
+    nodes = np.array(gpu["svo/build.nodes"])
+    nodes[[1, 2]] = nodes[[2, 1]]
+    assert not voxgi.check(box, "svo/build.nodes", nodes)["pass"]
+
+
+def test_voxgi_diff_against_a_dump_folder(repo, voxgi_bin, tmp_path):
+    import subprocess
+
+    scene = str(repo / "scenes" / "cornell_box.json")
+    size = ["--resolution", "16", "--image", "64"]
+
+    def run(*args):
+        return subprocess.run([voxgi_bin, *args], capture_output=True, text=True)
+
+    gpu, other = tmp_path / "gpu", tmp_path / "antialiased"
+    assert run("dump", scene, *size, "--stage", "vct/light_voxels", "--backend", "gpu", "--out",
+               str(gpu)).returncode == 0
+    assert run("dump", scene, *size, "--stage", "voxelize", "--mode", "antialiased", "--backend",
+               "cpu", "--out", str(other)).returncode == 0
+    passed = run("diff", scene, *size, "--stage", "vct/light_voxels", "--against", str(gpu))
+    assert passed.returncode == 0, passed.stdout + passed.stderr
+    assert "stage vct/light_voxels: PASS" in passed.stdout
+    # Another engine's voxelization (antialiased coverage where the oracle is conservative).
+    failed = run("diff", scene, *size, "--stage", "voxelize", "--against", str(other))
+    assert failed.returncode == 1 and "stage voxelize: FAIL" in failed.stdout
+    assert "opacity" in failed.stdout
+    wrong = run("diff", scene, "--resolution", "32", "--stage", "voxelize", "--against",
+                str(other))
+    assert wrong.returncode == 2 and "voxgi_resolution" in wrong.stderr
+    empty = run("diff", scene, *size, "--stage", "vct/mip", "--against", str(gpu))
+    assert empty.returncode == 2 and "no dump of the stages" in empty.stderr

@@ -11,4 +11,5 @@ PYBIND11_MODULE(_voxgi, m) {
   voxgi::python::bindRegistry(m);
   voxgi::python::bindRuns(m);
   voxgi::python::bindDumps(m);
+  voxgi::python::bindStudies(m);
 }

@@ -216,23 +216,7 @@ py::object checkPy(const ScenePtr& scene, const std::string& technique, const st
 
 py::dict pathTracePy(const ScenePtr& scene, int spp, uint64_t seed, int bounces, int replicas,
                      const std::string& sampler, int threads) {
-  if (spp < 1 || spp > (1 << 24))
-    throw InputError("spp", "", "must be in [1, 16777216], got " + std::to_string(spp));
-  if (bounces < -1 || bounces > 1024)
-    throw InputError("bounces", "",
-                     "must be in [-1, 1024] (-1: unlimited), got " + std::to_string(bounces));
-  if (replicas < 1 || replicas > reference::kMaxReplicas)
-    throw InputError("replicas", "", "must be in [1, 64], got " + std::to_string(replicas));
-  reference::PathTraceOptions o;
-  o.spp = spp;
-  o.seed = seed;
-  o.bounces = bounces;
-  o.replicas = replicas;
-  bool known = false;
-  for (const auto& [name, kind] : reference::kSamplerNames)
-    if (sampler == name) o.sampler = kind, known = true;
-  if (!known)
-    throw InputError("sampler", "", "must be sobol or independent, got \"" + sampler + "\"");
+  const reference::PathTraceOptions o = pathOptions(spp, seed, bounces, replicas, sampler);
   reference::PathTraceResult r;
   {
     py::gil_scoped_release release;
@@ -281,6 +265,28 @@ py::object comparePy(const py::array& testArray, const py::array& referenceArray
 }
 
 }  // namespace
+
+reference::PathTraceOptions pathOptions(int spp, uint64_t seed, int bounces, int replicas,
+                                        const std::string& sampler) {
+  if (spp < 1 || spp > (1 << 20))  // voxgi render --spp's range
+    throw InputError("spp", "", "must be in [1, 1048576], got " + std::to_string(spp));
+  if (bounces < -1 || bounces > 1024)
+    throw InputError("bounces", "",
+                     "must be in [-1, 1024] (-1: unlimited), got " + std::to_string(bounces));
+  if (replicas < 1 || replicas > reference::kMaxReplicas)
+    throw InputError("replicas", "", "must be in [1, 64], got " + std::to_string(replicas));
+  reference::PathTraceOptions o;
+  o.spp = spp;
+  o.seed = seed;
+  o.bounces = bounces;
+  o.replicas = replicas;
+  bool known = false;
+  for (const auto& [name, kind] : reference::kSamplerNames)
+    if (sampler == name) o.sampler = kind, known = true;
+  if (!known)
+    throw InputError("sampler", "", "must be sobol or independent, got \"" + sampler + "\"");
+  return o;
+}
 
 void bindRuns(py::module_& m) {
   py::class_<Scene, std::shared_ptr<Scene>>(m, "Scene")

@@ -8,6 +8,7 @@ Bad input raises voxgi.InputError (a ValueError) with the one-line message the C
 Every call that computes releases the GIL, and takes `threads` (None: every core).
 """
 
+import csv as _csv
 import json
 import os
 
@@ -17,6 +18,7 @@ from ._voxgi import InputError, Run, Scene
 __all__ = [
     "InputError", "Run", "Scene", "load_scene", "techniques", "buffers", "settings", "presets",
     "plan", "run", "render", "diff", "check", "path_trace", "compare", "read_dump", "mip_levels",
+    "study", "path_trace_frames",
 ]
 
 
@@ -170,3 +172,63 @@ def mip_levels(array, resolution, faces=1):
         offset += count
         side >>= 1
     return levels
+
+
+def _study_jobs(options, jobs):
+    """A Dask task: some of a study's jobs, run where the task runs; their records."""
+    from . import _voxgi as core  # imported on the worker
+    return core.study_jobs(options, jobs)
+
+
+def study(scene, reference, csv, *, techniques=("vct",), sweeps=None, preset="default",
+          settings=None, mask="", plot="", metric="rel_mse", image=None, resolution=None,
+          repeats=3, terms=False, skip_emitters=False, units="mean", gl="egl", client=None):
+    """voxgi study: every combination of `sweeps` ({"resolution": [32, 64], "spp": [1, 16]}, or
+    the command's "key=v1,v2" strings) for each of `techniques` (any of voxgi's, and "path"),
+    timed and measured against the `reference` image (.exr), written to `csv` (and `plot`, a PNG)
+    with the baselines and Pareto fronts. Returns the CSV's rows as dicts.
+
+    With `client` (a dask.distributed Client), each job runs as a task on the cluster's workers
+    (which must see the scene and reference at the same paths and import voxgi), and the caller
+    writes the CSV from their records: every column but the times and what depends on them
+    (efficiency, the Pareto fronts) equals the serial run's bit for bit."""
+    if isinstance(sweeps, dict):
+        sweeps = [f"{key}=" + ",".join(str(v) for v in values) for key, values in sweeps.items()]
+    options = json.dumps({
+        "scene": os.fspath(scene), "techniques": list(techniques), "sweeps": list(sweeps or []),
+        "preset": preset, "settings": _assignments(settings), "reference": os.fspath(reference),
+        "mask": os.fspath(mask), "csv": os.fspath(csv), "plot": os.fspath(plot), "metric": metric,
+        "gl": gl, "image": image or 0, "resolution": resolution or 0, "repeats": repeats,
+        "terms": terms, "skip_emitters": skip_emitters, "units": units})
+    if client is None:
+        _voxgi.study(options)
+    else:
+        count = _voxgi.study_job_count(options)
+        futures = client.map(_study_jobs, [options] * count, [[k] for k in range(count)],
+                             pure=False)
+        records = [r for part in client.gather(futures) for r in part]
+        _voxgi.study_merge(options, records)
+    with open(csv, newline="") as f:
+        return list(_csv.DictReader(f))
+
+
+def _path_trace_frame(args, frame):
+    """A Dask task: one frame of a reference sequence, written where the task runs."""
+    from . import _voxgi as core  # imported on the worker
+    return core.path_trace_frame(*args, frame)
+
+
+def path_trace_frames(scene, frames, out, *, fps=24.0, spp=64, seed=0, bounces=-1, replicas=2,
+                      sampler="sobol", image=None, camera="", client=None):
+    """The path tracer's reference of `frames` (frame numbers) of a scene file, frame f at f / fps
+    seconds, as `voxgi render --technique path --frames` writes them: `out` holds a frame field
+    (%04d), each image's variance beside it. With `client` (a dask.distributed Client) each frame
+    is a task on the cluster's workers, which must see the scene and the output folder at the same
+    paths; each frame is the same wherever it runs. Returns the images' paths."""
+    args = (os.fspath(scene), camera, image or 0, float(fps), os.fspath(out), spp, seed, bounces,
+            replicas, sampler)
+    frames = list(frames)
+    if client is None:
+        return [_voxgi.path_trace_frame(*args, f) for f in frames]
+    futures = client.map(_path_trace_frame, [args] * len(frames), frames, pure=False)
+    return client.gather(futures)
