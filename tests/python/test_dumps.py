@@ -58,3 +58,25 @@ def test_a_file_that_is_not_a_dump_is_refused(tmp_path):
     bad.write_bytes(b"not a vdb")
     with pytest.raises(voxgi.InputError, match="x.vdb"):
         voxgi.read_dump(bad)
+
+
+def test_dump_from_python_writes_what_voxgi_dump_writes(repo, voxgi_bin, box, tmp_path):
+    dump(voxgi_bin, repo / "scenes" / "cornell_box.json", tmp_path / "cli", "--stage", "vct/mip")
+    paths = voxgi.dump(box, tmp_path / "py", stage="vct/mip", threads=2)
+    assert [p.split("/")[-1] for p in paths] == ["mip.vdb"]
+    cli = voxgi.read_dump(tmp_path / "cli" / "mip.vdb")
+    py = voxgi.read_dump(paths[0])
+    # rgb and alpha per face (6) and level (16^3: 4 above the base)
+    assert sorted(cli) == sorted(py) and len(cli) == 2 * 6 * 4
+    for name in cli:
+        assert cli[name]["array"].tobytes() == py[name]["array"].tobytes(), name
+
+
+def test_inspect_keeps_what_a_render_drops(repo):
+    scene = voxgi.load_scene(repo / "scenes" / "cornell_box_lpv.json", resolution=16, image=64)
+    assert "lpv/propagate.steps_sh4" not in voxgi.run(scene, "lpv", threads=2).names
+    kept = voxgi.run(scene, "lpv", threads=2, inspect=True)
+    assert kept["lpv/propagate.steps_sh4"].shape[1:] == (16, 16, 16, 12)
+    assert voxgi.stages("lpv") == kept.stages
+    with pytest.raises(voxgi.InputError, match="technique"):
+        voxgi.stages("nope")

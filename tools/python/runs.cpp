@@ -9,11 +9,14 @@
 #include <tbb/task_arena.h>
 
 #include "common/error.h"
+#include "common/io/buffer_io.h"
+#include "common/io/output_file.h"
 #include "common/scene/scene_load.h"
 #include "common/settings.h"
 #include "cpu/backend.h"
 #include "gpu/backend.h"
 #include "tools/backend.h"
+#include "tools/command.h"
 #include "tools/metrics_json.h"
 #include "tools/python/arrays.h"
 #include "tools/python/bindings.h"
@@ -119,11 +122,11 @@ py::dict planDict(const ScenePtr& scene, const std::string& technique, const std
 std::shared_ptr<Run> runPy(const ScenePtr& scene, const std::string& technique,
                            const std::string& stage, const std::string& backend,
                            const std::string& gl, const std::string& preset,
-                           const std::vector<std::string>& sets, int threads) {
+                           const std::vector<std::string>& sets, int threads, bool inspect) {
   if (backend != "cpu" && backend != "gpu" && backend != "auto")
     throw InputError("backend", "", "must be cpu, gpu or auto, got \"" + backend + "\"");
   const gpu::GlPlatform platform = gpu::parseGlPlatform(gl);
-  const Choice c = choose(*scene, technique, preset, sets);
+  const Choice c = choose(*scene, technique, preset, sets, inspect);
   const StageSpec* last = stage.empty() ? nullptr : &resolveStage(c.technique, stage, "stage");
   auto run = std::make_shared<Run>();
   run->scene = scene;
@@ -143,6 +146,29 @@ std::shared_ptr<Run> runPy(const ScenePtr& scene, const std::string& technique,
     run->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   });
   return run;
+}
+
+// The run's buffers as `voxgi dump` writes them: <out>/<stage>.vdb and <out>/<stage>.<buffer>.exr
+// per stage it ran (or the one named).
+std::vector<std::string> dumpRun(const Run& r, const std::string& out, const std::string& stage) {
+  const Technique& t = findTechnique(r.technique);
+  const StageSpec* only = stage.empty() ? nullptr : &resolveStage(t, stage, "stage");
+  if (only != nullptr &&
+      std::find(r.stages.begin(), r.stages.end(), only->qualifiedName()) == r.stages.end())
+    throw InputError("stage", only->qualifiedName(), "the run did not run it (Run.stages)");
+  py::gil_scoped_release release;
+  prepareOutputFolder(out);
+  std::vector<std::string> paths;
+  const SparseLayouts layouts = t.sparseLayouts(r.buffers, r.scene->grid);
+  for (const std::string& name : r.stages) {
+    const StageSpec& s = resolveStage(t, name, "stage");
+    if (only != nullptr && &s != only) continue;
+    for (const std::string& path :
+         writeBuffers(out + "/" + std::string(s.name), tools::buffersOf(r.buffers, s, true),
+                      r.scene->grid, {}, layouts))
+      paths.push_back(path);
+  }
+  return paths;
 }
 
 py::object diffPy(const ScenePtr& scene, const std::string& technique, const std::string& stage,
@@ -322,19 +348,22 @@ void bindRuns(py::module_& m) {
                                  names.push_back(b.spec->qualifiedName());
                                return names;
                              })
-      .def("array", [](py::object self, const std::string& name) {
-        const Run& r = self.cast<const Run&>();
-        const Buffer* b = r.buffers.find(bufferNamed(name).id);
-        if (b == nullptr)
-          throw py::key_error(name + ": not in this run (Run.names lists what it holds)");
-        return bufferArray(*b, self);
-      });
+      .def("array",
+           [](py::object self, const std::string& name) {
+             const Run& r = self.cast<const Run&>();
+             const Buffer* b = r.buffers.find(bufferNamed(name).id);
+             if (b == nullptr)
+               throw py::key_error(name + ": not in this run (Run.names lists what it holds)");
+             return bufferArray(*b, self);
+           })
+      .def("dump", &dumpRun, py::arg("out"), py::arg("stage") = "");
   m.def("load_scene", &loadScenePy, py::arg("source"), py::arg("text"), py::arg("camera"),
         py::arg("resolution"), py::arg("image"));
   m.def("plan", &planDict, py::arg("scene"), py::arg("technique"), py::arg("preset"),
         py::arg("settings"));
   m.def("run", &runPy, py::arg("scene"), py::arg("technique"), py::arg("stage"), py::arg("backend"),
-        py::arg("gl"), py::arg("preset"), py::arg("settings"), py::arg("threads"));
+        py::arg("gl"), py::arg("preset"), py::arg("settings"), py::arg("threads"),
+        py::arg("inspect"));
   m.def("diff", &diffPy, py::arg("scene"), py::arg("technique"), py::arg("stage"), py::arg("gl"),
         py::arg("preset"), py::arg("settings"), py::arg("threads"));
   m.def("check", &checkPy, py::arg("scene"), py::arg("technique"), py::arg("preset"),

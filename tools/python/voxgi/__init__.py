@@ -16,8 +16,8 @@ from . import _voxgi
 from ._voxgi import InputError, Run, Scene
 
 __all__ = [
-    "InputError", "Run", "Scene", "load_scene", "techniques", "buffers", "settings", "presets",
-    "plan", "run", "render", "diff", "check", "path_trace", "compare", "read_dump", "mip_levels",
+    "InputError", "Run", "Scene", "load_scene", "techniques", "stages", "buffers", "settings",
+    "presets", "plan", "run", "dump", "render", "diff", "check", "path_trace", "compare", "read_dump", "mip_levels",
     "study", "path_trace_frames",
 ]
 
@@ -59,6 +59,14 @@ def techniques():
     return _voxgi.techniques()
 
 
+def stages(technique):
+    """The stages `technique` runs, in graph order ("voxelize", "vct/light_voxels", ...)."""
+    for t in techniques():
+        if t["name"] == technique:
+            return t["stages"]
+    _voxgi.presets(technique)  # raises the registry's InputError, naming the techniques
+
+
 def buffers(technique=None):
     """The declared buffers (of `technique`'s stages, or all): name, stage, dtype, components,
     shape (volume, mips, mips6, image, series, maps, sparse), needs (the plan's effect) and
@@ -83,12 +91,22 @@ def plan(scene, technique="vct", *, preset="default", settings=None):
 
 
 def run(scene, technique="vct", *, stage=None, backend="cpu", gl="egl", preset="default",
-        settings=None, threads=None):
+        settings=None, threads=None, inspect=False):
     """Runs the planned stages up to `stage` (all when None) on the CPU or GPU backend ("auto": a
     hardware GPU through EGL if there is one, else the CPU). Returns a voxgi.Run: run.names lists
-    the buffers it holds, run[name] is one as a read-only NumPy array sharing the run's memory."""
+    the buffers it holds, run[name] is one as a read-only NumPy array sharing the run's memory,
+    run.dump(folder) writes them as `voxgi dump` does. `inspect` keeps the intermediate volumes a
+    render drops (lpv: every propagation step), as voxgi diff and dump do."""
     return _voxgi.run(_scene(scene), technique, stage or "", backend, gl, preset,
-                      _assignments(settings), threads or 0)
+                      _assignments(settings), threads or 0, inspect)
+
+
+def dump(scene, out, technique="vct", *, stage=None, **options):
+    """voxgi dump: runs the stages up to `stage` (all when None) with inspect=True and writes
+    their buffers (of `stage` alone when given) to the folder `out` as <stage>.vdb and
+    <stage>.<buffer>.exr; options as run()'s. Returns the paths written."""
+    r = run(scene, technique, stage=stage, inspect=True, **options)
+    return r.dump(os.fspath(out), stage or "")
 
 
 def _run_getitem(self, name):
