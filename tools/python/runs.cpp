@@ -315,48 +315,76 @@ reference::PathTraceOptions pathOptions(int spp, uint64_t seed, int bounces, int
 }
 
 void bindRuns(py::module_& m) {
-  py::class_<Scene, std::shared_ptr<Scene>>(m, "Scene")
-      .def_property_readonly("file", [](const Scene& s) { return s.file; })
-      .def_property_readonly("resolution", [](const Scene& s) { return s.grid.resolution; })
-      .def_property_readonly("grid_min",
-                             [](const Scene& s) {
-                               return std::vector<double>{s.grid.min.x, s.grid.min.y, s.grid.min.z};
-                             })
-      .def_property_readonly("grid_size", [](const Scene& s) { return s.grid.size; })
+  py::class_<Scene, std::shared_ptr<Scene>>(
+      m, "Scene", "A loaded scene (voxgi.load_scene): its meshes, lights, camera and grid.")
       .def_property_readonly(
-          "image", [](const Scene& s) { return std::pair(s.camera.width, s.camera.height); })
-      .def_property_readonly("triangles", [](const Scene& s) { return s.triangleCount(); })
-      .def_property_readonly("lights", [](const Scene& s) { return s.lights.size(); })
+          "file", [](const Scene& s) { return s.file; }, "the scene file it was loaded from")
+      .def_property_readonly(
+          "resolution", [](const Scene& s) { return s.grid.resolution; },
+          "the voxel grid's resolution N (an N^3 grid)")
+      .def_property_readonly(
+          "grid_min",
+          [](const Scene& s) {
+            return std::vector<double>{s.grid.min.x, s.grid.min.y, s.grid.min.z};
+          },
+          "the grid's lowest corner in world space")
+      .def_property_readonly(
+          "grid_size", [](const Scene& s) { return s.grid.size; },
+          "the grid's edge length in world units")
+      .def_property_readonly(
+          "image", [](const Scene& s) { return std::pair(s.camera.width, s.camera.height); },
+          "(width, height) of its images")
+      .def_property_readonly(
+          "triangles", [](const Scene& s) { return s.triangleCount(); }, "its triangles")
+      .def_property_readonly(
+          "lights", [](const Scene& s) { return s.lights.size(); },
+          "its lights (point, spot, directional)")
       .def("__repr__", [](const Scene& s) {
         return "<voxgi.Scene " + s.file + ": " + std::to_string(s.triangleCount()) +
                " triangles, " + std::to_string(s.grid.resolution) + "^3 grid, " +
                std::to_string(s.camera.width) + "x" + std::to_string(s.camera.height) + " image>";
       });
-  py::class_<Run, std::shared_ptr<Run>>(m, "Run")
-      .def_property_readonly("technique", [](const Run& r) { return r.technique; })
-      .def_property_readonly("backend", [](const Run& r) { return r.backend; })
-      .def_property_readonly("note", [](const Run& r) { return r.note; })
-      .def_property_readonly("stages", [](const Run& r) { return r.stages; })
-      .def_property_readonly("seconds", [](const Run& r) { return r.seconds; })
+  py::class_<Run, std::shared_ptr<Run>>(
+      m, "Run",
+      "The stages a voxgi.run ran and the buffers they wrote; run[name] is one as a read-only "
+      "NumPy view (docs/python.md, \"Arrays\").")
+      .def_property_readonly(
+          "technique", [](const Run& r) { return r.technique; }, "the technique that ran")
+      .def_property_readonly(
+          "backend", [](const Run& r) { return r.backend; }, "cpu, or gpu: <renderer>")
+      .def_property_readonly(
+          "note", [](const Run& r) { return r.note; },
+          "why backend=auto chose the CPU (empty otherwise)")
+      .def_property_readonly(
+          "stages", [](const Run& r) { return r.stages; }, "the stages the plan ran, in order")
+      .def_property_readonly(
+          "seconds", [](const Run& r) { return r.seconds; },
+          "the seconds the stages took, all together")
       .def_property_readonly(
           "settings",
-          [](const Run& r) { return settingValues(r.settings, findTechnique(r.technique)); })
-      .def_property_readonly("names",
-                             [](const Run& r) {
-                               std::vector<std::string> names;
-                               for (const auto& [id, b] : r.buffers)
-                                 names.push_back(b.spec->qualifiedName());
-                               return names;
-                             })
-      .def("array",
-           [](py::object self, const std::string& name) {
-             const Run& r = self.cast<const Run&>();
-             const Buffer* b = r.buffers.find(bufferNamed(name).id);
-             if (b == nullptr)
-               throw py::key_error(name + ": not in this run (Run.names lists what it holds)");
-             return bufferArray(*b, self);
-           })
-      .def("dump", &dumpRun, py::arg("out"), py::arg("stage") = "");
+          [](const Run& r) { return settingValues(r.settings, findTechnique(r.technique)); },
+          "every setting's value, key=value")
+      .def_property_readonly(
+          "names",
+          [](const Run& r) {
+            std::vector<std::string> names;
+            for (const auto& [id, b] : r.buffers) names.push_back(b.spec->qualifiedName());
+            return names;
+          },
+          "the buffers the run holds, by name")
+      .def(
+          "array",
+          [](py::object self, const std::string& name) {
+            const Run& r = self.cast<const Run&>();
+            const Buffer* b = r.buffers.find(bufferNamed(name).id);
+            if (b == nullptr)
+              throw py::key_error(name + ": not in this run (Run.names lists what it holds)");
+            return bufferArray(*b, self);
+          },
+          py::arg("name"), "The buffer `name` as a read-only NumPy view (run[name] is the same).")
+      .def("dump", &dumpRun, py::arg("out"), py::arg("stage") = "",
+           "Writes the run's buffers (of `stage` alone when given) to the folder `out` as voxgi "
+           "dump does; returns the paths.");
   m.def("load_scene", &loadScenePy, py::arg("source"), py::arg("text"), py::arg("camera"),
         py::arg("resolution"), py::arg("image"));
   m.def("plan", &planDict, py::arg("scene"), py::arg("technique"), py::arg("preset"),
