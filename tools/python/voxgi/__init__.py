@@ -17,8 +17,8 @@ from ._voxgi import InputError, Run, Scene
 
 __all__ = [
     "InputError", "Run", "Scene", "load_scene", "techniques", "stages", "buffers", "settings",
-    "presets", "plan", "run", "dump", "render", "diff", "check", "path_trace", "compare", "read_dump", "mip_levels",
-    "study", "path_trace_frames",
+    "presets", "plan", "run", "dump", "render", "diff", "check", "path_trace", "compare",
+    "read_dump", "mip_levels", "study", "path_trace_frames",
 ]
 
 
