@@ -44,6 +44,8 @@ def test_bad_arguments_name_what_is_wrong(box):
         (lambda: voxgi.run(box, threads=-3), "threads"),
         (lambda: voxgi.load_scene({"meshes": [{"file": "missing.obj"}]}), "meshes[0].file"),
         (lambda: voxgi.load_scene(box.file, resolution=100), "resolution"),
+        (lambda: voxgi.load_scene(box.file, resolution=0), "resolution"),
+        (lambda: voxgi.load_scene(box.file, image=0), "image"),
         (lambda: voxgi.check(box, "vct/nothing", np.zeros(3)), "vct/nothing"),
         (lambda: voxgi.path_trace(box, spp=0), "spp"),
         (lambda: voxgi.compare(np.zeros((4, 4, 3)), np.zeros((4, 5, 3))), "differ in size"),

@@ -84,16 +84,18 @@ const BufferSpec& bufferNamed(const std::string& name) {
                    "no such buffer (voxgi.buffers() lists them, e.g. vct/light_voxels.radiance)");
 }
 
+// Given explicitly, 0 is an error, not "the scene's" (which is what None means), as on the CLI.
 ScenePtr loadScenePy(const std::string& source, const std::optional<std::string>& text,
-                     const std::string& camera, int resolution, int image) {
+                     const std::string& camera, std::optional<int> resolution,
+                     std::optional<int> image) {
   py::gil_scoped_release release;
   Scene s = text ? loadSceneText(*text, source, {.camera = camera})
                  : loadScene(source, {.camera = camera});
-  if (resolution != 0) {
-    s.grid.resolution = readResolution("resolution", "", resolution);
-    checkGrid(s, "resolution " + std::to_string(resolution));
+  if (resolution) {
+    s.grid.resolution = readResolution("resolution", "", *resolution);
+    checkGrid(s, "resolution " + std::to_string(*resolution));
   }
-  if (image != 0) setImageWidth(s, image, "image");
+  if (image) setImageWidth(s, *image, "image");
   return std::make_shared<Scene>(std::move(s));
 }
 

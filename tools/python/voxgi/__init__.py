@@ -33,7 +33,7 @@ def load_scene(source, *, base_dir=".", camera="", resolution=None, image=None):
     else:
         text = None
         path = os.fspath(source)
-    return _voxgi.load_scene(path, text, camera, resolution or 0, image or 0)
+    return _voxgi.load_scene(path, text, camera, resolution, image)
 
 
 def _scene(scene):
