@@ -178,6 +178,7 @@ std::vector<Job> makeJobs(const StudyOptions& o, const std::vector<Sweep>& sweep
                        "is a parameter of none of the techniques studied (voxgi render --help "
                        "lists them)");
   }
+  const Scene scene = loadStudyScene(o);  // each job changes its own copy
   for (const std::string& technique : o.techniques) {
     std::vector<const Sweep*> mine;
     for (const Sweep& s : sweeps)
@@ -188,7 +189,7 @@ std::vector<Job> makeJobs(const StudyOptions& o, const std::vector<Sweep>& sweep
     for (size_t index = 0; index < count; ++index) {
       Job job;
       job.technique = technique;
-      job.scene = loadStudyScene(o);
+      job.scene = scene;
       if (technique != "path")
         job.settings = resolveSettings(findTechnique(technique), job.scene.settings, job.scene.file,
                                        o.preset, o.sets);
@@ -570,6 +571,23 @@ Measured measuredFrom(const nlohmann::json& r) {
   }
 }
 
+// The records of the study's jobs `jobs`, each run here.
+std::vector<nlohmann::json> measureJobs(const StudyOptions& o, const StudyPlan& plan,
+                                        const std::vector<size_t>& jobs) {
+  std::unique_ptr<gpu::GlContext> context;
+  std::vector<nlohmann::json> records;
+  for (const size_t k : jobs) {
+    if (k >= plan.jobs.size())
+      throw InputError("study", "job",
+                       "the study has " + std::to_string(plan.jobs.size()) + " jobs, no job " +
+                           std::to_string(k));
+    const Measured m = measure(plan.jobs[k], o, plan.ref, context);
+    printProgress(k, plan.jobs.size(), plan.jobs[k], m);
+    records.push_back(record(k, plan.jobs[k], m));
+  }
+  return records;
+}
+
 // The CSV (with the baselines and the Pareto fronts) and the plot of every job's measurements.
 int writeResults(const StudyOptions& o, const StudyPlan& plan,
                  const std::vector<Measured>& measured) {
@@ -649,19 +667,15 @@ size_t studyJobCount(const StudyOptions& o) {
 }
 
 std::vector<nlohmann::json> runStudyJobs(const StudyOptions& o, const std::vector<size_t>& jobs) {
+  return measureJobs(o, planStudy(o), jobs);
+}
+
+std::vector<nlohmann::json> runStudyJobs(const StudyOptions& o, const Shard& shard) {
   const StudyPlan plan = planStudy(o);
-  std::unique_ptr<gpu::GlContext> context;
-  std::vector<nlohmann::json> records;
-  for (const size_t k : jobs) {
-    if (k >= plan.jobs.size())
-      throw InputError("study", "job",
-                       "the study has " + std::to_string(plan.jobs.size()) + " jobs, no job " +
-                           std::to_string(k));
-    const Measured m = measure(plan.jobs[k], o, plan.ref, context);
-    printProgress(k, plan.jobs.size(), plan.jobs[k], m);
-    records.push_back(record(k, plan.jobs[k], m));
-  }
-  return records;
+  std::vector<size_t> mine;
+  for (size_t k = 0; k < plan.jobs.size(); ++k)
+    if (shard.owns(k)) mine.push_back(k);
+  return measureJobs(o, plan, mine);
 }
 
 int writeStudy(const StudyOptions& o, const std::vector<nlohmann::json>& records) {

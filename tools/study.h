@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/scene.h"
+#include "tools/frames.h"
 #include "validation/reference/image_metrics.h"
 
 namespace voxgi::tools {
@@ -52,6 +53,7 @@ int runStudyFrames(const StudyOptions& options);
 size_t studyJobCount(const StudyOptions& options);
 std::vector<nlohmann::json> runStudyJobs(const StudyOptions& options,
                                          const std::vector<size_t>& jobs);
+std::vector<nlohmann::json> runStudyJobs(const StudyOptions& options, const Shard& shard);
 int writeStudy(const StudyOptions& options, const std::vector<nlohmann::json>& records);
 // --shard and --merge (tools/study_shards.cpp).
 int runStudyShard(const StudyOptions& options);

@@ -43,16 +43,13 @@ int runStudyShard(const StudyOptions& o) {
   const Shard shard = parseShard(o.shard, "--shard");
   const std::string path = shardPath(o.csv, shard.index, shard.count);
   checkOutputPath(path);
-  const size_t count = studyJobCount(o);
-  std::vector<size_t> mine;
-  for (size_t k = 0; k < count; ++k)
-    if (shard.owns(k)) mine.push_back(k);
+  const std::vector<nlohmann::json> records = runStudyJobs(o, shard);
   const nlohmann::json out{{"study", studyFingerprint(o)},
                            {"shard", shard.index},
                            {"shards", shard.count},
-                           {"records", runStudyJobs(o, mine)}};
+                           {"records", records}};
   writeFileAtomically(path, out.dump(1) + "\n");
-  std::cout << "wrote " << path << " (" << mine.size() << " of " << count << " jobs)\n";
+  std::cout << "wrote " << path << " (" << records.size() << " jobs)\n";
   return kExitOk;
 }
 

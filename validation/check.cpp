@@ -26,13 +26,17 @@ const StageSpec& candidateStage(const BufferSet& candidate, const std::string& s
   return stage;
 }
 
-StageReport checkStage(const StageContext& ctx, const BufferSet& oracle,
-                       const BufferSet& candidate) {
-  const StageSpec& stage = candidateStage(candidate, "check");
+void requireOracle(const StageContext& ctx, const StageSpec& stage) {
   if (!ctx.plan.runs(stage.id))
     throw InputError("check", stage.qualifiedName(),
                      "the plan skips this stage for this scene (" + ctx.plan.whySkipped(stage.id) +
-                         "), so there is no oracle to check against");
+                         "), so there is no oracle to check against (voxgi plan says why)");
+}
+
+StageReport checkStage(const StageContext& ctx, const BufferSet& oracle,
+                       const BufferSet& candidate) {
+  const StageSpec& stage = candidateStage(candidate, "check");
+  requireOracle(ctx, stage);
   // The oracle's set with the candidate's buffers in place of its own: the comparison then sees
   // exactly one difference per candidate buffer, and the tie classifiers (which look at both
   // sides' geometry buffers, e.g. the gbuffer's triangle ids) see the candidate's where it gave

@@ -15,6 +15,9 @@ namespace voxgi::validation {
 // is empty or its buffers come from different stages.
 const StageSpec& candidateStage(const BufferSet& candidate, const std::string& source);
 
+// Throws InputError naming `stage` when ctx's plan skips it: there is no oracle to check against.
+void requireOracle(const StageContext& ctx, const StageSpec& stage);
+
 // Compares each buffer of `candidate` (all of one stage) with the oracle's, `oracle` holding the
 // oracle's outputs of that stage and those before it (runPipeline up to it). The report lists the
 // candidate's buffers only; one the plan does not produce fails as `voxgi diff` fails it, and one

@@ -8,18 +8,6 @@
 namespace voxgi::python {
 namespace {
 
-char dtypeKind(ScalarType type) {
-  switch (type) {
-    case ScalarType::u32:
-      return 'u';
-    case ScalarType::i32:
-      return 'i';
-    case ScalarType::f32:
-      return 'f';
-  }
-  return '?';
-}
-
 std::string shapeText(const std::vector<py::ssize_t>& shape) {
   std::string text = "(";
   for (size_t i = 0; i < shape.size(); ++i) text += (i ? ", " : "") + std::to_string(shape[i]);
@@ -65,10 +53,7 @@ py::dtype arrayDtype(ScalarType type) {
 }
 
 std::string describeArray(const std::vector<py::ssize_t>& shape, ScalarType type) {
-  return shapeText(shape) + " " +
-         std::string(type == ScalarType::f32   ? "float32"
-                     : type == ScalarType::i32 ? "int32"
-                                               : "uint32");
+  return shapeText(shape) + " " + std::string(py::str(arrayDtype(type)));
 }
 
 py::array bufferArray(const Buffer& b, py::handle owner) {
@@ -91,7 +76,9 @@ Buffer arrayBuffer(const BufferSpec& spec, glm::ivec3 extent, const py::array& a
   Buffer b(spec, extent);
   const std::vector<py::ssize_t> want = arrayShape(b);
   const std::vector<py::ssize_t> got(array.shape(), array.shape() + array.ndim());
-  if (array.dtype().kind() != dtypeKind(spec.type) || array.dtype().itemsize() != 4 || got != want)
+  const py::dtype word = arrayDtype(spec.type);
+  if (array.dtype().kind() != word.kind() || array.dtype().itemsize() != word.itemsize() ||
+      got != want)
     throw InputError(source, spec.qualifiedName(),
                      "the array is " + shapeText(got) + " " + std::string(py::str(array.dtype())) +
                          ", the buffer " + describeArray(want, spec.type) +

@@ -210,14 +210,14 @@ py::object checkPy(const ScenePtr& scene, const std::string& technique, const st
   BufferSet candidate;
   for (const auto& [spec, array] : given) candidate.put(Buffer(*spec, glm::ivec3(0)));
   validation::candidateStage(candidate, "check");  // one stage's buffers
-  if (!c.technique.plan(*scene, c.settings).runs(stage.id))
-    throw InputError("check", stage.qualifiedName(),
-                     "the plan skips this stage for this scene (" +
-                         c.technique.plan(*scene, c.settings).whySkipped(stage.id) +
-                         "): voxgi.plan() says why");
-  BufferSet oracle;
-  const VoxelTriangles triangles = prepareVoxelTriangles(*scene, scene->grid);
+  VoxelTriangles triangles;
+  {
+    py::gil_scoped_release release;
+    triangles = prepareVoxelTriangles(*scene, scene->grid);
+  }
   const StageContext ctx{c.technique, *scene, c.settings, triangles};
+  validation::requireOracle(ctx, stage);
+  BufferSet oracle;
   {
     py::gil_scoped_release release;
     withThreads(threads, [&] {
