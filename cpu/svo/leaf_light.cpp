@@ -2,6 +2,9 @@
 
 #include <bit>
 
+#include <tbb/blocked_range.h>
+
+#include "cpu/vct/gather_lanes.h"
 #include "shaders/shared/vct/bounce_kernel.h"
 #include "shaders/shared/svo/mip_kernel.h"
 #include "shaders/shared/vct/mip_kernel.h"
@@ -116,6 +119,32 @@ bool SvoVolumes::filterBrickCell(int level, int face, const shared::TrilinearCel
   return true;
 }
 
+namespace {
+
+// TreeBricks::findTile for the lanes: the walk from the root (svoFindTile), which only reads the
+// node words, so every task may share `tree`.
+uint32_t findLaneTile(const void* tree, int level, uint32_t x, uint32_t y, uint32_t z) {
+  const SvoVolumes& v = *static_cast<const SvoVolumes*>(tree);
+  return shared::svoFindTile(v, v.octree.depth - level, glm::uvec3(x, y, z));
+}
+
+}  // namespace
+
+cone_lanes::TreeBricks treeLaneBricks(const SvoVolumes& tree, const TreeBricks& bricks) {
+  const Octree& o = tree.octree;
+  cone_lanes::TreeBricks b{};
+  // Pyramid level l is tree level depth - l; the cones stop below the root (topLevel = depth - 1).
+  for (int level = 0; level < o.depth; ++level) {
+    const int t = o.depth - level;
+    b.levels[level] = reinterpret_cast<const uint32_t*>(bricks.levels[size_t(t)].data());
+    b.firstTile[level] = level == 0 ? 0u : o.levelStart[size_t(t)];
+    b.faces[level] = level == 0 ? 1 : shared::kFaces;
+  }
+  b.findTile = findLaneTile;
+  b.tree = &tree;
+  return b;
+}
+
 TreeBricks treeBricks(const Octree& octree, const LeafRadiance& radiance, const NodeLevels& mips) {
   TreeBricks b;
   b.levels.resize(size_t(octree.depth) + 1);
@@ -178,18 +207,35 @@ LeafRadiance bounceOnce(const Octree& octree, const Leaves& leaves, const LeafRa
                         FrameOutputs* outputs) {
   NodeLevels mips = mipTree(octree, leaves, source, first);
   const TreeBricks bricks = treeBricks(octree, source, mips);
+  const SvoVolumes tree{octree, leaves, &source, &mips, &direct, nullptr, &cones};
+  const cone_lanes::TreeBricks laneBricks = treeLaneBricks(tree, bricks);
+  cone_lanes::Volumes lanes{};
+  lanes.n = params.resolution;
+  lanes.bricks = &laneBricks;
   LeafRadiance next(source.size(), glm::vec4(0.0f));
   const size_t kept = outputs != nullptr ? source.size() : 0;
   LeafRadiance gathered(kept, glm::vec4(0.0f));
   std::vector<glm::vec3> straight(kept, glm::vec3(0.0f));
-  forEachRealLeaf(octree, [&](size_t slot, glm::ivec3 v) {
-    SvoVolumes volumes{octree, leaves, &source, &mips, &direct, nullptr, &cones};
-    volumes.bricks = &bricks;
-    const glm::vec3 g = shared::gatherVoxel(volumes, v, params);
-    next[slot] = shared::addReflected(direct[slot], volumes.albedoAt(v), g);
-    if (outputs == nullptr) return;
-    gathered[slot] = glm::vec4(g * direct[slot].a, direct[slot].a);
-    straight[slot] = g;
+  // Leaf tiles a task: a few thousand cones, enough to keep every lane busy.
+  const tbb::blocked_range<size_t> tiles(0, octree.leafTileCount(), 64);
+  parallelFor(tiles, [&](const tbb::blocked_range<size_t>& range) {
+    SvoVolumes volumes = tree;  // its tile memo is the task's own
+    std::vector<size_t> slots;
+    std::vector<glm::ivec3> voxels;
+    forEachRealLeaf(octree, range, [&](size_t slot, glm::ivec3 v) {
+      slots.push_back(slot);
+      voxels.push_back(v);
+    });
+    std::vector<glm::vec3> g(voxels.size());
+    GatherScratch scratch;
+    gatherVoxels(simdLevel(), volumes, lanes, voxels, params, g, scratch);
+    for (size_t i = 0; i < slots.size(); ++i) {
+      const size_t slot = slots[i];
+      next[slot] = shared::addReflected(direct[slot], volumes.albedoAt(voxels[i]), g[i]);
+      if (outputs == nullptr) continue;
+      gathered[slot] = glm::vec4(g[i] * direct[slot].a, direct[slot].a);
+      straight[slot] = g[i];
+    }
   });
   if (outputs != nullptr) *outputs = {std::move(mips), std::move(gathered), std::move(straight)};
   return next;

@@ -7,9 +7,12 @@
 #include <bit>
 #include <vector>
 
+#include <tbb/blocked_range.h>
+
 #include "common/parallel.h"
 #include "common/svo/light_types.h"
 #include "cpu/svo/octree.h"
+#include "cpu/vct/cone_lanes.h"
 #include "shaders/shared/svo/svo_sample.h"
 #include "shaders/shared/vct/cone_types.h"
 #include "shaders/shared/vct/light_voxels_kernel.h"
@@ -29,6 +32,11 @@ struct TreeBricks {
   std::vector<std::vector<glm::vec4>> levels;
 };
 TreeBricks treeBricks(const Octree& octree, const LeafRadiance& radiance, const NodeLevels& mips);
+
+struct SvoVolumes;
+// The bricks as the cone lanes read them (cone_lanes.h), their tiles found through `tree`'s node
+// words; both must outlive the result.
+cone_lanes::TreeBricks treeLaneBricks(const SvoVolumes& tree, const TreeBricks& bricks);
 
 // What the shared kernels read: the leaves (pyramid level 0) and node levels (pyramid level m is
 // tree level depth - m), found by walking the tree (svo_layout.h) with the last tile remembered.
@@ -74,10 +82,11 @@ struct SvoVolumes {
   }
 };
 
-// Calls f(leaf slot, leaf coordinate) for every leaf that holds samples, in parallel over tiles.
+// Calls f(leaf slot, leaf coordinate) for every leaf of the leaf tiles in `tiles` that holds
+// samples, in slot order.
 template <class F>
-void forEachRealLeaf(const Octree& octree, const F& f) {
-  parallelFor(size_t(0), octree.leafTileCount(), [&](size_t t) {
+void forEachRealLeaf(const Octree& octree, const tbb::blocked_range<size_t>& tiles, const F& f) {
+  for (size_t t = tiles.begin(); t != tiles.end(); ++t) {
     const uint32_t key = octree.leafTiles[t * shared::kTileWords + shared::kTileKey];
     const uint32_t parent = octree.leafTiles[t * shared::kTileWords + shared::kTileParent];
     const uint32_t mask = (octree.nodes[size_t(parent) * shared::kNodeWords + shared::kNodeFlags] >>
@@ -86,7 +95,14 @@ void forEachRealLeaf(const Octree& octree, const F& f) {
     for (uint32_t local = 0; local < 8; ++local)
       if ((mask >> local) & 1u)
         f(t * 8 + local, glm::ivec3(shared::mortonDecode((key << 3) | local)));
-  });
+  }
+}
+
+// The same for every leaf tile, in parallel over tiles.
+template <class F>
+void forEachRealLeaf(const Octree& octree, const F& f) {
+  parallelFor(size_t(0), octree.leafTileCount(),
+              [&](size_t t) { forEachRealLeaf(octree, tbb::blocked_range<size_t>(t, t + 1), f); });
 }
 
 // Radiance the leaves send out before any bounce: emission plus the analytic lights' diffuse

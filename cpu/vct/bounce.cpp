@@ -1,12 +1,13 @@
-// CPU bounce stage: the shared kernel (shaders/shared/vct/bounce_kernel.h) per voxel, then the
-// pyramid again, bounce.count times. Each voxel is written by one task, so any thread count gives
-// the same bits.
+// CPU bounce stage: the shared kernel (shaders/shared/vct/bounce_kernel.h) per voxel, its cones
+// marched in lanes (cpu/vct/gather_lanes.h), then the pyramid again, bounce.count times. Each voxel
+// is written by one task, so any thread count gives the same bits.
 #include <tbb/blocked_range.h>
 
 #include "common/parallel.h"
 #include "common/vct/bounce.h"
 #include "common/vct/radiance_buffers.h"
 #include "cpu/vct/cone_volumes.h"
+#include "cpu/vct/gather_lanes.h"
 #include "cpu/vct/pyramid.h"
 #include "cpu/stages.h"
 #include "shaders/shared/vct/bounce_kernel.h"
@@ -55,14 +56,22 @@ void vct::bounce(const StageContext& ctx, BufferSet& buffers) {
                                  setup.lights, setup.cones);
       const BounceVolumes volumes{previous, direct, buffers.at(BufferId::common_voxelize_albedo),
                                   buffers.at(BufferId::common_voxelize_normal), ctx.scene.grid};
-      parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
+      const cone_lanes::Volumes lanes = laneVolumes(previous);
+      // shared::bounceVoxel per voxel, the rows' cones marched together in lanes.
+      parallelFor(tbb::blocked_range<int>(0, n * n, 8), [&](const auto& rows) {
+        std::vector<glm::ivec3> voxels;
         for (int row = rows.begin(); row != rows.end(); ++row)
-          for (int x = 0; x < n; ++x) {
-            const glm::ivec3 v(x, row % n, row / n);
-            const glm::vec4 r = shared::bounceVoxel(volumes, v, setup.params);
-            const size_t e = volumes.index(v);
-            for (int c = 0; c < 4; ++c) next.set(e, c, r[c]);
-          }
+          for (int x = 0; x < n; ++x) voxels.emplace_back(x, row % n, row / n);
+        std::vector<glm::vec3> gathered(voxels.size());
+        GatherScratch scratch;
+        gatherVoxels(simdLevel(), volumes, lanes, voxels, setup.params, gathered, scratch);
+        for (size_t i = 0; i < voxels.size(); ++i) {
+          const glm::ivec3 v = voxels[i];
+          const glm::vec4 r =
+              shared::addReflected(volumes.directAt(v), volumes.albedoAt(v), gathered[i]);
+          const size_t e = volumes.index(v);
+          for (int c = 0; c < 4; ++c) next.set(e, c, r[c]);
+        }
       });
     }
     radiance = std::move(next);

@@ -36,12 +36,25 @@ void marchCones(SimdLevel level, const ConeVolumes& volumes, std::span<const Con
 // as plain pointers, so that the code built for AVX2 or AVX-512 calls no inline function another
 // unit shares (an out-of-line copy of one could be the one the whole program links).
 namespace cone_lanes {
+// The sparse voxel octree's levels as bricks (cpu/svo/leaf_light.h, TreeBricks) in place of dense
+// levels: pyramid level l's trilinear cell is read from the 3^3 brick of the tile that holds its
+// lowest corner, as SvoVolumes::filterBrickCell reads it.
+struct TreeBricks {
+  const uint32_t* levels[16];  // per pyramid level: a tile's 27 texels of faces[l] x 4 words each
+  uint32_t firstTile[16];      // the level's first tile number (its bricks start there)
+  int faces[16];               // 1 (the leaves) or 6 (a node level's faces)
+  // The tile number at pyramid level `level`, tile coordinate (x, y, z); shared::kSvoNull where
+  // there is none. Called only when a lane's last tile at that level was another.
+  uint32_t (*findTile)(const void* tree, int level, uint32_t x, uint32_t y, uint32_t z);
+  const void* tree;
+};
 struct Volumes {
   const uint32_t* levels[16];    // ConeVolumes::levels
   const uint64_t* occupied[16];  // each level's CellOccupancy::bits()
   size_t occupiedSide[16];       // and CellOccupancy::side()
   int faces;
   int n;
+  const TreeBricks* bricks = nullptr;  // set: the octree's bricks, not the dense levels above
 };
 void marchConesSse2(const Volumes& volumes, std::span<const ConeJob> jobs, int kind,
                     const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
@@ -50,5 +63,13 @@ void marchConesAvx2(const Volumes& volumes, std::span<const ConeJob> jobs, int k
 void marchConesAvx512(const Volumes& volumes, std::span<const ConeJob> jobs, int kind,
                       const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
 }  // namespace cone_lanes
+
+// What the lanes read of a dense pyramid.
+cone_lanes::Volumes laneVolumes(const ConeVolumes& volumes);
+
+// marchCones over `volumes` as they are (a dense pyramid or the octree's bricks) on the lanes of
+// `level`.
+void marchCones(SimdLevel level, const cone_lanes::Volumes& volumes, std::span<const ConeJob> jobs,
+                int kind, const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits);
 
 }  // namespace voxgi::cpu

@@ -172,12 +172,58 @@ bool cellEmpty(const Volumes& volumes, int level, const Cell& c) {
   return (volumes.occupied[level][i >> 6] >> (i & 63) & 1u) == 0u;
 }
 
+// A lane's last tile at each pyramid level of the octree (TreeBricks::findTile), so that a cone's
+// next sample in the same tile finds it without walking the tree.
+struct TileMemo {
+  uint64_t key[16];  // the tile coordinate, packed; kNoTileKey: none yet
+  uint32_t tile[16];
+};
+constexpr uint64_t kNoTileKey = ~uint64_t(0);
+constexpr uint32_t kNoTile = 0xffffffffu;  // shared::kSvoNull
+constexpr int kBrickSide = 3;              // shared::brickTexel's
+
+// The eight texels of cell c in its tile's brick at pyramid `level` (SvoVolumes::filterBrickCell):
+// null for a texel left of the grid, all null without a tile.
+CellTaps brickTaps(const TreeBricks& bricks, int level, const Cell& c, TileMemo& memo) {
+  int t[3], o[3];
+  for (int k = 0; k < 3; ++k) {
+    t[k] = (c.base[k] > 0 ? c.base[k] : 0) >> 1;
+    o[k] = c.base[k] - 2 * t[k];
+  }
+  const uint64_t key = uint64_t(t[0]) | uint64_t(t[1]) << 21 | uint64_t(t[2]) << 42;
+  if (memo.key[level] != key) {
+    memo.key[level] = key;
+    memo.tile[level] =
+        bricks.findTile(bricks.tree, level, uint32_t(t[0]), uint32_t(t[1]), uint32_t(t[2]));
+  }
+  CellTaps taps;
+  const uint32_t tile = memo.tile[level];
+  const size_t stride = 4 * size_t(bricks.faces[level]);
+  const uint32_t* brick =
+      tile == kNoTile
+          ? nullptr
+          : bricks.levels[level] + size_t(tile - bricks.firstTile[level]) *
+                                       size_t(kBrickSide * kBrickSide * kBrickSide) * stride;
+  for (int k = 0; k < 8; ++k) {
+    const int x = o[0] + (k & 1), y = o[1] + (k >> 1 & 1), z = o[2] + (k >> 2);
+    const bool in = brick != nullptr && x >= 0 && y >= 0 && z >= 0;
+    taps.voxel[k] = in ? brick + stride * size_t(x + kBrickSide * (y + kBrickSide * z)) : nullptr;
+  }
+  return taps;
+}
+
 // shared::sampleLevel over the trilinear cell c of `level`.
 Texel sampleLevel(const Volumes& volumes, int level, const Cell& c, const LaneCone& cone,
-                  const shared::ConeTraceParams& params) {
-  if (cellEmpty(volumes, level, c)) return texel(0.0f);
+                  const shared::ConeTraceParams& params, TileMemo& memo) {
   const bool directional = level > 0 && params.directional != 0;
-  const CellTaps taps = cellTaps(volumes, level, c, directional ? 4 * size_t(volumes.faces) : 4);
+  CellTaps taps;
+  if (volumes.bricks != nullptr) {
+    // The octree has no occupancy bits: an empty cell blends its zero texels to +0.
+    taps = brickTaps(*volumes.bricks, level, c, memo);
+  } else {
+    if (cellEmpty(volumes, level, c)) return texel(0.0f);
+    taps = cellTaps(volumes, level, c, directional ? 4 * size_t(volumes.faces) : 4);
+  }
   if (!directional) return blendCell(taps, 0, c.f);
   Texel sum = texel(0.0f);
   for (int axis = 0; axis < 3; ++axis)
@@ -226,6 +272,7 @@ struct LaneState {
   alignas(kAlign) float steps[kLanes];      // steps taken (exact integers)
   long job[kLanes];                         // -1: idle
   LaneCone cone[kLanes];
+  TileMemo memo[kLanes];  // kept from cone to cone: a lane's next cone starts nearby
 };
 
 // A vector's components by index, without glm's operator[].
@@ -247,6 +294,8 @@ void VOXGI_CONE_LANES_NAME(VOXGI_CONE_LANES_SUFFIX)(const Volumes& volumes,
   const bool ambient = params.ambientOcclusion == 1 && kind <= shared::kMarchFirstHit;
   const bool radiance = kind <= shared::kMarchFirstHit;
   LaneState st;
+  for (TileMemo& m : st.memo)
+    for (uint64_t& key : m.key) key = kNoTileKey;
   size_t next = 0;
   const auto start = [&](int j) {
     st.job[j] = next < jobs.size() ? long(next) : -1;
@@ -331,9 +380,10 @@ void VOXGI_CONE_LANES_NAME(VOXGI_CONE_LANES_SUFFIX)(const Volumes& volumes,
       Texel s = texel(0.0f);
       if (sampling >> j & 1) {
         const int l = int(l0s[j]);
-        s = sampleLevel(volumes, l, lower.at(j), st.cone[j], params);
+        s = sampleLevel(volumes, l, lower.at(j), st.cone[j], params, st.memo[j]);
         if (fs[j] != 0.0f)
-          s = lerp(s, sampleLevel(volumes, l + 1, upper.at(j), st.cone[j], params), fs[j]);
+          s = lerp(s, sampleLevel(volumes, l + 1, upper.at(j), st.cone[j], params, st.memo[j]),
+                   fs[j]);
       }
       alignas(16) float v[4];  // one texel
       _mm_store_ps(v, s.v);

@@ -12,6 +12,7 @@
 #include "common/vct/bounce.h"
 #include "cpu/svo/leaf_light.h"
 #include "cpu/vct/cone_volumes.h"
+#include "cpu/vct/gather_lanes.h"
 #include "shaders/shared/vct/bounce_kernel.h"
 #include "tests/svo/tree_samples.h"
 #include "tests/test_scenes.h"
@@ -151,6 +152,70 @@ TEST(SvoLight, OctreeOfADenseGridGivesTheDensePyramidAndConeResults) {
     gathered += a.x > voxelValue(radiance, v).x;
   }
   EXPECT_GT(gathered, samples.size() / 2);  // the bounce added light, not only passed it on
+}
+
+bool sameBits(glm::vec3 a, glm::vec3 b) {
+  return sameBits(glm::vec4(a, 0.0f), glm::vec4(b, 0.0f));
+}
+
+// The gather in lanes (cpu/vct/gather_lanes.h) gives the bounce kernel's gatherVoxel bit for bit on
+// every SIMD level this CPU runs: through the octree's bricks (the svo gather) and through the
+// dense pyramid (the vct bounce), for voxels with one normal, with normals that cancel (two
+// hemispheres: some leaves' normals zeroed here) and empty voxels.
+TEST(SvoLight, TheGatherInLanesIsTheKernelsOnEverySimdLevel) {
+  constexpr int kDepth = 5, kN = 1 << kDepth;
+  DenseTree t = denseTree(kDepth, "mip");
+  std::vector<glm::ivec3> voxels;
+  size_t twoSided = 0;
+  cpu::svo::forEachRealLeaf(t.octree, [&](size_t slot, glm::ivec3) {
+    if (slot % 7 == 3) t.leaves.normal[slot] = glm::vec3(0.0f);
+  });
+  for (size_t tile = 0; tile < t.octree.leafTileCount(); ++tile)
+    cpu::svo::forEachRealLeaf(t.octree, tbb::blocked_range<size_t>(tile, tile + 1),
+                              [&](size_t slot, glm::ivec3 v) {
+                                voxels.push_back(v);
+                                twoSided += t.leaves.normal[slot] == glm::vec3(0.0f);
+                              });
+  ASSERT_GT(twoSided, 50u);
+  const ConeTraceSetup& setup = t.bounce;
+  const Octree& o = t.octree;
+  const NodeLevels mips = cpu::svo::mipTree(o, t.leaves, t.radiance, FirstStep::plain);
+  const cpu::svo::TreeBricks bricks = cpu::svo::treeBricks(o, t.radiance, mips);
+  const SvoVolumes taps{o, t.leaves, &t.radiance, &mips, &t.radiance, nullptr, &setup.cones};
+  SvoVolumes tree = taps;
+  tree.bricks = &bricks;
+  const cpu::cone_lanes::TreeBricks laneBricks = cpu::svo::treeLaneBricks(tree, bricks);
+  cpu::cone_lanes::Volumes treeLanes{};
+  treeLanes.n = kN;
+  treeLanes.bricks = &laneBricks;
+
+  const Buffer& radiance = t.dense.at(BufferId::vct_light_voxels_radiance);
+  const cpu::ConeVolumes pyramid(radiance, t.dense.at(BufferId::vct_mip_radiance_mips6),
+                                 MipMode::anisotropic, kN, setup.lights, setup.cones);
+  const DenseVolumes dense{pyramid, radiance, t.dense.at(BufferId::common_voxelize_albedo),
+                           t.dense.at(BufferId::common_voxelize_normal), t.scene.grid};
+  std::vector<glm::ivec3> denseVoxels = voxels;
+  for (int x = 0; x < kN; x += 3) denseVoxels.emplace_back(x, kN / 2, kN / 2);  // the empty inside
+
+  for (const cpu::SimdLevel level : cpu::runnableSimdLevels()) {
+    SCOPED_TRACE(std::string(cpu::simdLevelName(level)));
+    cpu::GatherScratch scratch;
+    std::vector<glm::vec3> lanes(voxels.size());
+    cpu::gatherVoxels(level, tree, treeLanes, voxels, setup.params, lanes, scratch);
+    size_t lit = 0;
+    for (size_t i = 0; i < voxels.size(); ++i) {
+      const glm::vec3 one = shared::gatherVoxel(taps, voxels[i], setup.params);
+      ASSERT_TRUE(sameBits(lanes[i], one)) << "octree, voxel " << i;
+      lit += one.x > 0.0f;
+    }
+    EXPECT_GT(lit, voxels.size() / 2);
+    std::vector<glm::vec3> denseLanes(denseVoxels.size());
+    cpu::gatherVoxels(level, dense, cpu::laneVolumes(pyramid), denseVoxels, setup.params,
+                      denseLanes, scratch);
+    for (size_t i = 0; i < denseVoxels.size(); ++i)
+      ASSERT_TRUE(sameBits(denseLanes[i], shared::gatherVoxel(dense, denseVoxels[i], setup.params)))
+          << "dense, voxel " << i;
+  }
 }
 
 // Progressive bounces [Salm 2015, §4.4.3]: with static light, frame t's radiance is the explicit
