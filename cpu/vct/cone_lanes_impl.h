@@ -218,8 +218,10 @@ Texel sampleLevel(const Volumes& volumes, int level, const Cell& c, const LaneCo
   const bool directional = level > 0 && params.directional != 0;
   CellTaps taps;
   if (volumes.bricks != nullptr) {
-    // The octree has no occupancy bits: an empty cell blends its zero texels to +0.
+    // A cell without a tile reads eight zero texels, which blend to +0 on every face. (Its last
+    // texel, base + 1 on each axis, is never left of the grid: null only without a tile.)
     taps = brickTaps(*volumes.bricks, level, c, memo);
+    if (taps.voxel[7] == nullptr) return texel(0.0f);
   } else {
     if (cellEmpty(volumes, level, c)) return texel(0.0f);
     taps = cellTaps(volumes, level, c, directional ? 4 * size_t(volumes.faces) : 4);

@@ -5,6 +5,7 @@
 
 #include "gpu/program.h"
 #include "shaders/shared/svo/svo_layout.h"
+#include "shaders/shared/vct/mip_kernel.h"
 
 namespace voxgi::gpu::svo {
 namespace {
@@ -107,6 +108,21 @@ void leafPass(const Gl& gl, const Tree& t, const Volumes& v, const ShaderSource&
 
 }  // namespace
 
+GLuint buildBricks(const Gl& gl, GLuint nodes, GLuint tileRecords, GLuint interior,
+                   size_t tileCount, int faces) {
+  const size_t texels = tileCount * shared::kBrickTexels;
+  const GLuint bricks = createBuffer(gl, std::max<size_t>(texels, 1) * size_t(faces) * 16, nullptr);
+  Program program(gl, {&shaders::svo_mip_brick_comp});
+  program.use();
+  program.set("uCount", unsigned(texels));
+  program.set("uFaces", unsigned(faces));
+  const GLuint blocks[] = {nodes, tileRecords, interior, bricks};
+  for (GLuint b = 0; b < 4; ++b) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, blocks[b]);
+  dispatchLinear(gl, texels);
+  gl.check("bricks");
+  return bricks;
+}
+
 LeafRadiance injectLeaves(GlContext& context, const Tree& tree, const voxgi::svo::Leaves& leaves,
                           const std::vector<shared::LightData>& lights,
                           const shared::LightVoxelsParams& params) {
@@ -136,11 +152,19 @@ LeafRadiance bounceOnce(GlContext& context, const Tree& tree, const voxgi::svo::
   const Gl& gl = context.gl();
   const Volumes v(gl, tree, leaves, &source);
   NodeLevels mips = mipInto(gl, tree, v, first);
+  // Every level as bricks, so that a cone's trilinear cell is one walk and eight texels
+  // ([Salm 2015, §4.4]), as on the CPU.
+  GlBuffer tiles(gl, createBuffer(gl, tree.words.tiles.size() * 4, tree.words.tiles.data()));
+  GlBuffer leafBricks(
+      gl, buildBricks(gl, v.nodes.get(), v.leafTiles.get(), v.source.get(), v.slots / 8, 1));
+  GlBuffer nodeBricks(gl, buildBricks(gl, v.nodes.get(), tiles.get(), v.nodeFaces.get(),
+                                      v.nodeCount / 8, shared::kFaces));
   GlBuffer coneBlock(gl, createBlock(gl, params, cones));
   GlBuffer directBlock(gl, upload(gl, direct));
   GlBuffer frame(gl, createBuffer(gl, 2 * v.slots * sizeof(glm::vec4), nullptr));
   leafPass(gl, tree, v, shaders::svo_propagate_gather_comp,
-           {coneBlock.get(), directBlock.get(), frame.get()}, "propagate_gather");
+           {coneBlock.get(), directBlock.get(), frame.get(), leafBricks.get(), nodeBricks.get()},
+           "propagate_gather");
   const std::vector<glm::vec4> both = download(gl, frame.get(), 2 * v.slots);
   LeafRadiance next(v.slots), gathered(v.slots);
   std::vector<glm::vec3> straight(v.slots);

@@ -21,6 +21,12 @@ struct Tree {
   int depth;
 };
 
+// A new buffer of the bricks of `tileCount` tiles (shaders/svo/mip_brick.comp): 27 texels of
+// `faces` RGBA values each, from `interior`'s `faces` values per voxel (8 a tile), the tiles'
+// records in `tileRecords` (leaf tiles, or the node tiles) and their neighbours through `nodes`.
+GLuint buildBricks(const Gl& gl, GLuint nodes, GLuint tileRecords, GLuint interior,
+                   size_t tileCount, int faces);
+
 voxgi::svo::LeafRadiance injectLeaves(GlContext& context, const Tree& tree,
                                       const voxgi::svo::Leaves& leaves,
                                       const std::vector<shared::LightData>& lights,

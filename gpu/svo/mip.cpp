@@ -22,18 +22,12 @@ void svo::mip(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   buffers.put(nodeFacesBuffer(mipTree(context, tree, leaves, radiance, first)));
 
   const Buffer& gathered = buffers.at(BufferId::svo_propagate_gathered);
-  const size_t texels = words.leafTiles.size() / shared::kTileWords * shared::kBrickTexels;
+  const size_t tiles = words.leafTiles.size() / shared::kTileWords;
+  const size_t texels = tiles * shared::kBrickTexels;
   GlBuffer nodes(gl, createBuffer(gl, words.nodes.size() * 4, words.nodes.data()));
   GlBuffer leafTiles(gl, createBuffer(gl, words.leafTiles.size() * 4, words.leafTiles.data()));
   GlBuffer interior(gl, uploadWords(gl, gathered));
-  GlBuffer bricks(gl, createBuffer(gl, texels * 16, nullptr));
-  Program program(gl, {&shaders::svo_mip_brick_comp});
-  program.use();
-  program.set("uCount", unsigned(texels));
-  const GLuint blocks[] = {nodes.get(), leafTiles.get(), interior.get(), bricks.get()};
-  for (GLuint b = 0; b < 4; ++b) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, b, blocks[b]);
-  dispatchLinear(gl, texels);
-  gl.check("mip: bricks");
+  GlBuffer bricks(gl, svo::buildBricks(gl, nodes.get(), leafTiles.get(), interior.get(), tiles, 1));
   Buffer out(BufferId::svo_mip_gathered_bricks, glm::ivec3(int(texels), 1, 1));
   readWords(gl, bricks.get(), out);
   buffers.put(std::move(out));

@@ -2,7 +2,8 @@
 // One gather at every leaf that holds samples (shaders/shared/vct/bounce_kernel.h through the
 // octree): the diffuse cones over the mipmap of the previous frame's radiance, giving the next
 // frame's radiance and the gathered E / pi with the opacity (straight: the host premultiplies it,
-// as the CPU does, and keeps it for propagate.carry). One invocation per leaf slot.
+// as the CPU does, and keeps it for propagate.carry). One invocation per leaf slot. The cones read
+// the levels through their bricks.
 layout(local_size_x = 64) in;
 #include "shared/vct/cone_types.h"
 #include "svo_volumes.glsl"
@@ -17,6 +18,21 @@ vec4 directAt(ivec3 v) {
   return s == kSvoNull ? vec4(0.0f) : direct[s];
 }
 ConeData coneAt(int i);  // defined below, after the cone block
+
+// The source's levels as bricks (gpu/svo/leaf_light.cpp, buildBricks): the cones read a trilinear
+// cell with one walk and eight texels, not a walk per texel.
+layout(std430, binding = 8) readonly buffer LeafBricks { vec4 leafBricks[]; };  // 27 a leaf tile
+layout(std430, binding = 9) readonly buffer NodeBricks { vec4 nodeBricks[]; };  // 27 x 6 a tile
+vec4 svoBrickAt(int level, int face, uint tile, uint texel) {
+  uint e = tile * uint(kBrickTexels) + texel;
+  return level == uDepth ? leafBricks[e] : nodeBricks[e * 6u + uint(face)];
+}
+#include "shared/svo/svo_sample.h"
+// Pyramid level `level` is tree level uDepth - level (svo_pyramid.glsl).
+vec4 filterBrickCell(int level, int face, TrilinearCell c) {
+  return svoFilterCell(uDepth - level, face, c);
+}
+#define VOXGI_BRICK_CELLS
 
 #include "shared/vct/bounce_kernel.h"
 

@@ -49,6 +49,11 @@ VOLUME_FN vec4 filterCell(VOLUMES_IN int level, int face, TrilinearCell c, int s
     if (volumes.filterBrickCell(level, face, c, fromBricks)) return fromBricks;
   }
 #endif
+#ifdef VOXGI_BRICK_CELLS
+  // A GLSL includer that stores whole cells defines filterBrickCell (the octree's gather,
+  // shaders/svo/propagate_gather.comp): the same eight values in the same order.
+  return filterBrickCell(level, face, c);
+#else
   ivec3 i = c.base;
   vec3 f = c.f;
   bool inside = c.inside;
@@ -61,6 +66,7 @@ VOLUME_FN vec4 filterCell(VOLUMES_IN int level, int face, TrilinearCell c, int s
   vec4 c011 = pyramidVoxel(VOLUMES level, face, i + ivec3(0, 1, 1), size, inside);
   vec4 c111 = pyramidVoxel(VOLUMES level, face, i + ivec3(1, 1, 1), size, inside);
   return blendCell(c000, c100, c010, c110, c001, c101, c011, c111, f);
+#endif
 }
 
 // One level as seen by a cone travelling along `dir`: the isotropic level, or the three faces of
