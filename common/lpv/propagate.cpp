@@ -67,6 +67,28 @@ Propagation preparePropagation(const LpvSettings& s, int resolution) {
   return out;
 }
 
+std::vector<uint32_t> packStoredVolume(const std::vector<float>& volume, int values,
+                                       const shared::PropagateParams& params) {
+  const size_t cells = volume.size() / size_t(values);
+  const size_t words = size_t(shared::packedCellWords(values));
+  std::vector<uint32_t> packed(cells * words, 0u);
+  for (size_t cell = 0; cell < cells; ++cell)
+    for (int v = 0; v < values; ++v) {
+      uint32_t& w = packed[cell * words + size_t(v / 2)];
+      w = shared::packStored(w, v % 2, volume[cell * size_t(values) + size_t(v)], params);
+    }
+  return packed;
+}
+
+void unpackStoredVolume(const uint32_t* packed, size_t cells, int values,
+                        const shared::PropagateParams& params, float* out) {
+  const size_t words = size_t(shared::packedCellWords(values));
+  for (size_t cell = 0; cell < cells; ++cell)
+    for (int v = 0; v < values; ++v)
+      out[cell * size_t(values) + size_t(v)] =
+          shared::unpackStored(packed[cell * words + size_t(v / 2)], v % 2, params);
+}
+
 void prepareStorage(const LpvSettings& s, shared::PropagateParams& params,
                     std::vector<float>& volume) {
   params.halfPrecision = 0;

@@ -3,6 +3,7 @@
 // computed in double and rounded once) and the step's parameters.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "common/stage.h"
@@ -24,6 +25,15 @@ Propagation preparePropagation(const LpvSettings& s, int resolution);
 // thesis's RGBA16F volumes hold it; with f32, leaves both as they are.
 void prepareStorage(const LpvSettings& s, shared::PropagateParams& params,
                     std::vector<float>& volume);
+
+// The GPU's packed form of a volume of `values` stored values a cell under lpv.storage=f16
+// (shaders/shared/lpv/storage.h): two halves a word, each cell padded to whole words. Exact both
+// ways for values storedValue gave.
+std::vector<uint32_t> packStoredVolume(const std::vector<float>& volume, int values,
+                                       const shared::PropagateParams& params);
+// The `cells` cells of `packed` back into f32 values, `values` a cell, into `out`.
+void unpackStoredVolume(const uint32_t* packed, size_t cells, int values,
+                        const shared::PropagateParams& params, float* out);
 
 // Whether step `step` (1 for the step LPV_0 -> LPV_1) is occluded: from the second step on, as
 // [Martin 2012, §3.2.3] and Kaplanyan & Dachsbacher do, since the first would block VPLs by their

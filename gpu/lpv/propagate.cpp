@@ -1,6 +1,9 @@
 // GPU propagate stage: LPV_0 from the fixed-point sums on the host (common/lpv/inject.h, as
 // the CPU's), then shaders/lpv/propagate.comp propagate.steps times between two storage buffers,
-// all on the GPU; each step is copied into the history buffer when the plan keeps it.
+// all on the GPU (under lpv.storage=f16 packed two halves a word); each step is copied into the
+// history buffer when the plan keeps it.
+#include <algorithm>
+#include <cstring>
 #include <vector>
 
 #include "common/lpv/inject.h"
@@ -9,6 +12,7 @@
 #include "gpu/program.h"
 #include "gpu/stages.h"
 #include "gpu/volumes.h"
+#include "shaders/shared/lpv/storage.h"
 
 namespace voxgi::gpu {
 
@@ -20,17 +24,25 @@ void lpv::propagate(GlContext& context, const StageContext& ctx, BufferSet& buff
   voxgi::lpv::Propagation setup = voxgi::lpv::preparePropagation(s, n);
   std::vector<float> initial = voxgi::lpv::injectedVolume(ctx, buffers.at(sh.intensitySum));
   voxgi::lpv::prepareStorage(s, setup.params, initial);
-  const size_t bytes = initial.size() * 4;
+  // A cell's words: its f32 values, or under lpv.storage=f16 its values packed two halves a word
+  // (shaders/shared/lpv/storage.h), which halves the volumes' memory on the GPU.
+  const int values = 3 * setup.params.coefficients;
+  const bool packed = setup.params.halfPrecision != 0;
+  const size_t cells = size_t(n) * size_t(n) * size_t(n);
+  std::vector<uint32_t> words(cells * size_t(packed ? shared::packedCellWords(values) : values));
+  if (packed)
+    words = voxgi::lpv::packStoredVolume(initial, values, setup.params);
+  else
+    std::memcpy(words.data(), initial.data(), words.size() * 4);
+  const size_t bytes = words.size() * 4;
   const bool history = ctx.plan.on(sh.history);
 
   requireStorageBlock(gl, ctx, bytes, "the SH volumes");
   GlBuffer entryBlock(gl, createBlock(gl, setup.params, setup.entries));
-  GlBuffer volumes[2] = {GlBuffer(gl, createBuffer(gl, bytes, initial.data())),
+  GlBuffer volumes[2] = {GlBuffer(gl, createBuffer(gl, bytes, words.data())),
                          GlBuffer(gl, createBuffer(gl, bytes, nullptr))};
-  const std::vector<float> zeros(s.accumulateInjection == LpvToggle::on ? 0 : initial.size());
-  GlBuffer accumulated(
-      gl, createBuffer(gl, bytes,
-                       s.accumulateInjection == LpvToggle::on ? initial.data() : zeros.data()));
+  if (s.accumulateInjection == LpvToggle::off) std::fill(words.begin(), words.end(), 0u);
+  GlBuffer accumulated(gl, createBuffer(gl, bytes, words.data()));
   const Buffer* blocking = buffers.find(BufferId::lpv_inject_geometry_blocking);
   GlBuffer blockingBlock(
       gl, blocking != nullptr ? uploadWords(gl, *blocking) : createBuffer(gl, 16, nullptr));
@@ -60,12 +72,22 @@ void lpv::propagate(GlContext& context, const StageContext& ctx, BufferSet& buff
                                 GLsizeiptr(bytes));
     gl.check("propagate: dispatch");
   }
+  // Reads `volumeCount` volumes of `from` into `out` as f32 words.
+  const auto readVolumes = [&](GLuint from, Buffer& out, size_t volumeCount) {
+    if (!packed) return readWords(gl, from, out);
+    std::vector<uint32_t> all(words.size() * volumeCount);
+    gl.GetNamedBufferSubData(from, 0, GLsizeiptr(all.size() * 4), all.data());
+    std::vector<float> unpacked(cells * volumeCount * size_t(values));
+    voxgi::lpv::unpackStoredVolume(all.data(), cells * volumeCount, values, setup.params,
+                                   unpacked.data());
+    std::memcpy(out.words.data(), unpacked.data(), unpacked.size() * 4);
+  };
   Buffer out(sh.accumulated, glm::ivec3(n));
-  readWords(gl, accumulated.get(), out);
+  readVolumes(accumulated.get(), out, 1);
   buffers.put(std::move(out));
   if (history) {
     Buffer all(sh.steps, glm::ivec3(n, n, n * (setup.steps + 1)));
-    readWords(gl, steps.get(), all);
+    readVolumes(steps.get(), all, size_t(setup.steps) + 1);
     buffers.put(std::move(all));
   }
   gl.check("propagate: reading back");

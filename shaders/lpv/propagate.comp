@@ -9,9 +9,11 @@ layout(std430, binding = 0) readonly buffer Entries {
   PropagateParams params;
   PropagationEntry entries[];
 };
-layout(std430, binding = 1) readonly buffer Previous { float previous[]; };
-layout(std430, binding = 2) writeonly buffer Next { float next[]; };
-layout(std430, binding = 3) buffer Accumulated { float accumulated[]; };
+// The step volumes and the accumulated one: f32 words, or under lpv.storage=f16 two stored halves a
+// word (storage.h, packStored), half the memory, as the thesis's RGBA16F volumes.
+layout(std430, binding = 1) readonly buffer Previous { uint previous[]; };
+layout(std430, binding = 2) buffer Next { uint next[]; };
+layout(std430, binding = 3) buffer Accumulated { uint accumulated[]; };
 layout(std430, binding = 4) readonly buffer Blocking { vec4 blocking[]; };
 layout(location = 0) uniform int uOcclude;
 
@@ -22,8 +24,14 @@ int cellIndex(ivec3 v) {
 PropagationEntry entryAt(int e) { return entries[e]; }
 int coefficientCount() { return params.coefficients; }
 int colourCount() { return 3; }
+int cellWords() {
+  int values = 3 * params.coefficients;
+  return params.halfPrecision == 0 ? values : packedCellWords(values);
+}
 float intensityAt(ivec3 cell, int word) {
-  return previous[cellIndex(cell) * 3 * params.coefficients + word];
+  int first = cellIndex(cell) * cellWords();
+  if (params.halfPrecision == 0) return uintBitsToFloat(previous[first + word]);
+  return unpackStored(previous[first + word / 2], word % 2, params);
 }
 vec4 blockingAt(ivec3 g) {
   int n = params.resolution;
@@ -31,9 +39,19 @@ vec4 blockingAt(ivec3 g) {
   return blocking[cellIndex(g)];
 }
 void storeIntensity(ivec3 cell, int word, float value) {
-  int w = cellIndex(cell) * 3 * params.coefficients + word;
-  next[w] = value;
-  accumulated[w] = accumulatedValue(accumulated[w], value, params);
+  if (params.halfPrecision == 0) {
+    int w = cellIndex(cell) * cellWords() + word;
+    next[w] = floatBitsToUint(value);
+    float sum = accumulatedValue(uintBitsToFloat(accumulated[w]), value, params);
+    accumulated[w] = floatBitsToUint(sum);
+    return;
+  }
+  // This invocation owns its cell's words (padded), so reading back its own halves is safe.
+  int w = cellIndex(cell) * cellWords() + word / 2;
+  int part = word % 2;
+  next[w] = packStored(next[w], part, value, params);
+  float sum = accumulatedValue(unpackStored(accumulated[w], part, params), value, params);
+  accumulated[w] = packStored(accumulated[w], part, sum, params);
 }
 
 #include "shared/lpv/propagate_kernel.h"

@@ -25,5 +25,28 @@ VOXGI_FN float roundToHalf(float x) {
   return uintBitsToFloat(sign | floatBitsToUint(q));
 }
 
+// The binary16 bits of x, which must hold a half value already (roundToHalf's): exact, so that
+// packing leaves nothing to the platform (GLSL's packHalf2x16 may flush subnormals).
+VOXGI_FN uint halfBits(float x) {
+  uint bits = floatBitsToUint(x);
+  uint sign = (bits >> 16) & 0x8000u;
+  uint magnitude = bits & 0x7fffffffu;
+  if (magnitude >= 0x7f800000u) return sign | 0x7c00u | (magnitude > 0x7f800000u ? 0x200u : 0u);
+  if (magnitude >= 0x38800000u) return sign | ((magnitude - 0x38000000u) >> 13);
+  precise float units = uintBitsToFloat(magnitude) * 16777216.0f;  // a subnormal: k 2^-24
+  return sign | uint(units);
+}
+
+// The value of binary16 bits h (the low 16 bits), exactly.
+VOXGI_FN float halfValue(uint h) {
+  uint sign = (h & 0x8000u) << 16;
+  uint magnitude = h & 0x7fffu;
+  if (magnitude >= 0x7c00u)
+    return uintBitsToFloat(sign | 0x7f800000u | ((magnitude & 0x3ffu) << 13));
+  if (magnitude >= 0x0400u) return uintBitsToFloat(sign | ((magnitude << 13) + 0x38000000u));
+  precise float v = float(magnitude) * uintBitsToFloat(0x33800000u);  // k 2^-24
+  return uintBitsToFloat(sign | floatBitsToUint(v));
+}
+
 VOXGI_NAMESPACE_END
 #endif

@@ -1,15 +1,18 @@
 // lpv.storage=f16 (T16 of docs/lpv.md): the rounding to half precision is the IEEE one (checked
 // against the compiler's _Float16), and propagation in half precision stays within 2^-10 per step
 // of f32.
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <random>
 
 #include <gtest/gtest.h>
 
+#include "common/lpv/propagate.h"
 #include "common/lpv/sh_buffers.h"
 #include "common/scene/scene_load.h"
 #include "shaders/shared/half_float.h"
+#include "shaders/shared/lpv/storage.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {
@@ -37,6 +40,51 @@ TEST(HalfFloat, RoundsAsIeeeBinary16) {
               std::bit_cast<uint32_t>(viaCompiler(x)))
         << x;
   }
+}
+
+// The GPU's packing (halfBits, halfValue) is exact both ways on every half: the value of each
+// 16-bit pattern is the compiler's, and packing it gives the pattern back (NaNs stay NaNs).
+TEST(HalfFloat, BitsAndValuesRoundTripOnEveryHalf) {
+  for (uint32_t h = 0; h <= 0xffffu; ++h) {
+    const float v = shared::halfValue(h);
+    const float expected = static_cast<float>(std::bit_cast<_Float16>(uint16_t(h)));
+    if (std::isnan(expected)) {
+      ASSERT_TRUE(std::isnan(v)) << h;
+      ASSERT_TRUE(std::isnan(shared::halfValue(shared::halfBits(v)))) << h;
+      continue;
+    }
+    ASSERT_EQ(std::bit_cast<uint32_t>(v), std::bit_cast<uint32_t>(expected)) << h;
+    ASSERT_EQ(shared::halfBits(v), h) << h;
+  }
+}
+
+// lpv.storage=f16's packed volumes (common/lpv/propagate.h): 27 stored values a cell (HOLPV)
+// take 14 words, and unpacking gives every stored value back bit for bit, subnormal halves and
+// negative zeros included.
+TEST(LpvStorage, PackedVolumesHoldEveryStoredValueExactly) {
+  shared::PropagateParams params{};
+  params.halfPrecision = 1;
+  params.storageScale = 8.0f;
+  params.inverseStorageScale = 0.125f;
+  constexpr int kValues = 27;
+  constexpr size_t kCells = 1000;
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> exponent(-30.0f, 3.0f);
+  std::vector<float> volume(kCells * kValues);
+  for (size_t i = 0; i < volume.size(); ++i) {
+    const float x = std::exp2(exponent(random)) * (i % 3 == 0 ? -1.0f : 1.0f);
+    volume[i] = i % 97 == 0 ? -0.0f : shared::storedValue(x, params);
+  }
+  const std::vector<uint32_t> packed = lpv::packStoredVolume(volume, kValues, params);
+  ASSERT_EQ(packed.size(), kCells * 14);
+  std::vector<float> back(volume.size());
+  lpv::unpackStoredVolume(packed.data(), kCells, kValues, params, back.data());
+  size_t subnormal = 0;
+  for (size_t i = 0; i < volume.size(); ++i) {
+    ASSERT_EQ(std::bit_cast<uint32_t>(back[i]), std::bit_cast<uint32_t>(volume[i])) << i;
+    subnormal += volume[i] != 0.0f && std::abs(volume[i]) * 0.125f < std::ldexp(1.0f, -14);
+  }
+  EXPECT_GT(subnormal, 100u);
 }
 
 // Each step's half-precision volume against the f32 one, relative to the step's largest value:

@@ -24,5 +24,26 @@ VOXGI_FN float accumulatedValue(float acc, float v, PropagateParams p) {
   return storedValue(sum, p);
 }
 
+// lpv.storage=f16 on the GPU packs the stored values two halves a 32-bit word (the low half
+// first), a cell's values padded to whole words so that no two cells (invocations) share a word.
+VOXGI_FN int packedCellWords(int values) {
+  return (values + 1) / 2;
+}
+
+// Stored value `part` (0: the low half, 1: the high) of `word`.
+VOXGI_FN float unpackStored(uint word, int part, PropagateParams p) {
+  uint h = part == 0 ? word & 0xffffu : word >> 16;
+  precise float v = halfValue(h) * p.storageScale;
+  return v;
+}
+
+// `word` with its half `part` replaced by stored value v (storedValue's: a half in units of the
+// storage scale, so that the packing is exact).
+VOXGI_FN uint packStored(uint word, int part, float v, PropagateParams p) {
+  precise float units = v * p.inverseStorageScale;
+  uint h = halfBits(units);
+  return part == 0 ? (word & 0xffff0000u) | h : (word & 0xffffu) | (h << 16);
+}
+
 VOXGI_NAMESPACE_END
 #endif
