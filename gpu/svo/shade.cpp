@@ -1,5 +1,6 @@
-// GPU shade stage: shaders/svo/shade.comp lights the gbuffer's pixels from the tree; the
-// light terms and the colour are read back.
+// GPU shade stage: shaders/svo/shade.comp lights the gbuffer's pixels from the tree, its cones
+// reading every level as bricks (gpu/svo/leaf_light.h, buildBricks); the light terms and the
+// colour are read back.
 #include <bit>
 
 #include "common/gbuffer.h"
@@ -7,7 +8,10 @@
 #include "common/svo/tree_depth.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
+#include "gpu/svo/leaf_light.h"
 #include "gpu/volumes.h"
+#include "shaders/shared/svo/svo_layout.h"
+#include "shaders/shared/vct/mip_kernel.h"
 
 namespace voxgi::gpu {
 
@@ -36,6 +40,16 @@ void svo::shade(GlContext& context, const StageContext& ctx, BufferSet& buffers)
   GlBuffer source(gl, uploadWords(gl, buffers.at(BufferId::svo_propagate_radiance)));
   GlBuffer faces(gl, uploadWords(gl, buffers.at(BufferId::svo_mip_node_faces)));
   GlBuffer bricks(gl, uploadWords(gl, buffers.at(BufferId::svo_mip_gathered_bricks)));
+  // The cones read the radiance and the node faces as bricks, as the gather does.
+  const Buffer& leafTileWords = buffers.at(BufferId::svo_build_leaf_tiles);
+  const Buffer& tileWords = buffers.at(BufferId::svo_build_tiles);
+  GlBuffer leafTiles(gl, uploadWords(gl, leafTileWords));
+  GlBuffer tiles(gl, uploadWords(gl, tileWords));
+  GlBuffer leafBricks(gl, svo::buildBricks(gl, nodes.get(), leafTiles.get(), source.get(),
+                                           leafTileWords.words.size() / shared::kTileWords, 1));
+  GlBuffer nodeBricks(
+      gl, svo::buildBricks(gl, nodes.get(), tiles.get(), faces.get(),
+                           tileWords.words.size() / shared::kTileWords, shared::kFaces));
   GlBuffer lights(gl, createBlock(gl, trace.params, trace.lights));
   GlBuffer objects(
       gl, createBuffer(gl, trace.objects.size() * sizeof(trace.objects[0]), trace.objects.data()));
@@ -52,6 +66,8 @@ void svo::shade(GlContext& context, const StageContext& ctx, BufferSet& buffers)
   const GLuint blocks[] = {nodes.get(),  source.get(),  faces.get(),      bricks.get(),
                            lights.get(), objects.get(), pixelBlock.get(), terms.get()};
   for (GLuint i = 0; i < 8; ++i) gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, blocks[i]);
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, leafBricks.get());
+  gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, nodeBricks.get());
   gl.DispatchCompute(GLuint((extent.x + 7) / 8), GLuint((extent.y + 7) / 8), 1);
   gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   gl.check("shade: dispatch");

@@ -1,8 +1,9 @@
 #version 450 core
 // shade: per pixel, the shared cone tracer's direct light (shadow cones) and specular cone
-// through the octree (shaders/shared/vct/trace_cones_kernel.h, no diffuse cones), the leaves'
-// gathered light through their bricks (shaders/shared/svo/shade_kernel.h), composed as the dense
-// technique composes (shaders/shared/vct/compose_kernel.h). The twin of cpu/svo/shade.cpp.
+// through the octree's bricks (shaders/shared/vct/trace_cones_kernel.h, no diffuse cones), the
+// leaves' gathered light through their bricks (shaders/shared/svo/shade_kernel.h), composed as
+// the dense technique composes (shaders/shared/vct/compose_kernel.h). The twin of
+// cpu/svo/shade.cpp.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/lighting.h"
 #include "shared/vct/cone_types.h"
@@ -12,9 +13,22 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "svo_pyramid.glsl"
 
 layout(std430, binding = 3) readonly buffer Bricks { vec4 bricks[]; };  // 27 a leaf tile
+// The cones' levels as bricks (gpu/svo/leaf_light.cpp, buildBricks), as propagate_gather.comp
+// reads them: one walk and eight texels a trilinear cell.
+layout(std430, binding = 8) readonly buffer LeafBricks { vec4 leafBricks[]; };  // 27 a leaf tile
+layout(std430, binding = 9) readonly buffer NodeBricks { vec4 nodeBricks[]; };  // 27 x 6 a tile
+vec4 svoBrickAt(int level, int face, uint tile, uint texel);
+#include "shared/svo/svo_sample.h"
 vec4 svoBrickAt(int level, int face, uint tile, uint texel) {
-  return bricks[tile * uint(kBrickTexels) + texel];
+  uint e = tile * uint(kBrickTexels) + texel;
+  if (face == kSvoGatheredFace) return bricks[e];
+  return level == uDepth ? leafBricks[e] : nodeBricks[e * 6u + uint(face)];
 }
+// Pyramid level `level` is tree level uDepth - level (svo_pyramid.glsl).
+vec4 filterBrickCell(int level, int face, TrilinearCell c) {
+  return svoFilterCell(uDepth - level, face, c);
+}
+#define VOXGI_BRICK_CELLS
 
 LightData lightAt(int i);  // defined below, after the buffers
 ConeData coneAt(int i) {  // no diffuse cones here

@@ -9,11 +9,11 @@
 
 VOXGI_NAMESPACE_BEGIN
 
-// E / pi at p (leaf units) of a tree of `depth`, from FETCH(svoBrickAt)(depth, 0, leaf tile,
-// texel): rgb the premultiplied gathered light, a the opacity.
+// E / pi at p (leaf units) of a tree of `depth`, from FETCH(svoBrickAt)(depth, kSvoGatheredFace,
+// leaf tile, texel): rgb the premultiplied gathered light, a the opacity.
 VOLUME_FN vec3 svoIrradiance(VOLUMES_IN vec3 p, int depth) {
   TrilinearCell c = trilinearCell(0, p, 1 << depth);
-  vec4 g = svoFilterCell(VOLUMES depth, 0, c);
+  vec4 g = svoFilterCell(VOLUMES depth, kSvoGatheredFace, c);
   if (g.a <= 0.0f) return vec3(0.0f);
   precise vec3 e = vec3(g) / g.a;
   return e;
@@ -57,7 +57,7 @@ VOLUME_FN vec3 svoIrradianceTricubic(VOLUMES_IN vec3 p, int depth) {
     precise float w = (((k & 1) == 0 ? ax.g0 : ax.g1) * ((k & 2) == 0 ? ay.g0 : ay.g1)) *
                       ((k & 4) == 0 ? az.g0 : az.g1);
     TrilinearCell c = trilinearCell(0, q, 1 << depth);
-    g = g + svoFilterCell(VOLUMES depth, 0, c) * w;
+    g = g + svoFilterCell(VOLUMES depth, kSvoGatheredFace, c) * w;
   }
   if (g.a <= 0.0f) return vec3(0.0f);
   precise vec3 e = vec3(g) / g.a;

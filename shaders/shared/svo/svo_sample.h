@@ -8,6 +8,10 @@
 
 VOXGI_NAMESPACE_BEGIN
 
+// The face FETCH(svoBrickAt) is asked for when shading samples the leaves' gathered light
+// (shade_kernel.h), so that a pass whose cones also read the radiance's bricks tells the two apart.
+const int kSvoGatheredFace = -1;
+
 // Texel `texel` of the brick of `tile` at `level` (FETCH(svoBrickAt)(level, face, tile, texel
 // index)); 0 without a tile or for a texel left of the brick (outside the grid's low faces).
 VOLUME_FN vec4 svoBrickVoxel(VOLUMES_IN int level, int face, uint tile, ivec3 texel) {
