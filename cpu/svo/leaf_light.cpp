@@ -57,6 +57,10 @@ int64_t SvoVolumes::slot(int level, glm::ivec3 v) const {
 }
 
 float SvoVolumes::opacityAt(glm::ivec3 v) const {
+  if (opaque != nullptr) {
+    const uint32_t key = shared::mortonEncode(glm::uvec3(v));
+    if (((*opaque)[key >> 3] >> (key & 7u) & 1u) == 0) return 0.0f;
+  }
   const int64_t s = slot(octree.depth, v);
   return s < 0 ? 0.0f : std::min(leaves.albedo[size_t(s)].a, 1.0f);
 }
@@ -157,12 +161,29 @@ TreeBricks treeBricks(const Octree& octree, const LeafRadiance& radiance, const 
   return b;
 }
 
+std::vector<uint8_t> opaqueLeaves(const Octree& octree, const Leaves& leaves) {
+  if (octree.depth > 9) return {};
+  std::vector<uint8_t> bits(size_t(1) << (3 * (octree.depth - 1)), 0);
+  // A tile's eight leaves are the byte of its key (Morton order), written by the tile's task
+  // alone; every leaf counts, with samples or only touched by a neighbour's.
+  parallelFor(size_t(0), octree.leafTileCount(), [&](size_t t) {
+    const uint32_t key = octree.leafTiles[t * shared::kTileWords + shared::kTileKey];
+    uint8_t byte = 0;
+    for (uint32_t local = 0; local < 8; ++local)
+      if (leaves.albedo[t * 8 + local].a > 0.0f) byte = uint8_t(byte | (1u << local));
+    bits[key] = byte;
+  });
+  return bits;
+}
+
 LeafRadiance injectLeaves(const Octree& octree, const Leaves& leaves,
                           const std::vector<shared::LightData>& lights,
                           const shared::LightVoxelsParams& params) {
   LeafRadiance out(octree.leafTileCount() * 8, glm::vec4(0.0f));
+  const std::vector<uint8_t> opaque = opaqueLeaves(octree, leaves);
   forEachRealLeaf(octree, [&](size_t slot, glm::ivec3 v) {
-    const SvoVolumes volumes{octree, leaves, nullptr, nullptr, nullptr, &lights};
+    SvoVolumes volumes{octree, leaves, nullptr, nullptr, nullptr, &lights};
+    if (!opaque.empty()) volumes.opaque = &opaque;
     out[slot] = shared::lightVoxel(volumes, v, params);
   });
   return out;

@@ -51,6 +51,10 @@ struct SvoVolumes {
   const std::vector<shared::ConeData>* cones = nullptr;
   const Words* leafBricks = nullptr;   // svoBrickAt's leaf bricks, 4 floats a texel
   const TreeBricks* bricks = nullptr;  // filterBrickCell's; without them the kernel reads taps
+  // Per leaf tile key a byte, bit `local id` set where that leaf's opacity is above 0
+  // (opaqueLeaves): opacityAt answers 0 for the others without finding their tile, which is
+  // where the visibility rays spend most of their steps.
+  const std::vector<uint8_t>* opaque = nullptr;
   mutable int memoLevel = -1;
   mutable glm::uvec3 memoTile{0};
   mutable uint32_t memoIndex = shared::kSvoNull;
@@ -104,6 +108,10 @@ void forEachRealLeaf(const Octree& octree, const F& f) {
   parallelFor(size_t(0), octree.leafTileCount(),
               [&](size_t t) { forEachRealLeaf(octree, tbb::blocked_range<size_t>(t, t + 1), f); });
 }
+
+// SvoVolumes::opaque for `octree`'s leaves, or empty above depth 9 (a byte per possible leaf tile:
+// 16 MiB at depth 9).
+std::vector<uint8_t> opaqueLeaves(const Octree& octree, const Leaves& leaves);
 
 // Radiance the leaves send out before any bounce: emission plus the analytic lights' diffuse
 // reflection with the voxel visibility of light_voxels_kernel.h, premultiplied by the clamped

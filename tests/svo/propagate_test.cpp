@@ -358,5 +358,50 @@ TEST(SvoLight, InjectionIsTheAnalyticDirectLightAndTheSplattedEmission) {
   EXPECT_TRUE(found);
 }
 
+// Injection's map of the leaves with opacity (opaqueLeaves) answers 0 exactly where looking the
+// voxel up in the tree does, on every voxel of the grid, so the visibility rays that skip the
+// lookups through it inject the same bits as without it.
+TEST(SvoLight, TheOpaqueLeavesMapIsTheTreesOpacity) {
+  constexpr int kDepth = 5, kN = 1 << kDepth;
+  const DenseTree t = denseTree(kDepth, "light_voxels");
+  const std::vector<uint8_t> opaque = cpu::svo::opaqueLeaves(t.octree, t.leaves);
+  ASSERT_EQ(opaque.size(), size_t(1) << (3 * (kDepth - 1)));
+  const SvoVolumes plain{t.octree, t.leaves, nullptr, nullptr, nullptr, nullptr};
+  SvoVolumes mapped = plain;
+  mapped.opaque = &opaque;
+  size_t opaqueVoxels = 0;
+  for (int z = 0; z < kN; ++z)
+    for (int y = 0; y < kN; ++y)
+      for (int x = 0; x < kN; ++x) {
+        const float a = plain.opacityAt({x, y, z});
+        ASSERT_EQ(std::bit_cast<uint32_t>(mapped.opacityAt({x, y, z})), std::bit_cast<uint32_t>(a));
+        opaqueVoxels += a > 0.0f;
+      }
+  EXPECT_EQ(opaqueVoxels, t.samples.size());
+
+  shared::LightData light{};
+  light.position = glm::vec3(10.5f, 20.5f, 12.5f);
+  light.intensity = glm::vec3(50.0f);
+  light.kind = shared::kLightPoint;
+  light.castsShadows = 1u;
+  shared::LightVoxelsParams params{};
+  params.resolution = kN;
+  params.lightCount = 1;
+  params.voxelShadow = shared::kVoxelShadowSoft;
+  params.shadowKappa = 1.0f;
+  params.voxelSize = 1.0f;
+  params.shadowOffset = 1.0f;
+  const std::vector<shared::LightData> lights{light};
+  const LeafRadiance injected = cpu::svo::injectLeaves(t.octree, t.leaves, lights, params);
+  size_t lit = 0;
+  cpu::svo::forEachRealLeaf(t.octree, [&](size_t slot, glm::ivec3 v) {
+    SvoVolumes volumes = plain;
+    volumes.lights = &lights;
+    EXPECT_TRUE(sameBits(injected[slot], shared::lightVoxel(volumes, v, params))) << slot;
+    lit += injected[slot].x > 0.0f;
+  });
+  EXPECT_GT(lit, t.samples.size() / 10);
+}
+
 }  // namespace
 }  // namespace voxgi::test
