@@ -170,12 +170,11 @@ TEST(SvoLight, TheGatherInLanesIsTheKernelsOnEverySimdLevel) {
   cpu::svo::forEachRealLeaf(t.octree, [&](size_t slot, glm::ivec3) {
     if (slot % 7 == 3) t.leaves.normal[slot] = glm::vec3(0.0f);
   });
-  for (size_t tile = 0; tile < t.octree.leafTileCount(); ++tile)
-    cpu::svo::forEachRealLeaf(t.octree, tbb::blocked_range<size_t>(tile, tile + 1),
-                              [&](size_t slot, glm::ivec3 v) {
-                                voxels.push_back(v);
-                                twoSided += t.leaves.normal[slot] == glm::vec3(0.0f);
-                              });
+  const tbb::blocked_range<size_t> everyTile(0, t.octree.leafTileCount());
+  cpu::svo::forEachRealLeaf(t.octree, everyTile, [&](size_t slot, glm::ivec3 v) {
+    voxels.push_back(v);
+    twoSided += t.leaves.normal[slot] == glm::vec3(0.0f);
+  });
   ASSERT_GT(twoSided, 50u);
   const ConeTraceSetup& setup = t.bounce;
   const Octree& o = t.octree;
@@ -394,9 +393,10 @@ TEST(SvoLight, TheOpaqueLeavesMapIsTheTreesOpacity) {
   const std::vector<shared::LightData> lights{light};
   const LeafRadiance injected = cpu::svo::injectLeaves(t.octree, t.leaves, lights, params);
   size_t lit = 0;
-  cpu::svo::forEachRealLeaf(t.octree, [&](size_t slot, glm::ivec3 v) {
-    SvoVolumes volumes = plain;
-    volumes.lights = &lights;
+  SvoVolumes volumes = plain;
+  volumes.lights = &lights;
+  const tbb::blocked_range<size_t> everyTile(0, t.octree.leafTileCount());
+  cpu::svo::forEachRealLeaf(t.octree, everyTile, [&](size_t slot, glm::ivec3 v) {
     EXPECT_TRUE(sameBits(injected[slot], shared::lightVoxel(volumes, v, params))) << slot;
     lit += injected[slot].x > 0.0f;
   });
