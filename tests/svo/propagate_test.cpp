@@ -163,7 +163,7 @@ bool sameBits(glm::vec3 a, glm::vec3 b) {
 // dense pyramid (the vct bounce), for voxels with one normal, with normals that cancel (two
 // hemispheres: some leaves' normals zeroed here) and empty voxels.
 TEST(SvoLight, TheGatherInLanesIsTheKernelsOnEverySimdLevel) {
-  constexpr int kDepth = 5, kN = 1 << kDepth;
+  constexpr int kDepth = 4, kN = 1 << kDepth;
   DenseTree t = denseTree(kDepth, "mip");
   std::vector<glm::ivec3> voxels;
   size_t twoSided = 0;
