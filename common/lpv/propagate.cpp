@@ -1,6 +1,7 @@
 #include "common/lpv/propagate.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "common/lights.h"
@@ -81,12 +82,12 @@ std::vector<uint32_t> packStoredVolume(const std::vector<float>& volume, int val
 }
 
 void unpackStoredVolume(const uint32_t* packed, size_t cells, int values,
-                        const shared::PropagateParams& params, float* out) {
+                        const shared::PropagateParams& params, uint32_t* out) {
   const size_t words = size_t(shared::packedCellWords(values));
   for (size_t cell = 0; cell < cells; ++cell)
     for (int v = 0; v < values; ++v)
-      out[cell * size_t(values) + size_t(v)] =
-          shared::unpackStored(packed[cell * words + size_t(v / 2)], v % 2, params);
+      out[cell * size_t(values) + size_t(v)] = std::bit_cast<uint32_t>(
+          shared::unpackStored(packed[cell * words + size_t(v / 2)], v % 2, params));
 }
 
 void prepareStorage(const LpvSettings& s, shared::PropagateParams& params,

@@ -31,9 +31,10 @@ void prepareStorage(const LpvSettings& s, shared::PropagateParams& params,
 // ways for values storedValue gave.
 std::vector<uint32_t> packStoredVolume(const std::vector<float>& volume, int values,
                                        const shared::PropagateParams& params);
-// The `cells` cells of `packed` back into f32 values, `values` a cell, into `out`.
+// The `cells` cells of `packed` back into f32 values, `values` a cell, as the words of `out`
+// (a buffer's f32 words).
 void unpackStoredVolume(const uint32_t* packed, size_t cells, int values,
-                        const shared::PropagateParams& params, float* out);
+                        const shared::PropagateParams& params, uint32_t* out);
 
 // Whether step `step` (1 for the step LPV_0 -> LPV_1) is occluded: from the second step on, as
 // [Martin 2012, §3.2.3] and Kaplanyan & Dachsbacher do, since the first would block VPLs by their

@@ -248,8 +248,7 @@ LeafRadiance bounceOnce(const Octree& octree, const Leaves& leaves, const LeafRa
       voxels.push_back(v);
     });
     std::vector<glm::vec3> g(voxels.size());
-    GatherScratch scratch;
-    gatherVoxels(simdLevel(), volumes, lanes, voxels, params, g, scratch);
+    gatherVoxels(simdLevel(), volumes, lanes, voxels, params, g);
     for (size_t i = 0; i < slots.size(); ++i) {
       const size_t slot = slots[i];
       next[slot] = shared::addReflected(direct[slot], volumes.albedoAt(voxels[i]), g[i]);

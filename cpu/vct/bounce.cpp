@@ -63,8 +63,7 @@ void vct::bounce(const StageContext& ctx, BufferSet& buffers) {
         for (int row = rows.begin(); row != rows.end(); ++row)
           for (int x = 0; x < n; ++x) voxels.emplace_back(x, row % n, row / n);
         std::vector<glm::vec3> gathered(voxels.size());
-        GatherScratch scratch;
-        gatherVoxels(simdLevel(), volumes, lanes, voxels, setup.params, gathered, scratch);
+        gatherVoxels(simdLevel(), volumes, lanes, voxels, setup.params, gathered);
         for (size_t i = 0; i < voxels.size(); ++i) {
           const glm::ivec3 v = voxels[i];
           const glm::vec4 r =

@@ -13,62 +13,50 @@
 
 namespace voxgi::cpu {
 
-// What gatherVoxels keeps between batches, so that a task allocates once.
-struct GatherScratch {
-  std::vector<shared::GatherSites> sites;
-  struct Set {
-    size_t voxel;
-    glm::vec3 origin, n, tangent, bitangent;
-  };
-  std::vector<Set> sets;
-  std::vector<ConeJob> jobs;
-  std::vector<shared::ConeHit> hits;
-  std::vector<shared::DiffuseSum> sums;
-};
-
 // out[i] = shared::gatherVoxel(volumes, voxels[i], params): `volumes` answers the kernel's
 // directAt, albedoAt, normalAt and coneAt; `lanes` is what the cones march through, the same
 // pyramid on the lanes of `level`.
 template <class Volumes>
 void gatherVoxels(SimdLevel level, const Volumes& volumes, const cone_lanes::Volumes& lanes,
                   std::span<const glm::ivec3> voxels, const shared::ConeTraceParams& params,
-                  std::span<glm::vec3> out, GatherScratch& scratch) {
-  scratch.sites.resize(voxels.size());
-  scratch.sets.clear();
+                  std::span<glm::vec3> out) {
+  // Each voxel's sites, and each cone set's start and tangent frame, in voxel order.
+  struct Set {
+    glm::vec3 origin, n, tangent, bitangent;
+  };
+  std::vector<shared::GatherSites> sites(voxels.size());
+  std::vector<Set> sets;
   for (size_t i = 0; i < voxels.size(); ++i) {
-    const shared::GatherSites g = shared::gatherSites(volumes, voxels[i]);
-    scratch.sites[i] = g;
-    for (int side = 0; side < g.sides; ++side) {
-      GatherScratch::Set set{i, shared::gatherSideOrigin(g, side, params),
-                             shared::gatherSideNormal(g, side), glm::vec3(0.0f), glm::vec3(0.0f)};
+    sites[i] = shared::gatherSites(volumes, voxels[i]);
+    for (int side = 0; side < sites[i].sides; ++side) {
+      Set set{shared::gatherSideOrigin(sites[i], side, params),
+              shared::gatherSideNormal(sites[i], side), glm::vec3(0.0f), glm::vec3(0.0f)};
       shared::tangentFrame(set.n, set.tangent, set.bitangent);
-      scratch.sets.push_back(set);
+      sets.push_back(set);
     }
   }
-  const size_t sets = scratch.sets.size();
   const int coneCount = params.diffuseConeCount;
-  scratch.jobs.clear();
+  std::vector<ConeJob> jobs;
+  jobs.reserve(size_t(coneCount) * sets.size());
   for (int c = 0; c < coneCount; ++c) {
     const shared::ConeData cone = volumes.coneAt(c);
-    for (const GatherScratch::Set& s : scratch.sets)
-      scratch.jobs.push_back({s.origin,
-                              shared::diffuseConeDirection(s.tangent, s.bitangent, s.n, cone),
-                              cone.direction.z, cone.tanHalfAperture, params.maxDistance});
+    for (const Set& s : sets)
+      jobs.push_back({s.origin, shared::diffuseConeDirection(s.tangent, s.bitangent, s.n, cone),
+                      cone.direction.z, cone.tanHalfAperture, params.maxDistance});
   }
-  scratch.hits.resize(scratch.jobs.size());
-  marchCones(level, lanes, scratch.jobs, shared::kMarchRadiance, params, scratch.hits);
+  std::vector<shared::ConeHit> hits(jobs.size());
+  marchCones(level, lanes, jobs, shared::kMarchRadiance, params, hits);
 
   // Each set's sum in the kernel's cone order, then each voxel's sets combined.
-  std::vector<shared::DiffuseSum>& sums = scratch.sums;
-  sums.assign(sets, shared::noDiffuse());
+  std::vector<shared::DiffuseSum> sums(sets.size(), shared::noDiffuse());
   for (int c = 0; c < coneCount; ++c) {
     const shared::ConeData cone = volumes.coneAt(c);
-    for (size_t k = 0; k < sets; ++k)
-      sums[k] = shared::addDiffuseCone(sums[k], scratch.hits[size_t(c) * sets + k], cone);
+    for (size_t k = 0; k < sets.size(); ++k)
+      sums[k] = shared::addDiffuseCone(sums[k], hits[size_t(c) * sets.size() + k], cone);
   }
   size_t k = 0;
   for (size_t i = 0; i < voxels.size(); ++i) {
-    const shared::GatherSites& g = scratch.sites[i];
+    const shared::GatherSites& g = sites[i];
     if (g.sides == 0) {
       out[i] = glm::vec3(0.0f);
       continue;

@@ -29,11 +29,9 @@ void lpv::propagate(GlContext& context, const StageContext& ctx, BufferSet& buff
   const int values = 3 * setup.params.coefficients;
   const bool packed = setup.params.halfPrecision != 0;
   const size_t cells = size_t(n) * size_t(n) * size_t(n);
-  std::vector<uint32_t> words(cells * size_t(packed ? shared::packedCellWords(values) : values));
-  if (packed)
-    words = voxgi::lpv::packStoredVolume(initial, values, setup.params);
-  else
-    std::memcpy(words.data(), initial.data(), words.size() * 4);
+  std::vector<uint32_t> words = packed ? voxgi::lpv::packStoredVolume(initial, values, setup.params)
+                                       : std::vector<uint32_t>(initial.size());
+  if (!packed) std::memcpy(words.data(), initial.data(), words.size() * 4);
   const size_t bytes = words.size() * 4;
   const bool history = ctx.plan.on(sh.history);
 
@@ -77,10 +75,8 @@ void lpv::propagate(GlContext& context, const StageContext& ctx, BufferSet& buff
     if (!packed) return readWords(gl, from, out);
     std::vector<uint32_t> all(words.size() * volumeCount);
     gl.GetNamedBufferSubData(from, 0, GLsizeiptr(all.size() * 4), all.data());
-    std::vector<float> unpacked(cells * volumeCount * size_t(values));
     voxgi::lpv::unpackStoredVolume(all.data(), cells * volumeCount, values, setup.params,
-                                   unpacked.data());
-    std::memcpy(out.words.data(), unpacked.data(), unpacked.size() * 4);
+                                   out.words.data());
   };
   Buffer out(sh.accumulated, glm::ivec3(n));
   readVolumes(accumulated.get(), out, 1);

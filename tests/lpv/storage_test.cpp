@@ -77,11 +77,11 @@ TEST(LpvStorage, PackedVolumesHoldEveryStoredValueExactly) {
   }
   const std::vector<uint32_t> packed = lpv::packStoredVolume(volume, kValues, params);
   ASSERT_EQ(packed.size(), kCells * 14);
-  std::vector<float> back(volume.size());
+  std::vector<uint32_t> back(volume.size());
   lpv::unpackStoredVolume(packed.data(), kCells, kValues, params, back.data());
   size_t subnormal = 0;
   for (size_t i = 0; i < volume.size(); ++i) {
-    ASSERT_EQ(std::bit_cast<uint32_t>(back[i]), std::bit_cast<uint32_t>(volume[i])) << i;
+    ASSERT_EQ(back[i], std::bit_cast<uint32_t>(volume[i])) << i;
     subnormal += volume[i] != 0.0f && std::abs(volume[i]) * 0.125f < std::ldexp(1.0f, -14);
   }
   EXPECT_GT(subnormal, 100u);

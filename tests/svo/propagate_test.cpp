@@ -198,9 +198,8 @@ TEST(SvoLight, TheGatherInLanesIsTheKernelsOnEverySimdLevel) {
 
   for (const cpu::SimdLevel level : cpu::runnableSimdLevels()) {
     SCOPED_TRACE(std::string(cpu::simdLevelName(level)));
-    cpu::GatherScratch scratch;
     std::vector<glm::vec3> lanes(voxels.size());
-    cpu::gatherVoxels(level, tree, treeLanes, voxels, setup.params, lanes, scratch);
+    cpu::gatherVoxels(level, tree, treeLanes, voxels, setup.params, lanes);
     size_t lit = 0;
     for (size_t i = 0; i < voxels.size(); ++i) {
       const glm::vec3 one = shared::gatherVoxel(taps, voxels[i], setup.params);
@@ -210,7 +209,7 @@ TEST(SvoLight, TheGatherInLanesIsTheKernelsOnEverySimdLevel) {
     EXPECT_GT(lit, voxels.size() / 2);
     std::vector<glm::vec3> denseLanes(denseVoxels.size());
     cpu::gatherVoxels(level, dense, cpu::laneVolumes(pyramid), denseVoxels, setup.params,
-                      denseLanes, scratch);
+                      denseLanes);
     for (size_t i = 0; i < denseVoxels.size(); ++i)
       ASSERT_TRUE(sameBits(denseLanes[i], shared::gatherVoxel(dense, denseVoxels[i], setup.params)))
           << "dense, voxel " << i;
