@@ -3,9 +3,11 @@
 // runs, cpu/simd.h). A lane whose cone ends takes the next cone of the stream, so lanes
 // stay busy while neighbouring cones end at different steps. The per-step arithmetic (position,
 // width, level, opacity correction, compositing) runs in the lanes; each lane's sample is filtered
-// on its own, a voxel's four words in one register. It computes exactly what marchCone computes:
-// the same operations in the same order, no fused multiply-add (tests/vct/cone_lanes_test.cpp
-// checks it bit for bit), so the CPU's images do not depend on which path traced them.
+// on its own, a voxel's four words in one register (on AVX-512, the three faces a directional
+// level's sample reads in one register, blended together). It computes exactly what marchCone
+// computes: the same operations in the same order, no fused multiply-add
+// (tests/vct/cone_lanes_test.cpp checks it bit for bit), so the CPU's images do not depend on which
+// path traced them.
 #pragma once
 
 #include <span>

@@ -118,12 +118,6 @@ Texel lerp(Texel a, Texel b, float t) {
   return a + (b - a) * texel(t);
 }
 
-// What a lane's samples need that stays fixed along its cone: sampleLevel's faces and weights.
-struct LaneCone {
-  int face[3];
-  float weight[3];  // dir^2
-};
-
 // shared::TrilinearCell of one lane, in plain numbers.
 struct Cell {
   int base[3];
@@ -142,9 +136,18 @@ CellTaps cellTaps(const Volumes& volumes, int level, const Cell& c, size_t strid
   const size_t s = size_t(size);
   const uint32_t* words = volumes.levels[level];
   CellTaps taps;
+  if (c.inside) {
+    // The eight voxels at fixed offsets from the lowest.
+    const uint32_t* lowest =
+        words + stride * (size_t(c.base[0]) + s * (size_t(c.base[1]) + s * size_t(c.base[2])));
+    const size_t dx = stride, dy = stride * s, dz = stride * s * s;
+    taps = {{lowest, lowest + dx, lowest + dy, lowest + dx + dy, lowest + dz, lowest + dx + dz,
+             lowest + dy + dz, lowest + dx + dy + dz}};
+    return taps;
+  }
   for (int k = 0; k < 8; ++k) {
     const int x = c.base[0] + (k & 1), y = c.base[1] + (k >> 1 & 1), z = c.base[2] + (k >> 2);
-    const bool in = c.inside || (x >= 0 && y >= 0 && z >= 0 && x < size && y < size && z < size);
+    const bool in = x >= 0 && y >= 0 && z >= 0 && x < size && y < size && z < size;
     taps.voxel[k] = in ? words + stride * (size_t(x) + s * (size_t(y) + s * size_t(z))) : nullptr;
   }
   return taps;
@@ -163,6 +166,79 @@ Texel tapAt(const uint32_t* voxel, size_t face) {
                         lerp(tapAt(t.voxel[6], face), tapAt(t.voxel[7], face), f[0]), f[1]);
   return lerp(y0, y1, f[2]);
 }
+
+#ifdef __AVX512F__
+// The three faces a cone reads (words 4 face[axis] .. + 3 of a voxel's 24), side by side in one
+// AVX-512 register, x's face in words 0-3, y's in 4-7 and z's in 8-11: one lerp blends all three,
+// each word as blendCell blends it alone.
+struct Faces {
+  __m512 v;
+};
+Faces operator+(Faces a, Faces b) {
+  return {_mm512_add_ps(a.v, b.v)};
+}
+Faces operator-(Faces a, Faces b) {
+  return {_mm512_sub_ps(a.v, b.v)};
+}
+Faces operator*(Faces a, Faces b) {
+  return {_mm512_mul_ps(a.v, b.v)};
+}
+Faces broadcast(float t) {
+  return {_mm512_set1_ps(t)};
+}
+// Where a cone's faces lie in a voxel: the permutation that gathers their words into Faces' order
+// from the voxel's words 0-15 and 8-23 (permutex2var's indices 0-15 and 16-31).
+struct FacePick {
+  __m512i index;
+};
+FacePick facePick(const int (&face)[3]) {
+  alignas(64) int32_t index[16] = {};
+  for (int axis = 0; axis < 3; ++axis)
+    for (int k = 0; k < 4; ++k) {
+      const int word = 4 * face[axis] + k;
+      index[4 * axis + k] = word < 16 ? word : word + 8;
+    }
+  return {_mm512_load_si512(index)};
+}
+Faces faceWeights(const float (&w)[3]) {
+  return {_mm512_setr_ps(w[0], w[0], w[0], w[0], w[1], w[1], w[1], w[1], w[2], w[2], w[2], w[2],
+                         0.0f, 0.0f, 0.0f, 0.0f)};
+}
+Faces facesAt(const uint32_t* voxel, const FacePick& pick) {
+  if (voxel == nullptr) return {_mm512_setzero_ps()};
+  const __m512 low = _mm512_castsi512_ps(_mm512_loadu_si512(voxel));
+  const __m512 high = _mm512_castsi512_ps(_mm512_loadu_si512(voxel + 8));
+  return {_mm512_permutex2var_ps(low, pick.index, high)};
+}
+// Axis `axis`'s face.
+Texel faceOf(Faces f, int axis) {
+  return {axis == 0   ? _mm512_extractf32x4_ps(f.v, 0)
+          : axis == 1 ? _mm512_extractf32x4_ps(f.v, 1)
+                      : _mm512_extractf32x4_ps(f.v, 2)};
+}
+Faces lerp(Faces a, Faces b, float t) {
+  return a + (b - a) * broadcast(t);
+}
+
+// blendCell of the cone's three faces at once.
+Faces blendFaces(const CellTaps& t, const FacePick& pick, const float* f) {
+  const Faces y0 = lerp(lerp(facesAt(t.voxel[0], pick), facesAt(t.voxel[1], pick), f[0]),
+                        lerp(facesAt(t.voxel[2], pick), facesAt(t.voxel[3], pick), f[0]), f[1]);
+  const Faces y1 = lerp(lerp(facesAt(t.voxel[4], pick), facesAt(t.voxel[5], pick), f[0]),
+                        lerp(facesAt(t.voxel[6], pick), facesAt(t.voxel[7], pick), f[0]), f[1]);
+  return lerp(y0, y1, f[2]);
+}
+#endif
+
+// What a lane's samples need that stays fixed along its cone: sampleLevel's faces and weights.
+struct LaneCone {
+  int face[3];
+  float weight[3];  // dir^2
+#ifdef __AVX512F__
+  FacePick pick;  // facePick(face)
+  Faces weights;  // faceWeights(weight)
+#endif
+};
 
 // CellOccupancy::empty, read from its bits.
 bool cellEmpty(const Volumes& volumes, int level, const Cell& c) {
@@ -213,10 +289,16 @@ CellTaps brickTaps(const TreeBricks& bricks, int level, const Cell& c, TileMemo&
 }
 
 // shared::sampleLevel over the trilinear cell c of `level`.
-Texel sampleLevel(const Volumes& volumes, int level, const Cell& c, const LaneCone& cone,
-                  const shared::ConeTraceParams& params, TileMemo& memo) {
+[[gnu::always_inline]] inline Texel sampleLevel(const Volumes& volumes, int level, const Cell& c,
+                                                const LaneCone& cone,
+                                                const shared::ConeTraceParams& params,
+                                                TileMemo& memo) {
   const bool directional = level > 0 && params.directional != 0;
   CellTaps taps;
+  // Words from one voxel (texel) to the next.
+  const int stride = volumes.bricks != nullptr ? 4 * volumes.bricks->faces[level]
+                     : directional             ? 4 * volumes.faces
+                                               : 4;
   if (volumes.bricks != nullptr) {
     // A cell without a tile reads eight zero texels, which blend to +0 on every face. (Its last
     // texel, base + 1 on each axis, is never left of the grid: null only without a tile.)
@@ -224,9 +306,19 @@ Texel sampleLevel(const Volumes& volumes, int level, const Cell& c, const LaneCo
     if (taps.voxel[7] == nullptr) return texel(0.0f);
   } else {
     if (cellEmpty(volumes, level, c)) return texel(0.0f);
-    taps = cellTaps(volumes, level, c, directional ? 4 * size_t(volumes.faces) : 4);
+    taps = cellTaps(volumes, level, c, size_t(stride));
   }
   if (!directional) return blendCell(taps, 0, c.f);
+#ifdef __AVX512F__
+  if (stride == 24) {
+    // Each face weighted as below, then summed in the same order.
+    const Faces weighted = blendFaces(taps, cone.pick, c.f) * cone.weights;
+    Texel sum = texel(0.0f);
+    for (int axis = 0; axis < 3; ++axis)
+      if (cone.weight[axis] > 0.0f) sum = sum + faceOf(weighted, axis);
+    return sum;
+  }
+#endif
   Texel sum = texel(0.0f);
   for (int axis = 0; axis < 3; ++axis)
     if (cone.weight[axis] > 0.0f)
@@ -316,8 +408,17 @@ void VOXGI_CONE_LANES_NAME(VOXGI_CONE_LANES_SUFFIX)(const Volumes& volumes,
     st.ambient[j] = 0.0f;
     st.steps[j] = 0.0f;
     const glm::vec3& d = c.direction;
-    st.cone[j] = {{d.x >= 0.0f ? 0 : 1, d.y >= 0.0f ? 2 : 3, d.z >= 0.0f ? 4 : 5},
-                  {d.x * d.x, d.y * d.y, d.z * d.z}};
+    LaneCone& cone = st.cone[j];
+    cone.face[0] = d.x >= 0.0f ? 0 : 1;
+    cone.face[1] = d.y >= 0.0f ? 2 : 3;
+    cone.face[2] = d.z >= 0.0f ? 4 : 5;
+    cone.weight[0] = d.x * d.x;
+    cone.weight[1] = d.y * d.y;
+    cone.weight[2] = d.z * d.z;
+#ifdef __AVX512F__
+    cone.pick = facePick(cone.face);
+    cone.weights = faceWeights(cone.weight);
+#endif
   };
   const auto finish = [&](int j, bool exited) {
     shared::ConeHit& h = hits.data()[st.job[j]];
