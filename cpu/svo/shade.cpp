@@ -2,12 +2,17 @@
 // specular cone, read through the tree's bricks (no diffuse cones: the leaves hold the diffuse
 // light), plus the leaves' gathered light through their bricks (shaders/shared/svo/shade_kernel.h),
 // composed as the dense technique composes (compose_kernel.h). The twin of shaders/svo/shade.comp.
+// A tile's cones march together in SIMD lanes (cpu/vct/tile_tracer.h), as trace_cones' do: the
+// numbers tracePixel gives.
+#include <tbb/blocked_range2d.h>
+
 #include "common/gbuffer.h"
 #include "common/parallel.h"
 #include "common/svo/stage_inputs.h"
 #include "common/svo/tree_depth.h"
 #include "cpu/stages.h"
 #include "cpu/svo/leaf_light.h"
+#include "cpu/vct/tile_tracer.h"
 #include "shaders/shared/vct/compose_kernel.h"
 #include "shaders/shared/svo/shade_kernel.h"
 #include "shaders/shared/vct/trace_cones_kernel.h"
@@ -45,25 +50,47 @@ void svo::shade(const StageContext& ctx, BufferSet& buffers) {
     if (bufferNeeded(bufferSpec(id), ctx.plan)) out.emplace_back(Buffer(id, extent), field);
   Buffer color(BufferId::svo_shade_color, extent);
 
-  parallelFor(size_t(0), position.elementCount(), [&](size_t i) {
-    const uint32_t id = object.get<uint32_t>(i, 0);
-    if (id == 0u) {
-      color.setVec3(i, background);
-      return;
-    }
-    SvoVolumes volumes{o, leaves, &radiance, &mips, nullptr, &trace.lights, nullptr};
+  const SvoVolumes tree{o, leaves, &radiance, &mips, nullptr, &trace.lights, nullptr};
+  const cone_lanes::TreeBricks laneBricks = treeLaneBricks(tree, cells);
+  cone_lanes::Volumes lanes{};
+  lanes.n = trace.params.resolution;
+  lanes.bricks = &laneBricks;
+  // 8x8 tiles, as trace_cones: the tile's shadow and specular cones march together in lanes.
+  const tbb::blocked_range2d<int> tiles(0, extent.y, 8, 0, extent.x, 8);
+  parallelFor(tiles, [&](const tbb::blocked_range2d<int>& tile) {
+    SvoVolumes volumes = tree;  // its tile memo is the task's own
     volumes.leafBricks = &bricks;
     volumes.bricks = &cells;
-    const glm::vec3 p = position.vec3At(i);
-    shared::PixelLight l =
-        shared::tracePixel(volumes, p, normal.vec3At(i), trace.objects[id], trace.params);
-    l.indirectDiffuse = tricubic ? shared::svoIrradianceTricubic(volumes, p, depth)
-                                 : shared::svoIrradiance(volumes, p, depth);
-    for (auto& [buffer, field] : out) buffer.setVec3(i, l.*field);
-    color.setVec3(i, shared::composePixel(id, albedo.vec3At(i), specular.vec3At(i),
-                                          emission ? emission->vec3At(i) : glm::vec3(0.0f),
-                                          l.directDiffuse, l.directSpecular, l.indirectDiffuse,
-                                          l.indirectSpecular, 0.0f, background));
+    std::vector<TilePixel> pixels;
+    for (int y = tile.rows().begin(); y != tile.rows().end(); ++y)
+      for (int x = tile.cols().begin(); x != tile.cols().end(); ++x) {
+        const size_t i = size_t(y) * size_t(extent.x) + size_t(x);
+        const uint32_t id = object.get<uint32_t>(i, 0);
+        if (id == 0u) {
+          color.setVec3(i, background);
+          continue;
+        }
+        pixels.push_back(tilePixel(i, {x, y}, position.vec3At(i), normal.vec3At(i),
+                                   trace.objects[id], trace.params));
+      }
+    // No diffuse cones (treeConeTrace asks for none): the leaves' gathered light stands for them.
+    TileTracer tracer(lanes, trace.lights, {}, trace.params);
+    tracer.addDirectLight(pixels);
+    const std::vector<shared::PixelLight> lights =
+        tracer.finish(pixels, tracer.traceDiffuse(pixels));
+    for (size_t k = 0; k < pixels.size(); ++k) {
+      const size_t i = pixels[k].e;
+      const glm::vec3 p = pixels[k].p;
+      shared::PixelLight l = lights[k];
+      l.indirectDiffuse = tricubic ? shared::svoIrradianceTricubic(volumes, p, depth)
+                                   : shared::svoIrradiance(volumes, p, depth);
+      for (auto& [buffer, field] : out) buffer.setVec3(i, l.*field);
+      color.setVec3(
+          i, shared::composePixel(object.get<uint32_t>(i, 0), albedo.vec3At(i), specular.vec3At(i),
+                                  emission ? emission->vec3At(i) : glm::vec3(0.0f), l.directDiffuse,
+                                  l.directSpecular, l.indirectDiffuse, l.indirectSpecular, 0.0f,
+                                  background));
+    }
   });
   for (auto& [buffer, field] : out) buffers.put(std::move(buffer));
   buffers.put(std::move(color));
