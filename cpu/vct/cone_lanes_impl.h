@@ -280,6 +280,15 @@ CellTaps brickTaps(const TreeBricks& bricks, int level, const Cell& c, TileMemo&
           ? nullptr
           : bricks.levels[level] + size_t(tile - bricks.firstTile[level]) *
                                        size_t(kBrickSide * kBrickSide * kBrickSide) * stride;
+  if (brick != nullptr && o[0] >= 0 && o[1] >= 0 && o[2] >= 0) {
+    // The eight texels at fixed offsets from the lowest.
+    const uint32_t* lowest =
+        brick + stride * size_t(o[0] + kBrickSide * (o[1] + kBrickSide * o[2]));
+    const size_t dy = stride * kBrickSide, dz = stride * kBrickSide * kBrickSide;
+    taps = {{lowest, lowest + stride, lowest + dy, lowest + stride + dy, lowest + dz,
+             lowest + stride + dz, lowest + dy + dz, lowest + stride + dy + dz}};
+    return taps;
+  }
   for (int k = 0; k < 8; ++k) {
     const int x = o[0] + (k & 1), y = o[1] + (k >> 1 & 1), z = o[2] + (k >> 2);
     const bool in = brick != nullptr && x >= 0 && y >= 0 && z >= 0;
