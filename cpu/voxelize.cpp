@@ -2,9 +2,9 @@
 // integer atomics (order-independent, so bit-identical for any thread count), then resolved. In a
 // sequence where a few meshes moved, the frame before's sums are updated in part instead
 // ([Villegas 2017, §1.2] revoxelizes its dynamic objects alone): the moved meshes' contributions of
-// that frame are subtracted, this frame's added, and only the voxels either touched are resolved
-// again. Integer sums make the update exact, so the buffers are the ones voxelizing every triangle
-// gives. A fresh voxelization resolves only the blocks of 8^3 voxels that contributions reached:
+// that frame are subtracted, this frame's added, and only the blocks of 8^3 voxels either touched
+// are resolved again. Integer sums make the update exact, so the buffers are the ones voxelizing
+// every triangle gives. A fresh voxelization resolves only the blocks contributions reached too:
 // the rest resolve to the zeros the buffers start with.
 #include <atomic>
 #include <bit>
@@ -59,9 +59,8 @@ struct Accumulator {
   Buffer& weight;
   Buffer& albedo;
   Buffer& normal;
-  Buffer* emission;          // null when the scene emits nothing
-  bool subtract = false;     // take the contributions out (wrapping, exact) instead of adding
-  uint8_t* dirty = nullptr;  // when set, 1 at every voxel a contribution reaches
+  Buffer* emission;       // null when the scene emits nothing
+  bool subtract = false;  // take the contributions out (wrapping, exact) instead of adding
   TouchedBlocks* touched = nullptr;  // when set, the blocks a contribution reaches
   // Set by the first contribution that takes a voxel past kMaxWeightSum: the sums of that voxel
   // are lost, the stage fails, so the remaining triangles are skipped.
@@ -73,7 +72,6 @@ struct Accumulator {
 
   void operator()(const glm::ivec3& voxel, const VoxelContribution& c) {
     const size_t e = grid.index(voxel);
-    if (dirty != nullptr) std::atomic_ref<uint8_t>(dirty[e]).store(1, std::memory_order_relaxed);
     if (touched != nullptr) touched->mark(voxel);
     // Adding (0 - v) modulo 2^32 takes v out exactly.
     const auto term = [this](uint32_t v) { return subtract ? 0u - v : v; };
@@ -144,14 +142,14 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
          Buffer(BufferId::common_voxelize_normal, extent),
          emissive ? Buffer(BufferId::common_voxelize_emission, extent) : Buffer()};
   }
-  std::vector<uint8_t> dirty(moved ? v.weight.elementCount() : 0);
-  // Fresh buffers hold +0 everywhere, which is what a voxel without contributions resolves to
-  // (resolvesToZero): then only the blocks contributions touched are resolved.
+  // Only the blocks contributions reach are resolved where every other voxel already holds its
+  // value: the frame before's outputs (a voxel resolves from its sums alone, and the update leaves
+  // the others' sums as they were), or fresh buffers' +0 where that is what a voxel without
+  // contributions resolves to (resolvesToZero).
   std::optional<TouchedBlocks> touched;
-  if (!moved && resolvesToZero(antialiased, emissive, ctx.triangles.emissionScale))
+  if (moved || resolvesToZero(antialiased, emissive, ctx.triangles.emissionScale))
     touched.emplace(n);
   Accumulator acc{grid, v.weight, v.albedoSum, v.normalSum, emissive ? &v.emissionSum : nullptr};
-  acc.dirty = moved ? dirty.data() : nullptr;
   acc.touched = touched ? &*touched : nullptr;
 
   const TextureAccess textures{ctx.scene.textures};
@@ -219,8 +217,7 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
   } else {
     parallelFor(tbb::blocked_range<size_t>(0, v.weight.elementCount(), 4096),
                 [&](const auto& range) {
-                  for (size_t e = range.begin(); e != range.end(); ++e)
-                    if (!moved || dirty[e] != 0) resolve(e);
+                  for (size_t e = range.begin(); e != range.end(); ++e) resolve(e);
                 });
   }
   buffers.put(std::move(v.weight));

@@ -59,7 +59,7 @@ std::vector<Scene> motionFrames(const Scene& scene) {
   };
   move(smallestMesh(scene), {0.0, 1.3 * voxel, 0.7 * voxel});
   move(0, {1.3 * voxel, 0.0, 0.0});
-  move(smallestMesh(scene), {0.0, -2.1 * voxel, 0.0});
+  move(smallestMesh(scene), {0.0, -10.1 * voxel, 0.0});
   return frames;
 }
 

@@ -15,7 +15,8 @@ size_t smallestMesh(const Scene& scene);
 
 // Frame 0 the scene; 1 the camera moved; 2 the same; 3 the first light moved; 4 the smallest mesh
 // moved (by about a voxel: voxelize updates the frame before's voxels in part); 5 the first mesh
-// (the bunny, most of the triangles: a rebuild); 6 the smallest again.
+// (the bunny, most of the triangles: a rebuild); 6 the smallest again, by ten voxels (further than
+// a block of voxelize's 8^3: the blocks it leaves are resolved again, not only those it reaches).
 std::vector<Scene> motionFrames(const Scene& scene);
 
 // Runs the case's motionFrames through FrameRunner on `backend` and expects every frame's

@@ -131,20 +131,22 @@ struct CellTaps {
   const uint32_t* voxel[8];
 };
 
+// The eight voxels of a cell that lies whole in its storage, from its lowest voxel and the words
+// to the next voxel along x, y and z.
+CellTaps cornerTaps(const uint32_t* lowest, size_t dx, size_t dy, size_t dz) {
+  return {{lowest, lowest + dx, lowest + dy, lowest + dx + dy, lowest + dz, lowest + dx + dz,
+           lowest + dy + dz, lowest + dx + dy + dz}};
+}
+
 CellTaps cellTaps(const Volumes& volumes, int level, const Cell& c, size_t stride) {
   const int size = volumes.n >> level;
   const size_t s = size_t(size);
   const uint32_t* words = volumes.levels[level];
+  if (c.inside)
+    return cornerTaps(
+        words + stride * (size_t(c.base[0]) + s * (size_t(c.base[1]) + s * size_t(c.base[2]))),
+        stride, stride * s, stride * s * s);
   CellTaps taps;
-  if (c.inside) {
-    // The eight voxels at fixed offsets from the lowest.
-    const uint32_t* lowest =
-        words + stride * (size_t(c.base[0]) + s * (size_t(c.base[1]) + s * size_t(c.base[2])));
-    const size_t dx = stride, dy = stride * s, dz = stride * s * s;
-    taps = {{lowest, lowest + dx, lowest + dy, lowest + dx + dy, lowest + dz, lowest + dx + dz,
-             lowest + dy + dz, lowest + dx + dy + dz}};
-    return taps;
-  }
   for (int k = 0; k < 8; ++k) {
     const int x = c.base[0] + (k & 1), y = c.base[1] + (k >> 1 & 1), z = c.base[2] + (k >> 2);
     const bool in = x >= 0 && y >= 0 && z >= 0 && x < size && y < size && z < size;
@@ -259,8 +261,9 @@ constexpr uint32_t kNoTile = 0xffffffffu;  // shared::kSvoNull
 constexpr int kBrickSide = 3;              // shared::brickTexel's
 
 // The eight texels of cell c in its tile's brick at pyramid `level` (SvoVolumes::filterBrickCell):
-// null for a texel left of the grid, all null without a tile.
-CellTaps brickTaps(const TreeBricks& bricks, int level, const Cell& c, TileMemo& memo) {
+// `stride` words a texel; null for a texel left of the grid, all null without a tile.
+CellTaps brickTaps(const TreeBricks& bricks, int level, const Cell& c, size_t stride,
+                   TileMemo& memo) {
   int t[3], o[3];
   for (int k = 0; k < 3; ++k) {
     t[k] = (c.base[k] > 0 ? c.base[k] : 0) >> 1;
@@ -272,23 +275,16 @@ CellTaps brickTaps(const TreeBricks& bricks, int level, const Cell& c, TileMemo&
     memo.tile[level] =
         bricks.findTile(bricks.tree, level, uint32_t(t[0]), uint32_t(t[1]), uint32_t(t[2]));
   }
-  CellTaps taps;
   const uint32_t tile = memo.tile[level];
-  const size_t stride = 4 * size_t(bricks.faces[level]);
   const uint32_t* brick =
       tile == kNoTile
           ? nullptr
           : bricks.levels[level] + size_t(tile - bricks.firstTile[level]) *
                                        size_t(kBrickSide * kBrickSide * kBrickSide) * stride;
-  if (brick != nullptr && o[0] >= 0 && o[1] >= 0 && o[2] >= 0) {
-    // The eight texels at fixed offsets from the lowest.
-    const uint32_t* lowest =
-        brick + stride * size_t(o[0] + kBrickSide * (o[1] + kBrickSide * o[2]));
-    const size_t dy = stride * kBrickSide, dz = stride * kBrickSide * kBrickSide;
-    taps = {{lowest, lowest + stride, lowest + dy, lowest + stride + dy, lowest + dz,
-             lowest + stride + dz, lowest + dy + dz, lowest + stride + dy + dz}};
-    return taps;
-  }
+  if (brick != nullptr && o[0] >= 0 && o[1] >= 0 && o[2] >= 0)
+    return cornerTaps(brick + stride * size_t(o[0] + kBrickSide * (o[1] + kBrickSide * o[2])),
+                      stride, stride * kBrickSide, stride * kBrickSide * kBrickSide);
+  CellTaps taps;
   for (int k = 0; k < 8; ++k) {
     const int x = o[0] + (k & 1), y = o[1] + (k >> 1 & 1), z = o[2] + (k >> 2);
     const bool in = brick != nullptr && x >= 0 && y >= 0 && z >= 0;
@@ -311,7 +307,7 @@ CellTaps brickTaps(const TreeBricks& bricks, int level, const Cell& c, TileMemo&
   if (volumes.bricks != nullptr) {
     // A cell without a tile reads eight zero texels, which blend to +0 on every face. (Its last
     // texel, base + 1 on each axis, is never left of the grid: null only without a tile.)
-    taps = brickTaps(*volumes.bricks, level, c, memo);
+    taps = brickTaps(*volumes.bricks, level, c, size_t(stride), memo);
     if (taps.voxel[7] == nullptr) return texel(0.0f);
   } else {
     if (cellEmpty(volumes, level, c)) return texel(0.0f);
