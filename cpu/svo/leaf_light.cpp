@@ -44,7 +44,7 @@ struct Children {
 
 uint32_t SvoVolumes::tileAt(int level, glm::uvec3 tile) const {
   if (level == memoLevel && tile == memoTile) return memoIndex;
-  const uint32_t t = shared::svoFindTile(*this, level, tile);
+  const uint32_t t = octree.findTileAt(level, tile);
   memoLevel = level, memoTile = tile, memoIndex = t;
   return t;
 }
@@ -56,11 +56,7 @@ int64_t SvoVolumes::slot(int level, glm::ivec3 v) const {
   return int64_t((t - first) * 8 + shared::localId(glm::uvec3(v)));
 }
 
-float SvoVolumes::opacityAt(glm::ivec3 v) const {
-  if (opaque != nullptr) {
-    const uint32_t key = shared::mortonEncode(glm::uvec3(v));
-    if (((*opaque)[key >> 3] >> (key & 7u) & 1u) == 0) return 0.0f;
-  }
+float SvoVolumes::leafOpacity(glm::ivec3 v) const {
   const int64_t s = slot(octree.depth, v);
   return s < 0 ? 0.0f : std::min(leaves.albedo[size_t(s)].a, 1.0f);
 }
@@ -125,11 +121,10 @@ bool SvoVolumes::filterBrickCell(int level, int face, const shared::TrilinearCel
 
 namespace {
 
-// TreeBricks::findTile for the lanes: the walk from the root (svoFindTile), which only reads the
-// node words, so every task may share `tree`.
+// TreeBricks::findTile for the lanes: the levels' tile indices, which every task may share.
 uint32_t findLaneTile(const void* tree, int level, uint32_t x, uint32_t y, uint32_t z) {
-  const SvoVolumes& v = *static_cast<const SvoVolumes*>(tree);
-  return shared::svoFindTile(v, v.octree.depth - level, glm::uvec3(x, y, z));
+  const Octree& o = static_cast<const SvoVolumes*>(tree)->octree;
+  return o.findTileAt(o.depth - level, glm::uvec3(x, y, z));
 }
 
 }  // namespace

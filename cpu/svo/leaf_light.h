@@ -65,7 +65,16 @@ struct SvoVolumes {
   // The value index (tile slot x 8 + local id) of voxel v of tree level `level`; -1 if its tile
   // does not exist.
   int64_t slot(int level, glm::ivec3 v) const;
-  float opacityAt(glm::ivec3 v) const;
+  // Inline for the visibility rays' steps, most of which the opaque bits answer.
+  float opacityAt(glm::ivec3 v) const {
+    if (opaque != nullptr) {
+      const uint32_t key = shared::mortonEncode(glm::uvec3(v));
+      if (((*opaque)[key >> 3] >> (key & 7u) & 1u) == 0) return 0.0f;
+    }
+    return leafOpacity(v);
+  }
+  // The leaf's clamped opacity, found through its tile.
+  float leafOpacity(glm::ivec3 v) const;
   glm::vec3 albedoAt(glm::ivec3 v) const;
   glm::vec3 normalAt(glm::ivec3 v) const;
   glm::vec3 emissionAt(glm::ivec3 v) const;

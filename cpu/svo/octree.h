@@ -15,6 +15,7 @@
 #include "common/buffer.h"
 #include "common/svo/canonical.h"
 #include "shaders/shared/svo/build_kernel.h"
+#include "shaders/shared/svo/svo_layout.h"
 
 namespace voxgi::cpu::svo {
 
@@ -52,6 +53,14 @@ struct Octree {
   // The node tile of `level` (< depth) or leaf tile (level == depth) keyed `key`; kSvoNull if
   // none.
   uint32_t findTile(int level, uint32_t key) const;
+  // The same by tile coordinate (node coordinates at level - 1): svoFindTile's answer, from two
+  // reads of the level's index where the walk down from the root reads level - 1 node words in a
+  // chain. kSvoNull outside the level.
+  uint32_t findTileAt(int level, glm::uvec3 tile) const {
+    const uint32_t side = 1u << (level - 1);
+    if (tile.x >= side || tile.y >= side || tile.z >= side) return shared::kSvoNull;
+    return findTile(level, shared::mortonEncode(tile));
+  }
 };
 
 // Where each sample lands, found in the structure's pass over the samples so that the leaf sums
