@@ -29,6 +29,7 @@ foreach(object IN LISTS objects)
     set(name "${CMAKE_MATCH_2}")
     if(name MATCHES "^voxgi::cpu::lpv_lanes::(propagate|visibility)Rows(Avx2|Avx512)\\("
        OR name MATCHES "^voxgi::cpu::cone_lanes::marchCones(Avx2|Avx512)\\("
+       OR name MATCHES "^voxgi::cpu::shadow_lanes::marchShadowRays(Avx2|Avx512)\\("
        OR name MATCHES "^DW\\.ref\\.__gxx_personality_v0$" OR name MATCHES "${isa}")
       continue()
     endif()

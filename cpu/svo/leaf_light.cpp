@@ -5,6 +5,7 @@
 #include <tbb/blocked_range.h>
 
 #include "cpu/vct/gather_lanes.h"
+#include "cpu/vct/light_voxel_lanes.h"
 #include "shaders/shared/vct/bounce_kernel.h"
 #include "shaders/shared/svo/mip_kernel.h"
 #include "shaders/shared/vct/mip_kernel.h"
@@ -39,6 +40,20 @@ struct Children {
     return normals == nullptr ? v : shared::ndfWeighted(v, normals[local], face);
   }
 };
+
+// The real leaves of a range of leaf tiles (forEachRealLeaf), for a batch kernel.
+struct RealLeaves {
+  std::vector<size_t> slots;
+  std::vector<glm::ivec3> voxels;
+};
+RealLeaves realLeaves(const Octree& octree, const tbb::blocked_range<size_t>& tiles) {
+  RealLeaves r;
+  forEachRealLeaf(octree, tiles, [&](size_t slot, glm::ivec3 v) {
+    r.slots.push_back(slot);
+    r.voxels.push_back(v);
+  });
+  return r;
+}
 
 }  // namespace
 
@@ -156,30 +171,50 @@ TreeBricks treeBricks(const Octree& octree, const LeafRadiance& radiance, const 
   return b;
 }
 
-std::vector<uint8_t> opaqueLeaves(const Octree& octree, const Leaves& leaves) {
+std::vector<uint32_t> opaqueLeaves(const Octree& octree, const Leaves& leaves) {
   if (octree.depth > 9) return {};
-  std::vector<uint8_t> bits(size_t(1) << (3 * (octree.depth - 1)), 0);
-  // A tile's eight leaves are the byte of its key (Morton order), written by the tile's task
-  // alone; every leaf counts, with samples or only touched by a neighbour's.
+  // A tile's eight leaves are bits 8 key .. 8 key + 7, the byte of its key in the words' memory
+  // (little-endian), written by the tile's task alone; every leaf counts, with samples or only
+  // touched by a neighbour's.
+  static_assert(std::endian::native == std::endian::little);
+  const size_t tiles = size_t(1) << (3 * (octree.depth - 1));
+  std::vector<uint32_t> words((tiles + 3) / 4, 0u);
+  uint8_t* bytes = reinterpret_cast<uint8_t*>(words.data());
   parallelFor(size_t(0), octree.leafTileCount(), [&](size_t t) {
     const uint32_t key = octree.leafTiles[t * shared::kTileWords + shared::kTileKey];
     uint8_t byte = 0;
     for (uint32_t local = 0; local < 8; ++local)
       if (leaves.albedo[t * 8 + local].a > 0.0f) byte = uint8_t(byte | (1u << local));
-    bits[key] = byte;
+    bytes[key] = byte;
   });
-  return bits;
+  return words;
 }
 
 LeafRadiance injectLeaves(const Octree& octree, const Leaves& leaves,
                           const std::vector<shared::LightData>& lights,
-                          const shared::LightVoxelsParams& params) {
+                          const shared::LightVoxelsParams& params, SimdLevel level) {
   LeafRadiance out(octree.leafTileCount() * 8, glm::vec4(0.0f));
-  const std::vector<uint8_t> opaque = opaqueLeaves(octree, leaves);
-  forEachRealLeaf(octree, [&](size_t slot, glm::ivec3 v) {
-    SvoVolumes volumes{octree, leaves, nullptr, nullptr, nullptr, &lights};
-    if (!opaque.empty()) volumes.opaque = &opaque;
-    out[slot] = shared::lightVoxel(volumes, v, params);
+  const std::vector<uint32_t> opaque = opaqueLeaves(octree, leaves);
+  const SvoVolumes tree{octree, leaves, nullptr, nullptr, nullptr, &lights};
+  if (opaque.empty() || params.resolution != 1 << octree.depth) {
+    forEachRealLeaf(octree, [&](size_t slot, glm::ivec3 v) {
+      SvoVolumes volumes = tree;  // its tile memo is this call's own
+      out[slot] = shared::lightVoxel(volumes, v, params);
+    });
+    return out;
+  }
+  // Leaf tiles a task: a few thousand rays, enough to keep every lane busy.
+  parallelFor(tbb::blocked_range<size_t>(0, octree.leafTileCount(), 64), [&](const auto& range) {
+    SvoVolumes volumes = tree;  // its tile memo is the task's own
+    volumes.opaque = &opaque;
+    const ShadowRays<SvoVolumes> rays{&volumes, &params};
+    const ShadowVolume shadow = rays.volume(opaque.data());
+    const RealLeaves real = realLeaves(octree, range);
+    const std::vector<size_t>& slots = real.slots;
+    const std::vector<glm::ivec3>& voxels = real.voxels;
+    std::vector<glm::vec4> lit(voxels.size());
+    lightVoxels(level, volumes, shadow, voxels, params, lit);
+    for (size_t i = 0; i < slots.size(); ++i) out[slots[i]] = lit[i];
   });
   return out;
 }
@@ -236,12 +271,9 @@ LeafRadiance bounceOnce(const Octree& octree, const Leaves& leaves, const LeafRa
   const tbb::blocked_range<size_t> tiles(0, octree.leafTileCount(), 64);
   parallelFor(tiles, [&](const tbb::blocked_range<size_t>& range) {
     SvoVolumes volumes = tree;  // its tile memo is the task's own
-    std::vector<size_t> slots;
-    std::vector<glm::ivec3> voxels;
-    forEachRealLeaf(octree, range, [&](size_t slot, glm::ivec3 v) {
-      slots.push_back(slot);
-      voxels.push_back(v);
-    });
+    const RealLeaves real = realLeaves(octree, range);
+    const std::vector<size_t>& slots = real.slots;
+    const std::vector<glm::ivec3>& voxels = real.voxels;
     std::vector<glm::vec3> g(voxels.size());
     gatherVoxels(simdLevel(), volumes, lanes, voxels, params, g);
     for (size_t i = 0; i < slots.size(); ++i) {

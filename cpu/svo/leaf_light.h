@@ -51,10 +51,10 @@ struct SvoVolumes {
   const std::vector<shared::ConeData>* cones = nullptr;
   const Words* leafBricks = nullptr;   // svoBrickAt's leaf bricks, 4 floats a texel
   const TreeBricks* bricks = nullptr;  // filterBrickCell's; without them the kernel reads taps
-  // Per leaf tile key a byte, bit `local id` set where that leaf's opacity is above 0
-  // (opaqueLeaves): opacityAt answers 0 for the others without finding their tile, which is
-  // where the visibility rays spend most of their steps.
-  const std::vector<uint8_t>* opaque = nullptr;
+  // Bit mortonEncode(v) set where leaf v's opacity is above 0 (opaqueLeaves): opacityAt answers 0
+  // for the others without finding their tile, which is where the visibility rays spend most of
+  // their steps.
+  const std::vector<uint32_t>* opaque = nullptr;
   mutable int memoLevel = -1;
   mutable glm::uvec3 memoTile{0};
   mutable uint32_t memoIndex = shared::kSvoNull;
@@ -69,7 +69,7 @@ struct SvoVolumes {
   float opacityAt(glm::ivec3 v) const {
     if (opaque != nullptr) {
       const uint32_t key = shared::mortonEncode(glm::uvec3(v));
-      if (((*opaque)[key >> 3] >> (key & 7u) & 1u) == 0) return 0.0f;
+      if (((*opaque)[key >> 5] >> (key & 31u) & 1u) == 0) return 0.0f;
     }
     return leafOpacity(v);
   }
@@ -118,16 +118,17 @@ void forEachRealLeaf(const Octree& octree, const F& f) {
               [&](size_t t) { forEachRealLeaf(octree, tbb::blocked_range<size_t>(t, t + 1), f); });
 }
 
-// SvoVolumes::opaque for `octree`'s leaves, or empty above depth 9 (a byte per possible leaf tile:
+// SvoVolumes::opaque for `octree`'s leaves, or empty above depth 9 (a bit per possible leaf:
 // 16 MiB at depth 9).
-std::vector<uint8_t> opaqueLeaves(const Octree& octree, const Leaves& leaves);
+std::vector<uint32_t> opaqueLeaves(const Octree& octree, const Leaves& leaves);
 
 // Radiance the leaves send out before any bounce: emission plus the analytic lights' diffuse
 // reflection with the voxel visibility of light_voxels_kernel.h, premultiplied by the clamped
-// opacity.
+// opacity. Up to depth 9 the visibility rays run in the lanes of `level` (light_voxel_lanes.h);
+// every level gives lightVoxel's bits.
 LeafRadiance injectLeaves(const Octree& octree, const Leaves& leaves,
                           const std::vector<shared::LightData>& lights,
-                          const shared::LightVoxelsParams& params);
+                          const shared::LightVoxelsParams& params, SimdLevel level = simdLevel());
 
 // The six faces of every node, from the leaves' radiance up to the root tile.
 NodeLevels mipTree(const Octree& octree, const Leaves& leaves, const LeafRadiance& radiance,

@@ -9,7 +9,7 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #endif
-#define VOXGI_CONE_LANES_ARCH xsimd::avx512f
+#define VOXGI_LANES_ARCH xsimd::avx512f
 #define VOXGI_CONE_LANES_SUFFIX Avx512
-#define VOXGI_CONE_LANES_BITS(mask) __mmask16(mask)
+#define VOXGI_LANES_BITS(mask) __mmask16(mask)
 #include "cpu/vct/cone_lanes_impl.h"

@@ -1,34 +1,19 @@
 // cone_lanes.h's march for one instruction set, included once by each of
-// cone_lanes_{sse2,avx2,avx512}.cpp with VOXGI_CONE_LANES_ARCH set to an xsimd arch,
-// VOXGI_CONE_LANES_SUFFIX to its entry point's suffix (Sse2: marchConesSse2) and
-// VOXGI_CONE_LANES_BITS(mask) to the instruction that gathers a lane mask's bits. Everything else
+// cone_lanes_{sse2,avx2,avx512}.cpp with VOXGI_LANES_ARCH set to an xsimd arch,
+// VOXGI_LANES_BITS(mask) to the instruction that gathers a lane mask's bits (lane_math_impl.h)
+// and VOXGI_CONE_LANES_SUFFIX to its entry point's suffix (Sse2: marchConesSse2). Everything else
 // here is in an unnamed namespace and touches no glm or standard-library function, so no inline
 // function compiled for AVX2 or AVX-512 can stand in for another unit's
 // (tests/simd_symbols_test.cmake checks those objects).
-#include <cstdint>
-
-// xsimd (Debian's libxsimd-dev) rather than intrinsics: the lanes stay portable, and its batches
-// map one to one onto the IEEE operations marchCone does (no contraction, no approximations).
-#include <xsimd/xsimd.hpp>
-#include <immintrin.h>
-
 #include "cpu/vct/cone_lanes.h"
+#include "cpu/vct/lane_math_impl.h"
 
 namespace voxgi::cpu::cone_lanes {
 namespace {
 
-// Two batches of lanes: their polynomial chains (the level's log2, the step correction's pow) are
-// independent, so the core overlaps them.
-using Arch = VOXGI_CONE_LANES_ARCH;
-using Lanes = xsimd::batch<float, Arch>;
-using LaneInts = xsimd::batch<int32_t, Arch>;
-using LaneMask = xsimd::batch_bool<float, Arch>;
-constexpr int kWidth = int(Lanes::size);
-constexpr int kBatches = 2;
-constexpr int kLanes = kBatches * kWidth;
-constexpr int kAlign = 64;  // the widest batch's
-using LaneBits = uint32_t;  // one bit per lane: at most 32 lanes
-static_assert(kLanes <= 32);
+// lane_math_impl.h's batches; in the cone march the two batches' polynomial chains (the level's
+// log2, the step correction's pow) overlap.
+using namespace lane_math;
 
 // One voxel's four words in an SSE register on every level (VEX-encoded where the unit is built
 // for AVX): SSE intrinsics are built-ins, so they leave no symbol for another unit to link.
@@ -54,18 +39,6 @@ Lanes glmMin(Lanes x, Lanes y) {
 }
 Lanes glmMax(Lanes x, Lanes y) {
   return xsimd::select(x < y, y, x);
-}
-
-// Lane j's bit of a mask. (xsimd 8.1's batch_bool has no mask().)
-LaneBits bitsOf(LaneMask m) {
-  return LaneBits(VOXGI_CONE_LANES_BITS(m));
-}
-
-// floor(x) for |x| < 2^31: the truncation, less 1 where it rounded up (xsimd's floor also handles
-// larger magnitudes, which no lane holds).
-Lanes floorLanes(Lanes x) {
-  const Lanes t = xsimd::to_float(xsimd::to_int(x));
-  return t - xsimd::select(t > x, Lanes(1.0f), Lanes(0.0f));
 }
 
 // shared::log2Approx for normal x > 0 (a cone's diameter, 1 - opacity): frexp from the exponent
@@ -446,8 +419,7 @@ void VOXGI_CONE_LANES_NAME(VOXGI_CONE_LANES_SUFFIX)(const Volumes& volumes,
   for (int j = 0; j < kLanes; ++j) start(j);
 
   for (;;) {
-    LaneBits live = 0;
-    for (int j = 0; j < kLanes; ++j) live |= LaneBits(st.job[j] >= 0) << j;
+    const LaneBits live = liveLanes(st.job);
     if (live == 0) break;
     // Before sampling, per batch: lanes that stop (the step limit or the distance reached: not
     // exited; the grid left: exited), then each lane's diameter, level and trilinear cells.

@@ -1,10 +1,15 @@
-// CPU light_voxels stage: the shared kernel (shaders/shared/vct/light_voxels_kernel.h) per voxel.
-// Each voxel is written by exactly one task, so the result does not depend on the thread count.
+// CPU light_voxels stage: the shared kernel (shaders/shared/vct/light_voxels_kernel.h) per voxel,
+// a row of voxels at a time with their visibility rays in SIMD lanes (light_voxel_lanes.h). Each
+// voxel is written by exactly one task, so the result does not depend on the thread count.
+#include <bit>
+
 #include <tbb/blocked_range.h>
 
 #include "common/parallel.h"
 #include "common/vct/light_voxels.h"
 #include "cpu/stages.h"
+#include "cpu/vct/light_voxel_lanes.h"
+#include "shaders/shared/svo/morton.h"
 
 namespace voxgi::cpu {
 namespace {
@@ -25,6 +30,31 @@ struct LightVoxelsVolumes {
   glm::vec3 emissionAt(glm::ivec3 v) const { return emission->vec3At(index(v)); }
   shared::LightData lightAt(int i) const { return lights[size_t(i)]; }
 };
+
+// The lanes' map of the voxels with opacity above 0 (ShadowVolume::mayBeOpaque): a bit per Morton
+// key of the power-of-two cube around the grid, each word found by one task. A word's 32 keys
+// are a 4 x 4 x 2 block at fixed offsets from its first.
+std::vector<uint32_t> opaqueVoxels(const LightVoxelsVolumes& volumes, int n) {
+  const size_t side = std::bit_ceil(size_t(n));
+  std::vector<uint32_t> words(std::max<size_t>(side * side * side / 32, 1), 0u);
+  glm::ivec3 offsets[32];
+  for (uint32_t bit = 0; bit < 32; ++bit) offsets[bit] = glm::ivec3(shared::mortonDecode(bit));
+  parallelFor(tbb::blocked_range<size_t>(0, words.size(), 1024), [&](const auto& range) {
+    for (size_t w = range.begin(); w != range.end(); ++w) {
+      const glm::ivec3 first(shared::mortonDecode(uint32_t(w * 32)));
+      uint32_t word = 0;
+      for (uint32_t bit = 0; bit < 32; ++bit) {
+        const glm::ivec3 v = first + offsets[bit];
+        if (v.x < n && v.y < n && v.z < n && volumes.opacityAt(v) > 0.0f) word |= 1u << bit;
+      }
+      words[w] = word;
+    }
+  });
+  return words;
+}
+
+// Grids up to 512 voxels a side march their rays in lanes (the map: 16 MiB at 512^3).
+constexpr int kMostLaneResolution = 512;
 
 }  // namespace
 
@@ -47,16 +77,42 @@ void vct::light_voxels(const StageContext& ctx, BufferSet& buffers) {
                         : Buffer{};
   if (radiance.spec == nullptr || radiance.extent != glm::ivec3(n))
     radiance = Buffer(BufferId::vct_light_voxels_radiance, glm::ivec3(n));
+  const auto store = [&](glm::ivec3 v, const glm::vec4& r) {
+    const size_t e = volumes.index(v);
+    for (int c = 0; c < 4; ++c) radiance.set(e, c, r[c]);
+  };
+  const auto relit = [&](glm::ivec3 v) {
+    return update.partial != 1 || shared::lightVoxelMayChange(volumes, v, setup.params, update);
+  };
+  if (n > kMostLaneResolution) {
+    parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
+      for (int row = rows.begin(); row != rows.end(); ++row)
+        for (int x = 0; x < n; ++x) {
+          const glm::ivec3 v(x, row % n, row / n);
+          if (relit(v)) store(v, shared::lightVoxel(volumes, v, setup.params));
+        }
+    });
+    buffers.put(std::move(radiance));
+    return;
+  }
+  const std::vector<uint32_t> opaque = opaqueVoxels(volumes, n);
+  const ShadowRays<LightVoxelsVolumes> rays{&volumes, &setup.params};
+  const ShadowVolume shadow = rays.volume(opaque.data());
   parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
+    std::vector<glm::ivec3> voxels;
     for (int row = rows.begin(); row != rows.end(); ++row)
       for (int x = 0; x < n; ++x) {
         const glm::ivec3 v(x, row % n, row / n);
-        if (update.partial == 1 && !shared::lightVoxelMayChange(volumes, v, setup.params, update))
-          continue;
-        const glm::vec4 r = shared::lightVoxel(volumes, v, setup.params);
-        const size_t e = volumes.index(v);
-        for (int c = 0; c < 4; ++c) radiance.set(e, c, r[c]);
+        if (!relit(v)) continue;
+        // lightVoxel's answer for a voxel without opacity, without a batch slot.
+        if (volumes.opacityAt(v) <= 0.0f)
+          store(v, glm::vec4(0.0f));
+        else
+          voxels.push_back(v);
       }
+    std::vector<glm::vec4> lit(voxels.size());
+    lightVoxels(simdLevel(), volumes, shadow, voxels, setup.params, lit);
+    for (size_t i = 0; i < voxels.size(); ++i) store(voxels[i], lit[i]);
   });
   buffers.put(std::move(radiance));
 }

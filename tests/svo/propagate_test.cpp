@@ -362,8 +362,8 @@ TEST(SvoLight, InjectionIsTheAnalyticDirectLightAndTheSplattedEmission) {
 TEST(SvoLight, TheOpaqueLeavesMapIsTheTreesOpacity) {
   constexpr int kDepth = 5, kN = 1 << kDepth;
   const DenseTree t = denseTree(kDepth, "light_voxels");
-  const std::vector<uint8_t> opaque = cpu::svo::opaqueLeaves(t.octree, t.leaves);
-  ASSERT_EQ(opaque.size(), size_t(1) << (3 * (kDepth - 1)));
+  const std::vector<uint32_t> opaque = cpu::svo::opaqueLeaves(t.octree, t.leaves);
+  ASSERT_EQ(opaque.size(), size_t(1) << (3 * kDepth - 5));  // a bit a leaf
   const SvoVolumes plain{t.octree, t.leaves, nullptr, nullptr, nullptr, nullptr};
   SvoVolumes mapped = plain;
   mapped.opaque = &opaque;
@@ -390,16 +390,20 @@ TEST(SvoLight, TheOpaqueLeavesMapIsTheTreesOpacity) {
   params.voxelSize = 1.0f;
   params.shadowOffset = 1.0f;
   const std::vector<shared::LightData> lights{light};
-  const LeafRadiance injected = cpu::svo::injectLeaves(t.octree, t.leaves, lights, params);
-  size_t lit = 0;
   SvoVolumes volumes = plain;
   volumes.lights = &lights;
   const tbb::blocked_range<size_t> everyTile(0, t.octree.leafTileCount());
-  cpu::svo::forEachRealLeaf(t.octree, everyTile, [&](size_t slot, glm::ivec3 v) {
-    EXPECT_TRUE(sameBits(injected[slot], shared::lightVoxel(volumes, v, params))) << slot;
-    lit += injected[slot].x > 0.0f;
-  });
-  EXPECT_GT(lit, t.samples.size() / 10);
+  // The visibility rays in every SIMD level's lanes.
+  for (const cpu::SimdLevel level : cpu::runnableSimdLevels()) {
+    const LeafRadiance injected = cpu::svo::injectLeaves(t.octree, t.leaves, lights, params, level);
+    size_t lit = 0;
+    cpu::svo::forEachRealLeaf(t.octree, everyTile, [&](size_t slot, glm::ivec3 v) {
+      EXPECT_TRUE(sameBits(injected[slot], shared::lightVoxel(volumes, v, params)))
+          << cpu::simdLevelName(level) << " slot " << slot;
+      lit += injected[slot].x > 0.0f;
+    });
+    EXPECT_GT(lit, t.samples.size() / 10);
+  }
 }
 
 }  // namespace

@@ -25,17 +25,38 @@ const int kVoxelShadowNone = 0;
 const int kVoxelShadowHard = 1;
 const int kVoxelShadowSoft = 2;
 
+// Where the visibility ray from voxel centre p leaves: `offset` voxels along n.
+VOXGI_FN vec3 shadowRayOrigin(vec3 p, vec3 n, LightVoxelsParams params) {
+  precise vec3 origin = p + n * params.shadowOffset;
+  return origin;
+}
+
+// The most whole-voxel steps a visibility ray takes in a grid of `res` voxels a side.
+VOXGI_FN int shadowRayMaxSteps(int res) {
+  return int(ceil(1.7320508f * float(res))) + 2;
+}
+
+// A visibility ray's occlusion after step t meets a voxel of opacity a > 0; the light is blocked
+// once it reaches 1.
+VOXGI_FN float shadowCollision(float occlusion, float a, float t, LightVoxelsParams params) {
+  if (params.voxelShadow == kVoxelShadowHard) return a >= 0.5f ? 1.0f : occlusion;
+  // [Villegas 2017, §2.2.1]: nu += (1 - nu) kappa / t per collision, scaled by the voxel's
+  // opacity.
+  precise float hit = min(params.shadowKappa * a / (t + params.shadowOffset), 1.0f);
+  precise float next = occlusion + (1.0f - occlusion) * hit;
+  return next;
+}
+
 // Visibility of the light from p: 1 unoccluded, 0 blocked. The ray starts `offset` voxels along
 // the normal and marches in whole-voxel steps toward the light, reading the voxel it is in. At most
-// ceil(sqrt(3) N) + 2 steps, so it always ends.
+// shadowRayMaxSteps, so it always ends. (cpu/vct/shadow_lanes.h marches many at once, the same.)
 VOLUME_FN float voxelVisibility(VOLUMES_IN vec3 p, vec3 n, vec3 toLight, float distance,
                                 LightVoxelsParams params) {
-  int mode = params.voxelShadow;
-  if (mode == kVoxelShadowNone) return 1.0f;
+  if (params.voxelShadow == kVoxelShadowNone) return 1.0f;
   int res = params.resolution;
   float offset = params.shadowOffset;
-  precise vec3 origin = p + n * offset;
-  int maxSteps = int(ceil(1.7320508f * float(res))) + 2;
+  vec3 origin = shadowRayOrigin(p, n, params);
+  int maxSteps = shadowRayMaxSteps(res);
   float occlusion = 0.0f;
   for (int i = 0; i < maxSteps; ++i) {
     float t = float(i);
@@ -45,16 +66,8 @@ VOLUME_FN float voxelVisibility(VOLUMES_IN vec3 p, vec3 n, vec3 toLight, float d
     if (v.x < 0 || v.y < 0 || v.z < 0 || v.x >= res || v.y >= res || v.z >= res) break;
     float a = FETCH(opacityAt)(v);
     if (a <= 0.0f) continue;
-    if (mode == kVoxelShadowHard) {
-      if (a >= 0.5f) return 0.0f;
-    } else {
-      // [Villegas 2017, §2.2.1]: nu += (1 - nu) kappa / t per collision, scaled by the voxel's
-      // opacity.
-      precise float hit = min(params.shadowKappa * a / (t + offset), 1.0f);
-      precise float next = occlusion + (1.0f - occlusion) * hit;
-      occlusion = next;
-      if (occlusion >= 1.0f) return 0.0f;
-    }
+    occlusion = shadowCollision(occlusion, a, t, params);
+    if (occlusion >= 1.0f) return 0.0f;
   }
   return 1.0f - occlusion;
 }
@@ -98,28 +111,42 @@ VOXGI_FN float lightTerm(LightData l, vec3 p, vec3 n, LightVoxelsParams params,
                                     : max(dot3(n, term.toLight), 0.0f);
 }
 
+// irradiance plus one light's share at the visibility found for it.
+VOXGI_FN vec3 addLightShare(vec3 irradiance, LightTerm t, float scale, float visibility) {
+  precise vec3 add = t.colour * (scale * visibility);
+  precise vec3 sum = irradiance + add;
+  return sum;
+}
+
+// Radiance leaving voxel v of opacity a > 0, premultiplied by it: rgb = a * (albedo/pi *
+// irradiance + emission), alpha = a.
+VOLUME_FN vec4 voxelRadiance(VOLUMES_IN ivec3 v, float a, vec3 albedo, vec3 irradiance,
+                             LightVoxelsParams params) {
+  precise vec3 radiance = albedo * irradiance * kInvPi;
+  if (params.emissive == 1) radiance = radiance + FETCH(emissionAt)(v);
+  precise vec3 premultiplied = radiance * a;
+  return vec4(premultiplied, a);
+}
+
 // Radiance leaving voxel v, premultiplied by its opacity: rgb = opacity * (albedo/pi * sum of
-// irradiance * attenuation * visibility + emission), a = opacity.
+// irradiance * attenuation * visibility + emission), a = opacity. (cpu/vct/light_voxel_lanes.h
+// lights many voxels at once, the same.)
 VOLUME_FN vec4 lightVoxel(VOLUMES_IN ivec3 v, LightVoxelsParams params) {
   float a = FETCH(opacityAt)(v);
   if (a <= 0.0f) return vec4(0.0f);
   vec3 albedo = FETCH(albedoAt)(v);
   vec3 n = normalize3(FETCH(normalAt)(v));
   precise vec3 p = vec3(v) + vec3(0.5f);
-  precise vec3 irradiance = vec3(0.0f);
+  vec3 irradiance = vec3(0.0f);
   for (int i = 0; i < params.lightCount; ++i) {
     LightTerm t;
     float scale = lightTerm(FETCH(lightAt)(i), p, n, params, t);
     if (scale <= 0.0f) continue;
     float vis =
         t.shadowed ? voxelVisibility(VOLUMES p, t.rayNormal, t.toLight, t.rayLength, params) : 1.0f;
-    precise vec3 add = t.colour * (scale * vis);
-    irradiance = irradiance + add;
+    irradiance = addLightShare(irradiance, t, scale, vis);
   }
-  precise vec3 radiance = albedo * irradiance * kInvPi;
-  if (params.emissive == 1) radiance = radiance + FETCH(emissionAt)(v);
-  precise vec3 premultiplied = radiance * a;
-  return vec4(premultiplied, a);
+  return voxelRadiance(VOLUMES v, a, albedo, irradiance, params);
 }
 
 // A sequence's frame whose geometry moved and whose lights did not (docs/motion.md): voxelize's
@@ -160,15 +187,15 @@ VOLUME_FN bool lightVoxelMayChange(VOLUMES_IN ivec3 v, LightVoxelsParams params,
     return true;
   if (FETCH(opacityAt)(v) <= 0.0f || params.voxelShadow == kVoxelShadowNone) return false;
   vec3 n = normalize3(FETCH(normalAt)(v));
-  float maxSteps = ceil(1.7320508f * float(params.resolution)) + 2.0f;
+  float maxSteps = float(shadowRayMaxSteps(params.resolution));
   for (int i = 0; i < params.lightCount; ++i) {
     LightTerm t;
     float scale = lightTerm(FETCH(lightAt)(i), p, n, params, t);
     if (scale <= 0.0f || !t.shadowed) continue;
     float length = min(t.rayLength - params.shadowOffset, maxSteps);
     if (length < 0.0f) continue;
-    if (segmentMeetsBox(p + t.rayNormal * params.shadowOffset, t.toLight, length, update.changedLow,
-                        update.changedHigh))
+    if (segmentMeetsBox(shadowRayOrigin(p, t.rayNormal, params), t.toLight, length,
+                        update.changedLow, update.changedHigh))
       return true;
   }
   return false;
