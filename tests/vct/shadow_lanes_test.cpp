@@ -8,9 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cpu/vct/shadow_lanes.h"
+#include "cpu/vct/light_voxel_lanes.h"
 #include "shaders/shared/svo/morton.h"
-#include "shaders/shared/vct/light_voxels_kernel.h"
 
 namespace voxgi::test {
 namespace {
@@ -26,12 +25,6 @@ struct Opacity {
 
   float opacityAt(glm::ivec3 v) const { return a[size_t(v.x + kN * (v.y + kN * v.z))]; }
 };
-
-float collide(const void* context, int x, int y, int z, float t, float occlusion) {
-  const Opacity& o = *static_cast<const Opacity*>(context);
-  const float a = o.opacityAt({x, y, z});
-  return a <= 0.0f ? occlusion : shared::shadowCollision(occlusion, a, t, o.params);
-}
 
 // A quarter of the voxels opaque to some degree, walls of full opacity among them; some clear
 // voxels marked in the map as well (the map may over-mark, never under-mark).
@@ -94,7 +87,9 @@ TEST(ShadowLanes, BitIdenticalToTheSharedMarch) {
       open += expected.back() == 1.0f;
       partial += expected.back() > 0.0f && expected.back() < 1.0f;
     }
-    const cpu::ShadowVolume volume{kN, shared::shadowRayMaxSteps(kN), o.map.data(), collide, &o};
+    // The stages' view of their volumes (light_voxel_lanes.h).
+    const cpu::ShadowRays<Opacity> view{&o, &o.params};
+    const cpu::ShadowVolume volume = view.volume(o.map.data());
     for (const cpu::SimdLevel level : cpu::runnableSimdLevels())
       for (const size_t count : {size_t(0), size_t(1), size_t(5), lanes.size()}) {
         std::vector<float> visibility(count, -1.0f);
