@@ -196,25 +196,21 @@ LeafRadiance injectLeaves(const Octree& octree, const Leaves& leaves,
   LeafRadiance out(octree.leafTileCount() * 8, glm::vec4(0.0f));
   const std::vector<uint32_t> opaque = opaqueLeaves(octree, leaves);
   const SvoVolumes tree{octree, leaves, nullptr, nullptr, nullptr, &lights};
-  if (opaque.empty() || params.resolution != 1 << octree.depth) {
-    forEachRealLeaf(octree, [&](size_t slot, glm::ivec3 v) {
-      SvoVolumes volumes = tree;  // its tile memo is this call's own
-      out[slot] = shared::lightVoxel(volumes, v, params);
-    });
-    return out;
-  }
+  // Without a map covering the kernel's grid, each leaf is lit by the kernel itself.
+  const bool lanes = !opaque.empty() && params.resolution == 1 << octree.depth;
   // Leaf tiles a task: a few thousand rays, enough to keep every lane busy.
   parallelFor(tbb::blocked_range<size_t>(0, octree.leafTileCount(), 64), [&](const auto& range) {
     SvoVolumes volumes = tree;  // its tile memo is the task's own
-    volumes.opaque = &opaque;
+    if (!opaque.empty()) volumes.opaque = &opaque;
     const ShadowRays<SvoVolumes> rays{&volumes, &params};
-    const ShadowVolume shadow = rays.volume(opaque.data());
     const RealLeaves real = realLeaves(octree, range);
-    const std::vector<size_t>& slots = real.slots;
-    const std::vector<glm::ivec3>& voxels = real.voxels;
-    std::vector<glm::vec4> lit(voxels.size());
-    lightVoxels(level, volumes, shadow, voxels, params, lit);
-    for (size_t i = 0; i < slots.size(); ++i) out[slots[i]] = lit[i];
+    std::vector<glm::vec4> lit(real.voxels.size());
+    if (lanes)
+      lightVoxels(level, volumes, rays.volume(opaque.data()), real.voxels, params, lit);
+    else
+      for (size_t i = 0; i < lit.size(); ++i)
+        lit[i] = shared::lightVoxel(volumes, real.voxels[i], params);
+    for (size_t i = 0; i < lit.size(); ++i) out[real.slots[i]] = lit[i];
   });
   return out;
 }

@@ -81,21 +81,9 @@ void vct::light_voxels(const StageContext& ctx, BufferSet& buffers) {
     const size_t e = volumes.index(v);
     for (int c = 0; c < 4; ++c) radiance.set(e, c, r[c]);
   };
-  const auto relit = [&](glm::ivec3 v) {
-    return update.partial != 1 || shared::lightVoxelMayChange(volumes, v, setup.params, update);
-  };
-  if (n > kMostLaneResolution) {
-    parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
-      for (int row = rows.begin(); row != rows.end(); ++row)
-        for (int x = 0; x < n; ++x) {
-          const glm::ivec3 v(x, row % n, row / n);
-          if (relit(v)) store(v, shared::lightVoxel(volumes, v, setup.params));
-        }
-    });
-    buffers.put(std::move(radiance));
-    return;
-  }
-  const std::vector<uint32_t> opaque = opaqueVoxels(volumes, n);
+  // Grids above kMostLaneResolution light voxel by voxel with the kernel itself.
+  const bool lanes = n <= kMostLaneResolution;
+  const std::vector<uint32_t> opaque = lanes ? opaqueVoxels(volumes, n) : std::vector<uint32_t>{};
   const ShadowRays<LightVoxelsVolumes> rays{&volumes, &setup.params};
   const ShadowVolume shadow = rays.volume(opaque.data());
   parallelFor(tbb::blocked_range<int>(0, n * n), [&](const auto& rows) {
@@ -103,9 +91,11 @@ void vct::light_voxels(const StageContext& ctx, BufferSet& buffers) {
     for (int row = rows.begin(); row != rows.end(); ++row)
       for (int x = 0; x < n; ++x) {
         const glm::ivec3 v(x, row % n, row / n);
-        if (!relit(v)) continue;
-        // lightVoxel's answer for a voxel without opacity, without a batch slot.
-        if (volumes.opacityAt(v) <= 0.0f)
+        if (update.partial == 1 && !shared::lightVoxelMayChange(volumes, v, setup.params, update))
+          continue;
+        if (!lanes)
+          store(v, shared::lightVoxel(volumes, v, setup.params));
+        else if (volumes.opacityAt(v) <= 0.0f)  // lightVoxel's answer, without a batch slot
           store(v, glm::vec4(0.0f));
         else
           voxels.push_back(v);
