@@ -1,12 +1,51 @@
 #include "common/buffer.h"
 
 #include "common/mips.h"
+#include "shaders/shared/half_float.h"
 
 #include <stdexcept>
 
 namespace voxgi {
 Buffer::Buffer(const BufferSpec& s, glm::ivec3 e)
-    : spec(&s), extent(e), words(size_t(e.x) * size_t(e.y) * size_t(e.z) * size_t(s.components)) {}
+    : spec(&s),
+      extent(e),
+      words(size_t(e.x) * size_t(e.y) * size_t(e.z) *
+            size_t(s.type == ScalarType::f16 ? s.components / 2 : s.components)) {}
+
+void Buffer::setHalf(size_t element, int component, float value) {
+  uint32_t& w = words[element * elementWords() + size_t(component) / 2];
+  const uint32_t h = shared::halfBits(shared::roundToHalf(value));
+  w = component % 2 == 0 ? (w & 0xffff0000u) | h : (w & 0xffffu) | (h << 16);
+}
+
+float Buffer::halfToFloat(uint32_t bits) {
+  return shared::halfValue(bits);
+}
+
+Words floatWords(const Buffer& b) {
+  if (!b.halves()) return b.words;
+  const size_t n = b.elementCount();
+  const int c = b.components();
+  Words out(n * size_t(c));
+  for (size_t e = 0; e < n; ++e)
+    for (int k = 0; k < c; ++k)
+      out[e * size_t(c) + size_t(k)] = std::bit_cast<uint32_t>(b.get<float>(e, k));
+  return out;
+}
+
+Buffer fromFloatWords(BufferId id, glm::ivec3 extent, const Words& floats) {
+  Buffer b(id, extent);
+  if (!b.halves()) {
+    b.words = floats;
+    return b;
+  }
+  const size_t n = b.elementCount();
+  const int c = b.components();
+  for (size_t e = 0; e < n; ++e)
+    for (int k = 0; k < c; ++k)
+      b.set(e, k, std::bit_cast<float>(floats[e * size_t(c) + size_t(k)]));
+  return b;
+}
 
 const Buffer& BufferSet::at(BufferId id) const {
   const Buffer* b = find(id);
@@ -41,6 +80,7 @@ double Buffer::value(size_t element, int component) const {
     case ScalarType::i32:
       return get<int32_t>(element, component);
     case ScalarType::f32:
+    case ScalarType::f16:
       return get<float>(element, component);
   }
   return 0.0;

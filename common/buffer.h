@@ -1,5 +1,6 @@
-// Typed buffers that flow between stages. Every element is a 32-bit word (u32, i32 or f32),
-// `components` words per voxel or pixel, voxels x-fastest (see common/grid.h).
+// Typed buffers that flow between stages. A component is a 32-bit word (u32, i32 or f32) or half
+// of one (f16: two halves a word, the low half first), `components` of them per voxel or pixel,
+// voxels x-fastest (see common/grid.h).
 #pragma once
 
 #include <bit>
@@ -10,6 +11,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -54,12 +56,27 @@ struct Buffer {
   Buffer(BufferId id, glm::ivec3 e) : Buffer(bufferSpec(id), e) {}
   size_t elementCount() const { return size_t(extent.x) * size_t(extent.y) * size_t(extent.z); }
   int components() const { return spec->components; }
+  bool halves() const { return spec->type == ScalarType::f16; }
+  // Words an element takes: its components, or half as many for f16.
+  size_t elementWords() const { return size_t(halves() ? spec->components / 2 : spec->components); }
+  // get<float> of an f16 buffer is the half's exact value; get<uint32_t> of one is its 16 bits.
   template <class T>
   T get(size_t element, int component) const {
+    if (halves()) {
+      const uint32_t bits = halfBitsAt(element, component);
+      if constexpr (std::is_same_v<T, float>)
+        return halfToFloat(bits);
+      else
+        return T(bits);
+    }
     return std::bit_cast<T>(words[element * size_t(spec->components) + size_t(component)]);
   }
+  // set<float> of an f16 buffer stores the nearest half (ties to even, as the GPU's packing in
+  // shaders/shared/half_float.h).
   template <class T>
   void set(size_t element, int component, T value) {
+    if constexpr (std::is_same_v<T, float>)
+      if (halves()) return setHalf(element, component, value);
     words[element * size_t(spec->components) + size_t(component)] = std::bit_cast<uint32_t>(value);
   }
   // Components 0..2 of an element as floats (f32 buffers).
@@ -71,12 +88,32 @@ struct Buffer {
   }
   // The element as doubles, for reports and diffs.
   double value(size_t element, int component) const;
+  // A component's bits as stored: its word, or its 16 bits of an f16 buffer's word.
+  uint32_t bitsAt(size_t element, int component) const {
+    return halves() ? halfBitsAt(element, component)
+                    : words[element * size_t(spec->components) + size_t(component)];
+  }
+
+ private:
+  uint32_t halfBitsAt(size_t element, int component) const {
+    const uint32_t w = words[element * elementWords() + size_t(component) / 2];
+    return component % 2 == 0 ? w & 0xffffu : w >> 16;
+  }
+  void setHalf(size_t element, int component, float value);
+  static float halfToFloat(uint32_t bits);
 };
 
 // Components 0..2 of element e of `b`, or 0 where the plan did not produce the buffer (nullptr).
 inline glm::vec3 vec3AtOr0(const Buffer* b, size_t e) {
   return b == nullptr ? glm::vec3(0.0f) : b->vec3At(e);
 }
+
+// The components of a float buffer (f32 or f16) as f32 words, an f16 buffer's halves widened
+// exactly: for readers that work in floats.
+Words floatWords(const Buffer& b);
+// A buffer of `id` and `extent` holding the f32 words `floats` (floatWords' layout), each
+// component stored as the buffer's type holds it: an f16 buffer's rounded to the nearest half.
+Buffer fromFloatWords(BufferId id, glm::ivec3 extent, const Words& floats);
 
 // The buffers of one run, each under its own declaration (stage and name): bounce's radiance
 // never replaces light_voxels'. A stage reads its inputs with at() or find() and adds its outputs

@@ -7,12 +7,12 @@ namespace voxgi {
 
 uint64_t stageBufferBytes(StageId stage, const Scene& scene, const EffectPlan& plan) {
   const glm::ivec2 image(scene.camera.width, scene.camera.height);
-  uint64_t words = 0;
+  uint64_t bytes = 0;
   for (const BufferSpec* b : stageBuffers(stageSpec(stage)))
     if (bufferNeeded(*b, plan))
-      words += uint64_t(b->components) *
+      bytes += uint64_t(b->components) * (b->type == ScalarType::f16 ? 2u : 4u) *
                shapeElements(b->shape, scene.grid.resolution, image, plan.seriesLength, plan.maps);
-  return 4u * words;
+  return bytes;
 }
 
 void checkStageMemory(const StageContext& ctx, StageId stage, double copies) {

@@ -78,6 +78,14 @@ constexpr bool listIsConsistent() {
 }
 static_assert(listIsConsistent(), "common/stages.inc: a buffer is declared twice");
 
+// Half-float buffers pack two components a word, whole elements a word (common/buffer.h).
+constexpr bool halvesPairUp() {
+  for (const BufferSpec& b : kBuffers)
+    if (b.type == ScalarType::f16 && b.components % 2 != 0) return false;
+  return true;
+}
+static_assert(halvesPairUp(), "common/stages.inc: an f16 buffer has an odd number of components");
+
 // Each step names a declared stage, owned by its technique or shared; a technique runs each of
 // its own stages, once, and no two of its steps share a name (bare names are unambiguous within
 // a technique).
@@ -111,6 +119,8 @@ const char* scalarTypeName(ScalarType t) {
       return "i32";
     case ScalarType::f32:
       return "f32";
+    case ScalarType::f16:
+      return "f16";
   }
   return "?";
 }

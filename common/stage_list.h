@@ -11,7 +11,9 @@
 
 namespace voxgi {
 
-enum class ScalarType { u32, i32, f32 };
+// f16: IEEE half floats, two a 32-bit word (the low half first); such a buffer has an even
+// number of components, so that no element shares a word with the next (common/buffer.h).
+enum class ScalarType { u32, i32, f32, f16 };
 const char* scalarTypeName(ScalarType t);
 
 // How a buffer's elements are laid out (common/mips.h has the level offsets):

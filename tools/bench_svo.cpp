@@ -23,19 +23,31 @@
 #include "cpu/svo/octree.h"
 #include "gpu/backend.h"
 #include "gpu/svo/octree.h"
+#include "shaders/shared/svo/svo_layout.h"
 #include "tools/bench.h"
 #include "tools/openvdb_points.h"
 
 namespace voxgi::tools {
 namespace {
 
-// Bytes of the technique's tree buffers (common/svo/stages.inc) at this tree: the structure's
-// words; per leaf the sums (10 words) and direct, radiance and gathered light (4 floats each);
-// per leaf tile the gathered light's 3^3 brick; per node six RGBA faces.
+// Bytes an element of buffer `id` takes as declared (common/svo/stages.inc).
+uint64_t elementBytes(BufferId id) {
+  const BufferSpec& b = bufferSpec(id);
+  return uint64_t(b.components) * (b.type == ScalarType::f16 ? 2u : 4u);
+}
+
+// Bytes of the technique's tree buffers at this tree: the structure's words; per leaf (8 a leaf
+// tile) the sums, the direct, radiance and gathered light; per leaf tile the gathered light's 3^3
+// brick; per node (8 a node tile) six RGBA faces.
 uint64_t octreeBytes(const cpu::svo::Octree& o) {
   const uint64_t structure = (o.nodes.size() + o.tiles.size() + o.leafTiles.size()) * 4;
-  const uint64_t perLeafTile = 8 * (10 + 3 * 4) * 4 + 27 * 4 * 4;
-  const uint64_t perNodeTile = 8 * 6 * 4 * 4;
+  uint64_t perLeaf = 0;
+  for (const BufferId id : {BufferId::svo_build_leaf_sums, BufferId::svo_propagate_direct,
+                            BufferId::svo_propagate_radiance, BufferId::svo_propagate_gathered})
+    perLeaf += elementBytes(id);
+  const uint64_t perLeafTile = 8 * perLeaf + uint64_t(shared::kBrickTexels) *
+                                                 elementBytes(BufferId::svo_mip_gathered_bricks);
+  const uint64_t perNodeTile = 8 * elementBytes(BufferId::svo_mip_node_faces);
   return structure + o.leafTileCount() * perLeafTile + o.tileCount() * perNodeTile;
 }
 

@@ -107,7 +107,8 @@ std::vector<const Buffer*> buffersOf(const BufferSet& set, const StageSpec& stag
   std::vector<const Buffer*> out;
   for (const BufferSpec* spec : stageBuffers(stage)) {
     const Buffer* b = set.find(spec->id);
-    if (b == nullptr || (!withSums && spec->type != ScalarType::f32)) continue;
+    const bool floats = spec->type == ScalarType::f32 || spec->type == ScalarType::f16;
+    if (b == nullptr || (!withSums && !floats)) continue;
     out.push_back(b);
   }
   return out;

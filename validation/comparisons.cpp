@@ -49,6 +49,33 @@ constexpr StageId kBufferStages[] = {
 #include "common/stages.inc"
 };
 
+// The scalar type of each buffer, in declaration order.
+constexpr ScalarType kBufferTypes[] = {
+#define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
+#define VOXGI_EFFECT(owner, effect, meaning)
+#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STEP(technique, owner, stage)
+#define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning) ScalarType::type,
+#include "common/stages.inc"
+};
+
+// A buffer stored as halves (f16) compares exactly or widens by their rounding; half_rounding names
+// nothing else.
+constexpr bool halvesWidenByTheirRounding() {
+  for (size_t i = 0; i < std::size(kComparisons); ++i) {
+    const Comparison& c = kComparisons[i];
+    const bool halves = kBufferTypes[i] == ScalarType::f16;
+    const bool exact = c.metric == Metric::exact && c.widening == Widening::none;
+    if (halves ? !(exact || c.widening == Widening::half_rounding)
+               : c.widening == Widening::half_rounding)
+      return false;
+  }
+  return true;
+}
+static_assert(halvesWidenByTheirRounding(),
+              "validation/comparisons.inc: an f16 buffer's comparison is exact or widens by "
+              "half_rounding, and only an f16 buffer's widens so");
+
 // The diff classifies an element once for all the buffers of its stage.
 constexpr bool aStageHasOneTieRule() {
   for (size_t i = 1; i < std::size(kComparisons); ++i)
@@ -78,6 +105,7 @@ std::string Comparison::describe() const {
       s << "max |gpu-cpu| / max |element| " << tolerance;
       break;
   }
+  if (widening == Widening::half_rounding) s << " + 1 f16 ULP";
   return s.str();
 }
 

@@ -20,8 +20,11 @@ enum class Ties { none, voxel_boundaries, pixel_edges, texel_edges };
 
 // How the tolerance widens with the run: f16_steps, for a float buffer of a plan that stores half
 // floats, by 2^-10 per propagation step up to the element's (a half rounding that falls the other
-// way carries on each step; docs/lpv.md, T16).
-enum class Widening { none, f16_steps };
+// way carries on each step; docs/lpv.md, T16); half_rounding, for a buffer stored as halves (f16),
+// by one ULP of a half: each backend rounds its own float result, and where the two straddle a
+// rounding boundary their halves are one ULP apart, at most 2^-10 of the value (2^-24 below the
+// smallest normal half).
+enum class Widening { none, f16_steps, half_rounding };
 
 struct Comparison {
   BufferId buffer;

@@ -49,16 +49,24 @@ namespace {
 // The relative tolerance of element e of a buffer whose comparison widens with f16 steps, under a
 // plan that stores half floats: a rounding that falls the other way on the two backends moves a
 // value by one half ULP (2^-11), and each step can carry that on, so the buffer allows 2^-10 per
-// step up to the element's (a series buffer's volume k: k + 1 steps; any other: every step).
+// step up to the element's (a series buffer's volume k: k + 1 steps; any other: every step). A
+// buffer stored as halves (half_rounding) allows one ULP of a half more: 2^-10 of the element.
 double widenedTolerance(const Comparison& cmp, const BufferSpec& spec, const EffectPlan& plan,
                         const Buffer& b, size_t e) {
   const double tolerance = cmp.tolerance;
+  if (cmp.widening == Widening::half_rounding) return tolerance + std::ldexp(1.0, -10);
   if (cmp.widening != Widening::f16_steps || !plan.on(Effect::f16) || spec.type != ScalarType::f32)
     return tolerance;
   const size_t volume = size_t(b.extent.x) * size_t(b.extent.x) * size_t(b.extent.x);
   const double steps =
       spec.shape == BufferShape::series ? double(e / volume + 1) : double(plan.seriesLength);
   return std::max(tolerance, std::ldexp(steps, -10));
+}
+
+// What a max_rel comparison allows on top of its relative tolerance: one subnormal half's spacing
+// (2^-24) for a buffer stored as halves, where a ULP is no longer relative to the value.
+double absoluteSlack(const Comparison& cmp) {
+  return cmp.widening == Widening::half_rounding ? std::ldexp(1.0, -24) : 0.0;
 }
 
 double seconds(std::chrono::steady_clock::time_point since) {
@@ -195,8 +203,7 @@ StageReport compareStage(const StageSpec& stage, const EffectPlan& plan, const B
         relative = widenedTolerance(cmp, *spec, plan, a, e);
       }
       for (int k = 0; k < spec->components; ++k) {
-        const size_t w = e * size_t(spec->components) + size_t(k);
-        if (a.words[w] == b.words[w]) continue;
+        if (a.bitsAt(e, k) == b.bitsAt(e, k)) continue;
         const double abs = std::abs(b.value(e, k) - a.value(e, k));
         r.maxAbsDiff = std::max(r.maxAbsDiff, abs);
         elementWorst = std::max(elementWorst, abs);
@@ -207,7 +214,8 @@ StageReport compareStage(const StageSpec& stage, const EffectPlan& plan, const B
         }
         if (cmp.metric == Metric::exact) outside = true;
         if (cmp.metric == Metric::max_abs) outside |= !(abs <= cmp.tolerance);
-        if (cmp.metric == Metric::max_rel) outside |= !(abs <= relative * magnitude);
+        if (cmp.metric == Metric::max_rel)
+          outside |= !(abs <= relative * magnitude + absoluteSlack(cmp));
       }
       if (elementWorst > worst && elementWorst > 0.0) {
         worst = elementWorst;

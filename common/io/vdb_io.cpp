@@ -43,7 +43,7 @@ struct View {
   }
   bool nonzero(size_t e) const {
     for (int c = 0; c < count; ++c)
-      if (b.words[e * size_t(b.components()) + size_t(first + c)] != 0u) return true;
+      if (b.bitsAt(e, first + c) != 0u) return true;
     return false;
   }
 };
@@ -66,7 +66,8 @@ template <class Places>
 openvdb::GridPtrVec blockGrids(const View& v, const Places& places, const std::string& name) {
   openvdb::GridPtrVec out;
   const int comps = v.count;
-  const bool f32 = v.b.spec->type == ScalarType::f32;
+  // Half floats are written as floats, which hold them exactly.
+  const bool f32 = v.b.spec->type == ScalarType::f32 || v.b.spec->type == ScalarType::f16;
   if (comps > 4 && comps % 3 == 0) {  // SH volumes: rgb per coefficient, components r0.. g0.. b0..
     const int coefficients = comps / 3;
     for (int i = 0; i < coefficients; ++i) {

@@ -88,10 +88,12 @@ Buffer nodeFacesBuffer(const NodeLevels& levels) {
   size_t nodes = 0;
   for (const auto& level : levels.levels) nodes += level.size() / kFaces;
   Buffer b(BufferId::svo_mip_node_faces, glm::ivec3(int(nodes), 1, 1));
-  size_t at = 0;
+  size_t face = 0;  // faces in order, kFaces an element
   for (const auto& level : levels.levels)
-    for (const glm::vec4& v : level)
-      for (int c = 0; c < 4; ++c) b.words[at++] = std::bit_cast<uint32_t>(v[c]);
+    for (const glm::vec4& v : level) {
+      for (int c = 0; c < 4; ++c) b.set(face / kFaces, int(face % kFaces) * 4 + c, v[c]);
+      ++face;
+    }
   return b;
 }
 
@@ -99,12 +101,14 @@ NodeLevels nodeLevels(const Buffer& faces, const Words& tiles, int depth) {
   NodeLevels out;
   out.levels.resize(size_t(depth));
   const size_t tileCount = tiles.size() / shared::kTileWords;
-  const uint32_t* word = faces.words.data();  // 8 nodes x 6 faces x 4 floats a tile, in order
+  size_t node = 0;  // 8 nodes x 6 faces x RGBA a tile, in order
   for (size_t t = 0; t < tileCount; ++t) {
     auto& level = out.levels[tiles[t * shared::kTileWords + shared::kTileLevel]];
-    for (int face = 0; face < 8 * kFaces; ++face, word += 4)
-      level.emplace_back(std::bit_cast<float>(word[0]), std::bit_cast<float>(word[1]),
-                         std::bit_cast<float>(word[2]), std::bit_cast<float>(word[3]));
+    for (int i = 0; i < 8; ++i, ++node)
+      for (int face = 0; face < kFaces; ++face)
+        level.emplace_back(faces.get<float>(node, 4 * face), faces.get<float>(node, 4 * face + 1),
+                           faces.get<float>(node, 4 * face + 2),
+                           faces.get<float>(node, 4 * face + 3));
   }
   return out;
 }

@@ -18,7 +18,8 @@ void svo::mip(const StageContext& ctx, BufferSet& buffers) {
   const Buffer& gathered = buffers.at(BufferId::svo_propagate_gathered);
   Buffer bricks(BufferId::svo_mip_gathered_bricks,
                 glm::ivec3(int(o.leafTileCount()) * shared::kBrickTexels, 1, 1));
-  bricks.words = completeBricks(o, depth, gathered.words, 4);
+  // A brick's texels are copies of the leaves' values, so the packed halves copy as they are.
+  bricks.words = completeBricks(o, depth, gathered.words, int(gathered.elementWords()));
   buffers.put(std::move(bricks));
 }
 

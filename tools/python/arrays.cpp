@@ -14,11 +14,6 @@ std::string shapeText(const std::vector<py::ssize_t>& shape) {
   return text + (shape.size() == 1 ? ",)" : ")");
 }
 
-template <class T>
-py::array contiguous(const py::array& array) {
-  return py::array_t<T, py::array::c_style>::ensure(array);
-}
-
 }  // namespace
 
 std::vector<py::ssize_t> arrayShape(const Buffer& b) {
@@ -48,6 +43,8 @@ py::dtype arrayDtype(ScalarType type) {
       return py::dtype::of<int32_t>();
     case ScalarType::f32:
       return py::dtype::of<float>();
+    case ScalarType::f16:
+      return py::dtype("float16");  // numpy's IEEE half, two a word as the buffer holds them
   }
   return py::dtype::of<float>();
 }
@@ -59,7 +56,7 @@ std::string describeArray(const std::vector<py::ssize_t>& shape, ScalarType type
 py::array bufferArray(const Buffer& b, py::handle owner) {
   const std::vector<py::ssize_t> shape = arrayShape(b);
   std::vector<py::ssize_t> strides(shape.size());
-  py::ssize_t stride = sizeof(uint32_t);
+  py::ssize_t stride = b.halves() ? 2 : 4;
   for (size_t i = shape.size(); i-- > 0;) {
     strides[i] = stride;
     stride *= shape[i];
@@ -83,9 +80,8 @@ Buffer arrayBuffer(const BufferSpec& spec, glm::ivec3 extent, const py::array& a
                      "the array is " + shapeText(got) + " " + std::string(py::str(array.dtype())) +
                          ", the buffer " + describeArray(want, spec.type) +
                          " (docs/python.md, \"Arrays\")");
-  const py::array words = spec.type == ScalarType::f32   ? contiguous<float>(array)
-                          : spec.type == ScalarType::i32 ? contiguous<int32_t>(array)
-                                                         : contiguous<uint32_t>(array);
+  // The dtype matches the buffer's (checked above), so a C-ordered copy holds its words.
+  const py::array words = py::array::ensure(array, py::array::c_style);
   std::memcpy(b.words.data(), words.data(), b.words.size() * sizeof(uint32_t));
   return b;
 }
