@@ -2,6 +2,8 @@
 // classifier calls it a tie, and the voxelize classifier recognises near-boundary voxels.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "common/camera_geometry.h"
 #include "common/voxel_triangles.h"
 #include "tests/test_scenes.h"
@@ -74,6 +76,33 @@ TEST(Diff, InjectedDifferencesFailUnlessTheyAreTies) {
   EXPECT_TRUE(counted.pass);
   gpu.take(BufferId::common_voxelize_normal);
   EXPECT_FALSE(validation::compareStage(voxelize(), plan(scene), cpu, gpu, allTies).pass);
+}
+
+// A buffer stored as halves (svo's node faces, max_rel 1e-5) allows one ULP of a half where the
+// two backends' floats round to neighbouring halves, and no more.
+TEST(Diff, HalvesAllowOneUlpOfTheirRounding) {
+  const Scene scene = litQuad();
+  const Technique& svo = findTechnique("svo");
+  const EffectPlan svoPlan = svo.plan(scene, techniqueDefaults(svo));
+  BufferSet cpu;
+  Buffer faces(BufferId::svo_mip_node_faces, glm::ivec3(2, 1, 1));
+  for (int c = 0; c < faces.components(); ++c) faces.set(0, c, 1.0f);  // halves 0x3c00
+  cpu.put(faces);                                                      // element 1 stays zero
+  cpu.put(Buffer(BufferId::svo_mip_gathered_bricks, glm::ivec3(27, 1, 1)));
+  const auto withFace = [&](size_t e, int c, float v) {
+    BufferSet gpu = cpu;
+    Buffer f = gpu.take(BufferId::svo_mip_node_faces);
+    f.set(e, c, v);
+    gpu.put(std::move(f));
+    return validation::compareStage(stageSpec(StageId::svo_mip), svoPlan, cpu, gpu, {}).pass;
+  };
+  const float ulp = std::ldexp(1.0f, -10);  // of a half in [1, 2)
+  EXPECT_TRUE(withFace(0, 5, 1.0f + ulp));
+  EXPECT_FALSE(withFace(0, 5, 1.0f + 2.0f * ulp));
+  EXPECT_TRUE(withFace(0, 5, 1.0f - ulp / 2.0f));  // the next half down, in [0.5, 1)
+  // Where every value is tiny the allowance is one subnormal half's spacing, 2^-24.
+  EXPECT_TRUE(withFace(1, 3, std::ldexp(1.0f, -24)));
+  EXPECT_FALSE(withFace(1, 3, std::ldexp(1.0f, -23)));
 }
 
 TEST(Diff, VoxelizeTiesAreTheVoxelsOnADecisionBoundary) {
