@@ -33,20 +33,6 @@ Words floatWords(const Buffer& b) {
   return out;
 }
 
-Buffer fromFloatWords(BufferId id, glm::ivec3 extent, const Words& floats) {
-  Buffer b(id, extent);
-  if (!b.halves()) {
-    b.words = floats;
-    return b;
-  }
-  const size_t n = b.elementCount();
-  const int c = b.components();
-  for (size_t e = 0; e < n; ++e)
-    for (int k = 0; k < c; ++k)
-      b.set(e, k, std::bit_cast<float>(floats[e * size_t(c) + size_t(k)]));
-  return b;
-}
-
 const Buffer& BufferSet::at(BufferId id) const {
   const Buffer* b = find(id);
   if (b == nullptr)

@@ -111,9 +111,6 @@ inline glm::vec3 vec3AtOr0(const Buffer* b, size_t e) {
 // The components of a float buffer (f32 or f16) as f32 words, an f16 buffer's halves widened
 // exactly: for readers that work in floats.
 Words floatWords(const Buffer& b);
-// A buffer of `id` and `extent` holding the f32 words `floats` (floatWords' layout), each
-// component stored as the buffer's type holds it: an f16 buffer's rounded to the nearest half.
-Buffer fromFloatWords(BufferId id, glm::ivec3 extent, const Words& floats);
 
 // The buffers of one run, each under its own declaration (stage and name): bounce's radiance
 // never replaces light_voxels'. A stage reads its inputs with at() or find() and adds its outputs

@@ -3,6 +3,7 @@
 #include <bit>
 
 #include "common/svo/tree_depth.h"
+#include "shaders/shared/half_float.h"
 #include "shaders/shared/svo/svo_layout.h"
 #include "shaders/shared/vct/bounce_kernel.h"
 
@@ -69,8 +70,8 @@ LeafRadiance carriedSource(const CarriedLight& before, const Words& leafTiles, c
       // A tile's empty leaves have no opacity: they stay as direct left them (zero).
       if (!(a.a > 0.0f)) continue;
       // As the CPU gather's albedoAt: the albedo per unit of opacity.
-      source[slot] =
-          shared::addReflected(direct[slot], glm::vec3(a) / a.a, before.gathered[b * 8 + local]);
+      source[slot] = shared::roundToHalf4(
+          shared::addReflected(direct[slot], glm::vec3(a) / a.a, before.gathered[b * 8 + local]));
     }
   }
   return source;

@@ -6,6 +6,7 @@
 
 #include "cpu/vct/gather_lanes.h"
 #include "cpu/vct/light_voxel_lanes.h"
+#include "shaders/shared/half_float.h"
 #include "shaders/shared/vct/bounce_kernel.h"
 #include "shaders/shared/svo/mip_kernel.h"
 #include "shaders/shared/vct/mip_kernel.h"
@@ -210,7 +211,7 @@ LeafRadiance injectLeaves(const Octree& octree, const Leaves& leaves,
     else
       for (size_t i = 0; i < lit.size(); ++i)
         lit[i] = shared::lightVoxel(volumes, real.voxels[i], params);
-    for (size_t i = 0; i < lit.size(); ++i) out[real.slots[i]] = lit[i];
+    for (size_t i = 0; i < lit.size(); ++i) out[real.slots[i]] = shared::roundToHalf4(lit[i]);
   });
   return out;
 }
@@ -241,7 +242,7 @@ NodeLevels mipTree(const Octree& octree, const Leaves& leaves, const LeafRadianc
         }
         for (int face = 0; face < shared::kFaces; ++face)
           values[(i * 8 + local) * shared::kFaces + size_t(face)] =
-              shared::mipAnisotropic(c, glm::ivec3(0), face);
+              shared::roundToHalf4(shared::mipAnisotropic(c, glm::ivec3(0), face));
       }
     });
   }
@@ -274,10 +275,14 @@ LeafRadiance bounceOnce(const Octree& octree, const Leaves& leaves, const LeafRa
     gatherVoxels(simdLevel(), volumes, lanes, voxels, params, g);
     for (size_t i = 0; i < slots.size(); ++i) {
       const size_t slot = slots[i];
-      next[slot] = shared::addReflected(direct[slot], volumes.albedoAt(voxels[i]), g[i]);
+      // The gathered light as its pool stores it (halves), and the radiance reflected from that,
+      // as a sequence under propagate.carry reflects the stored light (carriedSource).
+      const glm::vec4 stored = shared::roundToHalf4(glm::vec4(g[i], direct[slot].a));
+      next[slot] = shared::roundToHalf4(
+          shared::addReflected(direct[slot], volumes.albedoAt(voxels[i]), glm::vec3(stored)));
       if (outputs == nullptr) continue;
-      gathered[slot] = glm::vec4(g[i] * direct[slot].a, direct[slot].a);
-      straight[slot] = g[i];
+      straight[slot] = glm::vec3(stored);
+      gathered[slot] = shared::roundToHalf4(glm::vec4(glm::vec3(stored) * stored.a, stored.a));
     }
   });
   if (outputs != nullptr) *outputs = {std::move(mips), std::move(gathered), std::move(straight)};

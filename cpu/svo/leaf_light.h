@@ -1,7 +1,9 @@
 // Light in the sparse voxel octree on the CPU (docs/svo.md): the leaves' resolved attributes, the
 // direct light injected into them, the anisotropic mipmap up the tree and the progressive bounces,
 // each through the dense technique's shared kernels (light_voxels_kernel.h, mip_kernel.h,
-// bounce_kernel.h) reading the octree through SvoVolumes.
+// bounce_kernel.h) reading the octree through SvoVolumes. Every value the light's pools hold (the
+// direct light, a frame's radiance and gathered light, the node faces) is rounded to halves as
+// the GPU's pools store it (shaders/shared/half_float.h; common/svo/stages.inc).
 #pragma once
 
 #include <bit>

@@ -4,6 +4,7 @@
 #include <initializer_list>
 
 #include "gpu/program.h"
+#include "shaders/shared/half_float.h"
 #include "shaders/shared/svo/svo_layout.h"
 #include "shaders/shared/vct/mip_kernel.h"
 
@@ -18,16 +19,34 @@ GLuint upload(const Gl& gl, const std::vector<T>& v) {
   return createBuffer(gl, v.size() * sizeof(T), v.data());
 }
 
-std::vector<glm::vec4> download(const Gl& gl, GLuint buffer, size_t count, size_t offset = 0) {
-  std::vector<glm::vec4> out(count);
+// The light pools hold an RGBA value as two words of halves (shared/half_float.h, packHalves):
+// the bytes of `count` such values.
+size_t halvesBytes(size_t count) {
+  return count * sizeof(glm::uvec2);
+}
+
+// RGBA values into a pool of halves (each rounded to the nearest; the CPU's values already are).
+GLuint uploadHalves(const Gl& gl, const std::vector<glm::vec4>& values) {
+  std::vector<glm::uvec2> words(values.size());
+  for (size_t i = 0; i < values.size(); ++i) words[i] = shared::packHalves(values[i]);
+  return upload(gl, words);
+}
+
+// `count` values of a pool of halves from value `offset` on, exactly.
+std::vector<glm::vec4> downloadHalves(const Gl& gl, GLuint buffer, size_t count,
+                                      size_t offset = 0) {
+  std::vector<glm::uvec2> words(count);
   if (count > 0)
-    gl.GetNamedBufferSubData(buffer, GLintptr(offset * sizeof(glm::vec4)),
-                             GLsizeiptr(count * sizeof(glm::vec4)), out.data());
+    gl.GetNamedBufferSubData(buffer, GLintptr(halvesBytes(offset)), GLsizeiptr(halvesBytes(count)),
+                             words.data());
+  std::vector<glm::vec4> out(count);
+  for (size_t i = 0; i < count; ++i) out[i] = shared::unpackHalves(words[i]);
   return out;
 }
 
 // The octree and the leaves as svo_volumes.glsl reads them: node words, leaf tiles, leaf values
-// (albedo, normal, emission: three vec4 a leaf slot), level 0's radiance and the node faces.
+// (albedo, normal, emission: three vec4 a leaf slot), level 0's radiance and the node faces (the
+// light in halves).
 struct Volumes {
   GlBuffer nodes, leafTiles, leafValues, source, nodeFaces;
   size_t slots, nodeCount;
@@ -46,8 +65,8 @@ struct Volumes {
       values[3 * i + 2] = glm::vec4(leaves.emission[i], 0.0f);
     }
     leafValues = GlBuffer(gl, upload(gl, values));
-    source = GlBuffer(gl, s != nullptr ? upload(gl, *s) : createBuffer(gl, 16, nullptr));
-    nodeFaces = GlBuffer(gl, createBuffer(gl, nodeCount * 6 * sizeof(glm::vec4), nullptr));
+    source = GlBuffer(gl, s != nullptr ? uploadHalves(gl, *s) : createBuffer(gl, 16, nullptr));
+    nodeFaces = GlBuffer(gl, createBuffer(gl, halvesBytes(nodeCount * 6), nullptr));
   }
   void bind(const Gl& gl) const {
     const GLuint blocks[5] = {nodes.get(), leafTiles.get(), leafValues.get(), source.get(),
@@ -85,8 +104,8 @@ NodeLevels mipInto(const Gl& gl, const Tree& t, const Volumes& v, voxgi::svo::Fi
     program.set("uFirst", start[size_t(level)] * 8u);
     program.set("uCount", tiles * 8u);
     dispatchLinear(gl, size_t(tiles) * 8);
-    out.levels[size_t(level)] = download(gl, v.nodeFaces.get(), size_t(tiles) * 8 * 6,
-                                         size_t(start[size_t(level)]) * 8 * 6);
+    out.levels[size_t(level)] = downloadHalves(gl, v.nodeFaces.get(), size_t(tiles) * 8 * 6,
+                                               size_t(start[size_t(level)]) * 8 * 6);
   }
   gl.check("mip");
   return out;
@@ -111,7 +130,8 @@ void leafPass(const Gl& gl, const Tree& t, const Volumes& v, const ShaderSource&
 GLuint buildBricks(const Gl& gl, GLuint nodes, GLuint tileRecords, GLuint interior,
                    size_t tileCount, int faces) {
   const size_t texels = tileCount * shared::kBrickTexels;
-  const GLuint bricks = createBuffer(gl, std::max<size_t>(texels, 1) * size_t(faces) * 16, nullptr);
+  const GLuint bricks =
+      createBuffer(gl, halvesBytes(std::max<size_t>(texels, 1) * size_t(faces)), nullptr);
   Program program(gl, {&shaders::svo_mip_brick_comp});
   program.use();
   program.set("uCount", unsigned(texels));
@@ -130,10 +150,10 @@ LeafRadiance injectLeaves(GlContext& context, const Tree& tree, const voxgi::svo
   const Gl& gl = context.gl();
   const Volumes v(gl, tree, leaves, nullptr);
   GlBuffer lightBlock(gl, createBlock(gl, params, lights));
-  GlBuffer direct(gl, createBuffer(gl, v.slots * sizeof(glm::vec4), nullptr));
+  GlBuffer direct(gl, createBuffer(gl, halvesBytes(v.slots), nullptr));
   leafPass(gl, tree, v, shaders::svo_propagate_inject_comp, {lightBlock.get(), direct.get()},
            "propagate_inject");
-  return download(gl, direct.get(), v.slots);
+  return downloadHalves(gl, direct.get(), v.slots);
 }
 
 NodeLevels mipTree(GlContext& context, const Tree& tree, const voxgi::svo::Leaves& leaves,
@@ -160,19 +180,19 @@ LeafRadiance bounceOnce(GlContext& context, const Tree& tree, const voxgi::svo::
   GlBuffer nodeBricks(gl, buildBricks(gl, v.nodes.get(), tiles.get(), v.nodeFaces.get(),
                                       v.nodeCount / 8, shared::kFaces));
   GlBuffer coneBlock(gl, createBlock(gl, params, cones));
-  GlBuffer directBlock(gl, upload(gl, direct));
-  GlBuffer frame(gl, createBuffer(gl, 2 * v.slots * sizeof(glm::vec4), nullptr));
+  GlBuffer directBlock(gl, uploadHalves(gl, direct));
+  GlBuffer frame(gl, createBuffer(gl, halvesBytes(2 * v.slots), nullptr));
   leafPass(gl, tree, v, shaders::svo_propagate_gather_comp,
            {coneBlock.get(), directBlock.get(), frame.get(), leafBricks.get(), nodeBricks.get()},
            "propagate_gather");
-  const std::vector<glm::vec4> both = download(gl, frame.get(), 2 * v.slots);
+  const std::vector<glm::vec4> both = downloadHalves(gl, frame.get(), 2 * v.slots);
   LeafRadiance next(v.slots), gathered(v.slots);
   std::vector<glm::vec3> straight(v.slots);
   for (size_t s = 0; s < v.slots; ++s) {
     next[s] = both[2 * s];
     const glm::vec4 g = both[2 * s + 1];
-    // The CPU's product (one rounding each), not the shader's: the same bits either way.
-    gathered[s] = glm::vec4(glm::vec3(g) * g.a, g.a);
+    // The CPU's product of the stored halves, rounded as the pool stores it.
+    gathered[s] = shared::roundToHalf4(glm::vec4(glm::vec3(g) * g.a, g.a));
     straight[s] = glm::vec3(g);
   }
   if (outputs != nullptr) *outputs = {std::move(mips), std::move(gathered), std::move(straight)};

@@ -26,15 +26,11 @@ void svo::mip(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   const size_t texels = tiles * shared::kBrickTexels;
   GlBuffer nodes(gl, createBuffer(gl, words.nodes.size() * 4, words.nodes.data()));
   GlBuffer leafTiles(gl, createBuffer(gl, words.leafTiles.size() * 4, words.leafTiles.data()));
-  const Words interiorFloats = floatWords(gathered);
-  GlBuffer interior(gl, createBuffer(gl, interiorFloats.size() * 4, interiorFloats.data()));
+  GlBuffer interior(gl, uploadWords(gl, gathered));  // halves, as the pools hold them
   GlBuffer bricks(gl, svo::buildBricks(gl, nodes.get(), leafTiles.get(), interior.get(), tiles, 1));
-  Words brickFloats(texels * 4);
-  if (texels > 0)
-    gl.GetNamedBufferSubData(bricks.get(), 0, GLsizeiptr(brickFloats.size() * 4),
-                             brickFloats.data());
-  buffers.put(fromFloatWords(BufferId::svo_mip_gathered_bricks, glm::ivec3(int(texels), 1, 1),
-                             brickFloats));
+  Buffer out(BufferId::svo_mip_gathered_bricks, glm::ivec3(int(texels), 1, 1));
+  readWords(gl, bricks.get(), out);
+  buffers.put(std::move(out));
 }
 
 }  // namespace voxgi::gpu

@@ -37,14 +37,10 @@ void svo::shade(GlContext& context, const StageContext& ctx, BufferSet& buffers)
   }
   const Buffer& nodeWords = buffers.at(BufferId::svo_build_nodes);
   GlBuffer nodes(gl, uploadWords(gl, nodeWords));
-  // The shaders read the light in floats; the buffers hold it as halves.
-  const auto floats = [&](BufferId id) {
-    const Words w = floatWords(buffers.at(id));
-    return createBuffer(gl, w.size() * 4, w.data());
-  };
-  GlBuffer source(gl, floats(BufferId::svo_propagate_radiance));
-  GlBuffer faces(gl, floats(BufferId::svo_mip_node_faces));
-  GlBuffer bricks(gl, floats(BufferId::svo_mip_gathered_bricks));
+  // The light as the buffers hold it, in halves (shaders/svo/svo_pyramid.glsl).
+  GlBuffer source(gl, uploadWords(gl, buffers.at(BufferId::svo_propagate_radiance)));
+  GlBuffer faces(gl, uploadWords(gl, buffers.at(BufferId::svo_mip_node_faces)));
+  GlBuffer bricks(gl, uploadWords(gl, buffers.at(BufferId::svo_mip_gathered_bricks)));
   // The cones read the radiance and the node faces as bricks, as the gather does.
   const Buffer& leafTileWords = buffers.at(BufferId::svo_build_leaf_tiles);
   const Buffer& tileWords = buffers.at(BufferId::svo_build_tiles);

@@ -48,5 +48,24 @@ VOXGI_FN float halfValue(uint h) {
   return uintBitsToFloat(sign | floatBitsToUint(v));
 }
 
+// An RGBA value rounded to halves, component by component.
+VOXGI_FN vec4 roundToHalf4(vec4 v) {
+  return vec4(roundToHalf(v.x), roundToHalf(v.y), roundToHalf(v.z), roundToHalf(v.w));
+}
+
+// An RGBA value as two words of halves, each rounded to the nearest: x and y in the first word, z
+// and w in the second, the low half first (the octree's light pools, common/svo/stages.inc; the
+// layout of an f16 buffer in common/buffer.h).
+VOXGI_FN uvec2 packHalves(vec4 v) {
+  vec4 h = roundToHalf4(v);
+  return uvec2(halfBits(h.x) | (halfBits(h.y) << 16u), halfBits(h.z) | (halfBits(h.w) << 16u));
+}
+
+// packHalves' words back to their values, exactly.
+VOXGI_FN vec4 unpackHalves(uvec2 w) {
+  return vec4(halfValue(w.x & 0xffffu), halfValue(w.x >> 16u), halfValue(w.y & 0xffffu),
+              halfValue(w.y >> 16u));
+}
+
 VOXGI_NAMESPACE_END
 #endif

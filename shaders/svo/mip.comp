@@ -1,7 +1,8 @@
 #version 450 core
 // One node level of the octree's six-face mipmap (shaders/shared/vct/mip_kernel.h): each node's
 // faces from its child tile, the leaves' radiance (optionally weighted per face by their normals,
-// shaders/shared/svo/mip_kernel.h) or the level below's faces. One invocation per node.
+// shaders/shared/svo/mip_kernel.h) or the level below's faces, each face rounded to halves as the
+// pool stores it. One invocation per node.
 layout(local_size_x = 64) in;
 #include "shared/svo/mip_kernel.h"
 #include "svo_volumes.glsl"
@@ -14,8 +15,8 @@ uint gChild;  // the child tile of the node being mipmapped
 
 vec4 childAt(int face, ivec3 c) {
   uint child = gChild * 8u + localId(uvec3(c));
-  if (uLevel + 1 < uDepth) return nodeFaces[6u * child + uint(face)];
-  vec4 v = source[child];
+  if (uLevel + 1 < uDepth) return unpackHalves(nodeFaces[6u * child + uint(face)]);
+  vec4 v = unpackHalves(source[child]);
   return uNdfWeights ? ndfWeighted(v, leafNormal(child), face) : v;
 }
 
@@ -27,6 +28,6 @@ void main() {
   uint node = uFirst + i;
   gChild = nodes[node * uint(kNodeWords) + uint(kNodeChild)];
   for (int face = 0; face < kFaces; ++face)
-    nodeFaces[6u * node + uint(face)] = gChild == kSvoNull ? vec4(0.0f)
-                                                            : mipAnisotropic(ivec3(0), face);
+    nodeFaces[6u * node + uint(face)] =
+        gChild == kSvoNull ? uvec2(0u) : packHalves(mipAnisotropic(ivec3(0), face));
 }

@@ -8,8 +8,9 @@ layout(local_size_x = 64) in;
 
 // the tile records (leaf tiles, or node tiles)
 layout(std430, binding = 1) readonly buffer Tiles { uint tiles[]; };
-layout(std430, binding = 2) readonly buffer Interior { vec4 interior[]; };  // uFaces a voxel
-layout(std430, binding = 3) writeonly buffer Bricks { vec4 bricks[]; };     // 27 x uFaces a tile
+// RGBA values as two words of halves (shared/half_float.h, packHalves), copied as they are
+layout(std430, binding = 2) readonly buffer Interior { uvec2 interior[]; };  // uFaces a voxel
+layout(std430, binding = 3) writeonly buffer Bricks { uvec2 bricks[]; };     // 27 x uFaces a tile
 uniform uint uCount;  // texels: tiles x 27
 uniform uint uFaces;
 
@@ -28,5 +29,5 @@ void main() {
   }
   uint voxel = source * 8u + localId(uvec3(at % 2));
   for (uint f = 0u; f < uFaces; ++f)
-    bricks[e * uFaces + f] = source == kSvoNull ? vec4(0.0f) : interior[voxel * uFaces + f];
+    bricks[e * uFaces + f] = source == kSvoNull ? uvec2(0u) : interior[voxel * uFaces + f];
 }

@@ -8,24 +8,25 @@ layout(local_size_x = 64) in;
 #include "shared/vct/cone_types.h"
 #include "svo_volumes.glsl"
 
-layout(std430, binding = 6) readonly buffer Direct { vec4 direct[]; };
+// The light as halves (shared/half_float.h, packHalves), as the CPU's pools round it.
+layout(std430, binding = 6) readonly buffer Direct { uvec2 direct[]; };
 // per leaf slot: the next radiance, then the gathered light (rgb) and the opacity (a)
-layout(std430, binding = 7) writeonly buffer Frame { vec4 frame[]; };
+layout(std430, binding = 7) writeonly buffer Frame { uvec2 frame[]; };
 uniform uint uCount;
 
 vec4 directAt(ivec3 v) {
   uint s = slotOf(uDepth, v);
-  return s == kSvoNull ? vec4(0.0f) : direct[s];
+  return s == kSvoNull ? vec4(0.0f) : unpackHalves(direct[s]);
 }
 ConeData coneAt(int i);  // defined below, after the cone block
 
 // The source's levels as bricks (gpu/svo/leaf_light.cpp, buildBricks): the cones read a trilinear
 // cell with one walk and eight texels, not a walk per texel.
-layout(std430, binding = 8) readonly buffer LeafBricks { vec4 leafBricks[]; };  // 27 a leaf tile
-layout(std430, binding = 9) readonly buffer NodeBricks { vec4 nodeBricks[]; };  // 27 x 6 a tile
+layout(std430, binding = 8) readonly buffer LeafBricks { uvec2 leafBricks[]; };  // 27 a leaf tile
+layout(std430, binding = 9) readonly buffer NodeBricks { uvec2 nodeBricks[]; };  // 27 x 6 a tile
 vec4 svoBrickAt(int level, int face, uint tile, uint texel) {
   uint e = tile * uint(kBrickTexels) + texel;
-  return level == uDepth ? leafBricks[e] : nodeBricks[e * 6u + uint(face)];
+  return unpackHalves(level == uDepth ? leafBricks[e] : nodeBricks[e * 6u + uint(face)]);
 }
 #include "shared/svo/svo_sample.h"
 // Pyramid level `level` is tree level uDepth - level (svo_pyramid.glsl).
@@ -48,12 +49,14 @@ void main() {
   if (s >= uCount) return;
   ivec3 v;
   if (!realLeaf(s, v)) {
-    frame[2u * s] = vec4(0.0f);
-    frame[2u * s + 1u] = vec4(0.0f);
+    frame[2u * s] = uvec2(0u);
+    frame[2u * s + 1u] = uvec2(0u);
     return;
   }
   vec3 g = gatherVoxel(v, params);
-  vec4 d = direct[s];
-  frame[2u * s] = addReflected(d, albedoAt(v), g);
-  frame[2u * s + 1u] = vec4(g, d.a);
+  vec4 d = unpackHalves(direct[s]);
+  // The radiance reflects the gathered light as its pool stores it (halves), as the CPU's does.
+  vec4 stored = roundToHalf4(vec4(g, d.a));
+  frame[2u * s] = packHalves(addReflected(d, albedoAt(v), stored.rgb));
+  frame[2u * s + 1u] = packHalves(stored);
 }

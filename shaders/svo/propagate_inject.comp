@@ -14,7 +14,7 @@ layout(std430, binding = 5) readonly buffer Lights {
   LightVoxelsParams params;
   LightData lights[];
 };
-layout(std430, binding = 6) writeonly buffer Direct { vec4 direct[]; };
+layout(std430, binding = 6) writeonly buffer Direct { uvec2 direct[]; };  // halves (packHalves)
 uniform uint uCount;
 
 LightData lightAt(int i) { return lights[i]; }
@@ -23,5 +23,5 @@ void main() {
   uint s = gl_GlobalInvocationID.x + gl_NumWorkGroups.x * 64u * gl_GlobalInvocationID.y;
   if (s >= uCount) return;
   ivec3 v;
-  direct[s] = realLeaf(s, v) ? lightVoxel(v, params) : vec4(0.0f);
+  direct[s] = realLeaf(s, v) ? packHalves(lightVoxel(v, params)) : uvec2(0u);
 }

@@ -12,17 +12,18 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #define SVO_FACES_BINDING 2
 #include "svo_pyramid.glsl"
 
-layout(std430, binding = 3) readonly buffer Bricks { vec4 bricks[]; };  // 27 a leaf tile
+// The light as halves (shared/half_float.h, packHalves), as the tree's buffers hold it.
+layout(std430, binding = 3) readonly buffer Bricks { uvec2 bricks[]; };  // 27 a leaf tile
 // The cones' levels as bricks (gpu/svo/leaf_light.cpp, buildBricks), as propagate_gather.comp
 // reads them: one walk and eight texels a trilinear cell.
-layout(std430, binding = 8) readonly buffer LeafBricks { vec4 leafBricks[]; };  // 27 a leaf tile
-layout(std430, binding = 9) readonly buffer NodeBricks { vec4 nodeBricks[]; };  // 27 x 6 a tile
+layout(std430, binding = 8) readonly buffer LeafBricks { uvec2 leafBricks[]; };  // 27 a leaf tile
+layout(std430, binding = 9) readonly buffer NodeBricks { uvec2 nodeBricks[]; };  // 27 x 6 a tile
 vec4 svoBrickAt(int level, int face, uint tile, uint texel);
 #include "shared/svo/svo_sample.h"
 vec4 svoBrickAt(int level, int face, uint tile, uint texel) {
   uint e = tile * uint(kBrickTexels) + texel;
-  if (face == kSvoGatheredFace) return bricks[e];
-  return level == uDepth ? leafBricks[e] : nodeBricks[e * 6u + uint(face)];
+  if (face == kSvoGatheredFace) return unpackHalves(bricks[e]);
+  return unpackHalves(level == uDepth ? leafBricks[e] : nodeBricks[e * 6u + uint(face)]);
 }
 // Pyramid level `level` is tree level uDepth - level (svo_pyramid.glsl).
 vec4 filterBrickCell(int level, int face, TrilinearCell c) {

@@ -2,6 +2,8 @@
 // [Salm 2015, §4.4.2] (docs/svo.md, tests S10, S11), plain and NDF-weighted first step.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "cpu/svo/leaf_light.h"
 #include "tests/svo/tree_samples.h"
 
@@ -54,12 +56,13 @@ TEST(SvoMip, AnisotropicGoldenValues) {
   EXPECT_EQ(parentFace(two, FirstStep::plain, kPx), glm::vec4(0.25f));
   for (const int f : {kPy, kMy, kPz, kMz})
     EXPECT_EQ(parentFace(two, FirstStep::plain, f), glm::vec4(2.75f, 2.75f, 2.75f, 0.5f));
-  // Uniform opacity 0.3, radiance 2 in all eight: 1 - 0.7^2 along every face, radiance kept.
+  // Uniform opacity 0.3, radiance 2 in all eight: 1 - 0.7^2 along every face, radiance kept; the
+  // faces are stored as halves, so each within half a ULP of a half (2^-12 in [0.5, 2)).
   std::vector<std::pair<int, glm::vec4>> all;
   for (int l = 0; l < 8; ++l) all.push_back({l, glm::vec4(0.6f, 0.6f, 0.6f, 0.3f)});
   const glm::vec4 uniform = parentFace(oneTile(all, glm::vec3(0.0f)), FirstStep::plain, kPz);
-  EXPECT_NEAR(uniform.a, 1.0f - 0.7f * 0.7f, 1e-6f);
-  EXPECT_NEAR(uniform.x / uniform.a, 2.0f, 1e-6f);
+  EXPECT_NEAR(uniform.a, 1.0f - 0.7f * 0.7f, std::ldexp(1.0f, -12));
+  EXPECT_NEAR(uniform.x, 2.0f * (1.0f - 0.7f * 0.7f), std::ldexp(1.0f, -11));
   // The NDF-weighted first step: an opaque wall in the x = 1 children facing +x.
   OneTile wall =
       oneTile({{1, glm::vec4(1)}, {3, glm::vec4(1)}, {5, glm::vec4(1)}, {7, glm::vec4(1)}},

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 
+#include "common/mips.h"
 #include "common/svo/stage_inputs.h"
 #include "common/stage.h"
 #include "common/vct/cone_sets.h"
@@ -13,6 +14,8 @@
 #include "cpu/svo/leaf_light.h"
 #include "cpu/vct/cone_volumes.h"
 #include "cpu/vct/gather_lanes.h"
+#include "shaders/shared/half_float.h"
+#include "shaders/shared/vct/mip_kernel.h"
 #include "shaders/shared/vct/bounce_kernel.h"
 #include "tests/svo/tree_samples.h"
 #include "tests/test_scenes.h"
@@ -111,9 +114,45 @@ DenseTree denseTree(int depth, const char* last) {
   return t;
 }
 
+// The dense directional pyramid (vct's mip.radiance_mips6 layout, common/mips.h) as the octree's
+// pools hold it: each level mipped by the shared kernel from the level below as stored, and each
+// face rounded to halves.
+Buffer storedPyramid(const Buffer& radiance, const Buffer& mips6, int n) {
+  struct Below {
+    const Buffer& radiance;
+    const Buffer& pyramid;
+    int n, level;  // the level being mipped
+    glm::vec4 childAt(int face, glm::ivec3 c) const {
+      if (level == 1) return voxelValue(radiance, c);
+      const int s = n >> (level - 1);
+      const size_t e =
+          mipLevelOffset(n, level - 1, 6) + size_t((c.z * s + c.y) * 6 * s + face * s + c.x);
+      return {pyramid.get<float>(e, 0), pyramid.get<float>(e, 1), pyramid.get<float>(e, 2),
+              pyramid.get<float>(e, 3)};
+    }
+  };
+  Buffer out = mips6;
+  for (int level = 1; level <= mipLevelCount(n); ++level) {
+    const Below below{radiance, out, n, level};
+    const int s = n >> level;
+    for (int z = 0; z < s; ++z)
+      for (int y = 0; y < s; ++y)
+        for (int face = 0; face < 6; ++face)
+          for (int x = 0; x < s; ++x) {
+            const glm::vec4 v =
+                shared::roundToHalf4(shared::mipAnisotropic(below, {x, y, z}, face));
+            const size_t e =
+                mipLevelOffset(n, level, 6) + size_t((z * s + y) * 6 * s + face * s + x);
+            for (int c = 0; c < 4; ++c) out.set(e, c, v[c]);
+          }
+  }
+  return out;
+}
+
 // The end-to-end oracle: an octree whose leaves hold the dense grid's occupied voxels mips to the
-// dense directional pyramid bit for bit on every level it has, and the shared bounce kernel reads
-// the same cone results through it at every leaf.
+// dense directional pyramid bit for bit on every level it has (mipped as the octree's pools store
+// it, in halves), and the shared bounce kernel reads the same cone results through it at every
+// leaf.
 TEST(SvoLight, OctreeOfADenseGridGivesTheDensePyramidAndConeResults) {
   constexpr int kDepth = 5, kN = 1 << kDepth;
   const DenseTree t = denseTree(kDepth, "mip");
@@ -128,8 +167,9 @@ TEST(SvoLight, OctreeOfADenseGridGivesTheDensePyramidAndConeResults) {
 
   const NodeLevels mips = cpu::svo::mipTree(o, leaves, leafRadiance, FirstStep::plain);
   const ConeTraceSetup& setup = t.bounce;
-  const cpu::ConeVolumes pyramid(radiance, dense.at(BufferId::vct_mip_radiance_mips6),
-                                 MipMode::anisotropic, kN, setup.lights, setup.cones);
+  const Buffer stored = storedPyramid(radiance, dense.at(BufferId::vct_mip_radiance_mips6), kN);
+  const cpu::ConeVolumes pyramid(radiance, stored, MipMode::anisotropic, kN, setup.lights,
+                                 setup.cones);
   const SvoVolumes tree{o, leaves, &leafRadiance, &mips, &leafRadiance, nullptr, &setup.cones};
   for (int level = 1; level < kDepth; ++level) {
     const int s = kN >> level;
@@ -218,7 +258,9 @@ TEST(SvoLight, TheGatherInLanesIsTheKernelsOnEverySimdLevel) {
 
 // Progressive bounces [Salm 2015, §4.4.3]: with static light, frame t's radiance is the explicit
 // sum of T^j(direct) for j <= t, with T one gather of the previous frame (linear for fixed
-// geometry), and the increments shrink geometrically; clearing every frame gives one bounce.
+// geometry), and the increments shrink geometrically; clearing every frame gives one bounce. The
+// pools store halves, so the sum holds to their rounding: each frame rounds the gathered light
+// and the radiance (2^-11 each), 2^-8 of the value over the three frames and the sum's terms.
 TEST(SvoLight, ProgressiveBouncesAreTheExplicitSumAndConverge) {
   constexpr int kDepth = 4;
   const DenseTree t = denseTree(kDepth, "light_voxels");
@@ -242,8 +284,9 @@ TEST(SvoLight, ProgressiveBouncesAreTheExplicitSumAndConverge) {
     if (direct[slot].a <= 0.0f) continue;
     const glm::vec4 sum = direct[slot] + t1[slot] + t2[slot] + t3[slot];
     for (int c = 0; c < 3; ++c) {
-      ASSERT_NEAR(l3[slot][c], sum[c], 2e-6f * sum[c] + 1e-7f) << slot;
-      ASSERT_NEAR(once[slot][c], direct[slot][c] + t1[slot][c], 2e-6f * sum[c] + 1e-7f) << slot;
+      const float rounding = std::ldexp(sum[c], -8) + std::ldexp(1.0f, -24);
+      ASSERT_NEAR(l3[slot][c], sum[c], rounding) << slot;
+      ASSERT_NEAR(once[slot][c], direct[slot][c] + t1[slot][c], rounding) << slot;
     }
     d1 += t1[slot].x, d2 += t2[slot].x, d3 += t3[slot].x;
   }
@@ -348,9 +391,10 @@ TEST(SvoLight, InjectionIsTheAnalyticDirectLightAndTheSplattedEmission) {
   cpu::svo::forEachRealLeaf(o, [&](size_t slot, glm::ivec3 v) {
     if (v != glm::ivec3(5, 3, 7)) return;
     found = true;
-    // E = 36 / 6^2 = 1 along the normal; opacity 1.
-    EXPECT_NEAR(l[slot].x, 0.8f / 3.14159265f, 1e-6f);
-    EXPECT_NEAR(l[slot].z, 0.2f / 3.14159265f, 1e-6f);
+    // E = 36 / 6^2 = 1 along the normal; opacity 1. Stored as a half: within half its ULP, 2^-11
+    // of the value at most.
+    EXPECT_NEAR(l[slot].x, 0.8f / 3.14159265f, 0.8f / 3.14159265f / 2048.0f);
+    EXPECT_NEAR(l[slot].z, 0.2f / 3.14159265f, 0.2f / 3.14159265f / 2048.0f);
     EXPECT_EQ(l[slot].a, 1.0f);
   });
   EXPECT_TRUE(found);
@@ -358,7 +402,8 @@ TEST(SvoLight, InjectionIsTheAnalyticDirectLightAndTheSplattedEmission) {
 
 // Injection's map of the leaves with opacity (opaqueLeaves) answers 0 exactly where looking the
 // voxel up in the tree does, on every voxel of the grid, so the visibility rays that skip the
-// lookups through it inject the same bits as without it.
+// lookups through it inject the same bits as without it (the kernel's light, rounded to the
+// halves the pool stores).
 TEST(SvoLight, TheOpaqueLeavesMapIsTheTreesOpacity) {
   constexpr int kDepth = 5, kN = 1 << kDepth;
   const DenseTree t = denseTree(kDepth, "light_voxels");
@@ -398,7 +443,8 @@ TEST(SvoLight, TheOpaqueLeavesMapIsTheTreesOpacity) {
     const LeafRadiance injected = cpu::svo::injectLeaves(t.octree, t.leaves, lights, params, level);
     size_t lit = 0;
     cpu::svo::forEachRealLeaf(t.octree, everyTile, [&](size_t slot, glm::ivec3 v) {
-      EXPECT_TRUE(sameBits(injected[slot], shared::lightVoxel(volumes, v, params)))
+      EXPECT_TRUE(
+          sameBits(injected[slot], shared::roundToHalf4(shared::lightVoxel(volumes, v, params))))
           << cpu::simdLevelName(level) << " slot " << slot;
       lit += injected[slot].x > 0.0f;
     });
