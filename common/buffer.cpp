@@ -1,6 +1,7 @@
 #include "common/buffer.h"
 
 #include "common/mips.h"
+#include "common/parallel.h"
 #include "shaders/shared/half_float.h"
 
 #include <stdexcept>
@@ -24,13 +25,34 @@ float Buffer::halfToFloat(uint32_t bits) {
 
 Words floatWords(const Buffer& b) {
   if (!b.halves()) return b.words;
-  const size_t n = b.elementCount();
-  const int c = b.components();
-  Words out(n * size_t(c));
-  for (size_t e = 0; e < n; ++e)
-    for (int k = 0; k < c; ++k)
-      out[e * size_t(c) + size_t(k)] = std::bit_cast<uint32_t>(b.get<float>(e, k));
+  Words out(b.words.size() * 2);
+  halvesToFloats(b.words, std::span(reinterpret_cast<float*>(out.data()), out.size()));
   return out;
+}
+
+namespace {
+constexpr size_t kConvertChunk = size_t(1) << 16;  // words a task
+}  // namespace
+
+void floatsToHalves(std::span<const float> floats, std::span<uint32_t> words) {
+  if (floats.size() != 2 * words.size())
+    throw std::logic_error("floatsToHalves: two floats a word of halves");
+  parallelFor(tbb::blocked_range<size_t>(0, words.size(), kConvertChunk), [&](const auto& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i)
+      words[i] = shared::halfBits(shared::roundToHalf(floats[2 * i])) |
+                 shared::halfBits(shared::roundToHalf(floats[2 * i + 1])) << 16;
+  });
+}
+
+void halvesToFloats(std::span<const uint32_t> words, std::span<float> floats) {
+  if (floats.size() != 2 * words.size())
+    throw std::logic_error("halvesToFloats: two floats a word of halves");
+  parallelFor(tbb::blocked_range<size_t>(0, words.size(), kConvertChunk), [&](const auto& r) {
+    for (size_t i = r.begin(); i != r.end(); ++i) {
+      floats[2 * i] = shared::halfValue(words[i] & 0xffffu);
+      floats[2 * i + 1] = shared::halfValue(words[i] >> 16);
+    }
+  });
 }
 
 const Buffer& BufferSet::at(BufferId id) const {

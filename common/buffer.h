@@ -111,6 +111,11 @@ inline glm::vec3 vec3AtOr0(const Buffer* b, size_t e) {
 // The components of a float buffer (f32 or f16) as f32 words, an f16 buffer's halves widened
 // exactly: for readers that work in floats.
 Words floatWords(const Buffer& b);
+// An f16 buffer's words from floats and back, in bulk (two values a word, the low half first;
+// `floats` has twice as many values as `words`): each value rounded to the nearest half, and each
+// half widened exactly, as Buffer::set and get convert one component.
+void floatsToHalves(std::span<const float> floats, std::span<uint32_t> words);
+void halvesToFloats(std::span<const uint32_t> words, std::span<float> floats);
 
 // The buffers of one run, each under its own declaration (stage and name): bounce's radiance
 // never replaces light_voxels'. A stage reads its inputs with at() or find() and adds its outputs

@@ -1,6 +1,8 @@
 #include "common/svo/stage_inputs.h"
 
 #include <bit>
+#include <stdexcept>
+#include <string>
 
 #include "common/parallel.h"
 #include "shaders/shared/svo/svo_layout.h"
@@ -70,8 +72,24 @@ Leaves treeLeaves(const BufferSet& buffers) {
                        scales.get<float>(0, 1));
 }
 
+namespace {
+
+// RGBA values as floats, four a value.
+std::span<const float> floatsOf(const std::vector<glm::vec4>& values) {
+  return {reinterpret_cast<const float*>(values.data()), values.size() * 4};
+}
+std::span<float> floatsOf(std::vector<glm::vec4>& values) {
+  return {reinterpret_cast<float*>(values.data()), values.size() * 4};
+}
+
+}  // namespace
+
 Buffer vec4Buffer(BufferId id, const std::vector<glm::vec4>& values) {
   Buffer b(id, glm::ivec3(int(values.size()), 1, 1));
+  if (b.halves()) {
+    floatsToHalves(floatsOf(values), b.words);
+    return b;
+  }
   for (size_t i = 0; i < values.size(); ++i)
     for (int c = 0; c < 4; ++c) b.set(i, c, values[i][c]);
   return b;
@@ -79,36 +97,47 @@ Buffer vec4Buffer(BufferId id, const std::vector<glm::vec4>& values) {
 
 std::vector<glm::vec4> vec4Values(const Buffer& buffer) {
   std::vector<glm::vec4> out(buffer.elementCount());
+  if (buffer.halves()) {
+    halvesToFloats(buffer.words, floatsOf(out));
+    return out;
+  }
   for (size_t i = 0; i < out.size(); ++i)
     for (int c = 0; c < 4; ++c) out[i][c] = buffer.get<float>(i, c);
   return out;
 }
 
+// node_faces holds halves (common/svo/stages.inc): a face's RGBA is two words, the nodes' faces
+// one after another in canonical order, each level's a contiguous run.
 Buffer nodeFacesBuffer(const NodeLevels& levels) {
   size_t nodes = 0;
   for (const auto& level : levels.levels) nodes += level.size() / kFaces;
   Buffer b(BufferId::svo_mip_node_faces, glm::ivec3(int(nodes), 1, 1));
-  size_t face = 0;  // faces in order, kFaces an element
-  for (const auto& level : levels.levels)
-    for (const glm::vec4& v : level) {
-      for (int c = 0; c < 4; ++c) b.set(face / kFaces, int(face % kFaces) * 4 + c, v[c]);
-      ++face;
-    }
+  size_t at = 0;
+  for (const auto& level : levels.levels) {
+    floatsToHalves(floatsOf(level), std::span(b.words).subspan(at, level.size() * 2));
+    at += level.size() * 2;
+  }
   return b;
 }
 
 NodeLevels nodeLevels(const Buffer& faces, const Words& tiles, int depth) {
   NodeLevels out;
   out.levels.resize(size_t(depth));
-  const size_t tileCount = tiles.size() / shared::kTileWords;
-  size_t node = 0;  // 8 nodes x 6 faces x RGBA a tile, in order
-  for (size_t t = 0; t < tileCount; ++t) {
-    auto& level = out.levels[tiles[t * shared::kTileWords + shared::kTileLevel]];
-    for (int i = 0; i < 8; ++i, ++node)
-      for (int face = 0; face < kFaces; ++face)
-        level.emplace_back(faces.get<float>(node, 4 * face), faces.get<float>(node, 4 * face + 1),
-                           faces.get<float>(node, 4 * face + 2),
-                           faces.get<float>(node, 4 * face + 3));
+  // The tiles come level by level (the canonical order), so each level's faces are one run.
+  std::vector<size_t> levelTiles(size_t(depth), 0);
+  for (size_t t = 0; t < tiles.size() / shared::kTileWords; ++t)
+    ++levelTiles[tiles[t * shared::kTileWords + shared::kTileLevel]];
+  size_t total = 0;
+  for (const size_t n : levelTiles) total += n;
+  if (faces.elementCount() != total * 8)
+    throw std::logic_error("svo/mip.node_faces holds " + std::to_string(faces.elementCount()) +
+                           " nodes, the tree " + std::to_string(total * 8));
+  size_t at = 0;
+  for (size_t level = 0; level < levelTiles.size(); ++level) {
+    const size_t count = levelTiles[level] * 8 * kFaces;
+    out.levels[level].resize(count);
+    halvesToFloats(std::span(faces.words).subspan(at, 2 * count), floatsOf(out.levels[level]));
+    at += 2 * count;
   }
   return out;
 }
