@@ -94,15 +94,19 @@ TEST(Diff, HalvesAllowOneUlpOfTheirRounding) {
     Buffer f = gpu.take(BufferId::svo_mip_node_faces);
     f.set(e, c, v);
     gpu.put(std::move(f));
-    return validation::compareStage(stageSpec(StageId::svo_mip), svoPlan, cpu, gpu, {}).pass;
+    return validation::compareStage(stageSpec(StageId::svo_mip), svoPlan, cpu, gpu, {});
   };
   const float ulp = std::ldexp(1.0f, -10);  // of a half in [1, 2)
-  EXPECT_TRUE(withFace(0, 5, 1.0f + ulp));
-  EXPECT_FALSE(withFace(0, 5, 1.0f + 2.0f * ulp));
-  EXPECT_TRUE(withFace(0, 5, 1.0f - ulp / 2.0f));  // the next half down, in [0.5, 1)
+  const validation::StageReport one = withFace(0, 5, 1.0f + ulp);
+  EXPECT_TRUE(one.pass);
+  EXPECT_EQ(one.buffers.at(0).maxUlp, 1.0);  // counted in ULPs of a half
+  const validation::StageReport two = withFace(0, 5, 1.0f + 2.0f * ulp);
+  EXPECT_FALSE(two.pass);
+  EXPECT_EQ(two.buffers.at(0).maxUlp, 2.0);
+  EXPECT_TRUE(withFace(0, 5, 1.0f - ulp / 2.0f).pass);  // the next half down, in [0.5, 1)
   // Where every value is tiny the allowance is one subnormal half's spacing, 2^-24.
-  EXPECT_TRUE(withFace(1, 3, std::ldexp(1.0f, -24)));
-  EXPECT_FALSE(withFace(1, 3, std::ldexp(1.0f, -23)));
+  EXPECT_TRUE(withFace(1, 3, std::ldexp(1.0f, -24)).pass);
+  EXPECT_FALSE(withFace(1, 3, std::ldexp(1.0f, -23)).pass);
 }
 
 TEST(Diff, VoxelizeTiesAreTheVoxelsOnADecisionBoundary) {

@@ -27,6 +27,17 @@ double ulpDistance(float a, float b) {
   return std::abs(static_cast<double>(ordered(a) - ordered(b)));
 }
 
+// The same for two halves' bits (an f16 buffer's components; NaN = infinite), in ULPs of a half.
+double halfUlpDistance(uint32_t a, uint32_t b) {
+  const auto nan = [](uint32_t h) { return (h & 0x7c00u) == 0x7c00u && (h & 0x3ffu) != 0; };
+  if (nan(a) || nan(b)) return std::numeric_limits<double>::infinity();
+  const auto ordered = [](uint32_t h) {
+    const int32_t magnitude = int32_t(h & 0x7fffu);
+    return (h & 0x8000u) != 0 ? -magnitude : magnitude;
+  };
+  return std::abs(static_cast<double>(ordered(a) - ordered(b)));
+}
+
 }  // namespace
 
 TieClassifier stageTies(const StageSpec& stage, const StageContext& ctx, const BufferSet& cpu,
@@ -207,8 +218,10 @@ StageReport compareStage(const StageSpec& stage, const EffectPlan& plan, const B
         const double abs = std::abs(b.value(e, k) - a.value(e, k));
         r.maxAbsDiff = std::max(r.maxAbsDiff, abs);
         elementWorst = std::max(elementWorst, abs);
-        if (spec->type == ScalarType::f32) {
-          const double ulp = ulpDistance(a.get<float>(e, k), b.get<float>(e, k));
+        if (spec->type == ScalarType::f32 || spec->type == ScalarType::f16) {
+          const double ulp = spec->type == ScalarType::f32
+                                 ? ulpDistance(a.get<float>(e, k), b.get<float>(e, k))
+                                 : halfUlpDistance(a.bitsAt(e, k), b.bitsAt(e, k));
           r.maxUlp = std::max(r.maxUlp, ulp);
           if (cmp.metric == Metric::max_ulp) outside |= ulp > cmp.tolerance;
         }
