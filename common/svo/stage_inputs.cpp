@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/parallel.h"
+#include "shaders/shared/half_float.h"
 #include "shaders/shared/svo/svo_layout.h"
 #include "shaders/shared/svo/build_kernel.h"
 
@@ -66,10 +67,19 @@ Leaves resolveLeaves(const Words& sums, float weightScale, float emissionScale) 
   return out;
 }
 
+Leaves storedLeaves(Leaves leaves) {
+  parallelFor(size_t(0), leaves.albedo.size(), [&](size_t i) {
+    leaves.albedo[i] = shared::roundToHalf4(leaves.albedo[i]);
+    leaves.normal[i] = glm::vec3(shared::roundToHalf4(glm::vec4(leaves.normal[i], 0.0f)));
+    leaves.emission[i] = glm::vec3(shared::roundToHalf4(glm::vec4(leaves.emission[i], 0.0f)));
+  });
+  return leaves;
+}
+
 Leaves treeLeaves(const BufferSet& buffers) {
   const Buffer& scales = buffers.at(BufferId::svo_build_scales);
-  return resolveLeaves(buffers.at(BufferId::svo_build_leaf_sums).words, scales.get<float>(0, 0),
-                       scales.get<float>(0, 1));
+  return storedLeaves(resolveLeaves(buffers.at(BufferId::svo_build_leaf_sums).words,
+                                    scales.get<float>(0, 0), scales.get<float>(0, 1)));
 }
 
 namespace {

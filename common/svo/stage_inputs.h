@@ -24,7 +24,10 @@ OctreeWords treeWords(const BufferSet& buffers, bool sums);
 // per leaf slot. Both factors are powers of two, so the decode is exact wherever a sum fits a
 // float's 24 bits, and the same on both backends.
 Leaves resolveLeaves(const Words& sums, float weightScale, float emissionScale);
-// The leaves from build's leaf sums and scales.
+// The leaves as the geometry pool holds them: every value rounded to the nearest half, as
+// [Salm 2015, §4.3.1]'s RGBA16F pools (the GPU's holds two halves a word).
+Leaves storedLeaves(Leaves leaves);
+// The leaves from build's leaf sums and scales, as the geometry pool holds them.
 Leaves treeLeaves(const BufferSet& buffers);
 
 // A per-leaf (or per-texel) RGBA buffer and back.

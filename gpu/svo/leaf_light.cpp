@@ -45,8 +45,8 @@ std::vector<glm::vec4> downloadHalves(const Gl& gl, GLuint buffer, size_t count,
 }
 
 // The octree and the leaves as svo_volumes.glsl reads them: node words, leaf tiles, leaf values
-// (albedo, normal, emission: three vec4 a leaf slot), level 0's radiance and the node faces (the
-// light in halves).
+// (albedo, normal, emission: three RGBA a leaf slot), level 0's radiance and the node faces, the
+// values in halves (storedLeaves' leaves are halves already, so their packing is exact).
 struct Volumes {
   GlBuffer nodes, leafTiles, leafValues, source, nodeFaces;
   size_t slots, nodeCount;
@@ -64,7 +64,7 @@ struct Volumes {
       values[3 * i + 1] = glm::vec4(leaves.normal[i], 0.0f);
       values[3 * i + 2] = glm::vec4(leaves.emission[i], 0.0f);
     }
-    leafValues = GlBuffer(gl, upload(gl, values));
+    leafValues = GlBuffer(gl, uploadHalves(gl, values));
     source = GlBuffer(gl, s != nullptr ? uploadHalves(gl, *s) : createBuffer(gl, 16, nullptr));
     nodeFaces = GlBuffer(gl, createBuffer(gl, halvesBytes(nodeCount * 6), nullptr));
   }

@@ -3,15 +3,16 @@
 // pyramid level 0 (the leaves) and of the node levels, each found by walking the tree.
 #include "svo_tree.glsl"
 layout(std430, binding = 1) readonly buffer LeafTiles { uint leafTiles[]; };
-// per leaf slot (8 a leaf tile): albedo sum and opacity, normal sum, emission sum (vec4 each)
-layout(std430, binding = 2) readonly buffer LeafValues { vec4 leafValues[]; };
+// per leaf slot (8 a leaf tile): albedo sum and opacity, normal sum, emission sum (RGBA each, as
+// two words of halves: the geometry pool, shared/half_float.h's packHalves)
+layout(std430, binding = 2) readonly buffer LeafValues { uvec2 leafValues[]; };
 #define SVO_SOURCE_BINDING 3
 #define SVO_FACES_BINDING 4
 #include "svo_pyramid.glsl"
 
-vec4 leafAlbedo(uint s) { return leafValues[3u * s]; }
-vec3 leafNormal(uint s) { return leafValues[3u * s + 1u].xyz; }
-vec3 leafEmission(uint s) { return leafValues[3u * s + 2u].xyz; }
+vec4 leafAlbedo(uint s) { return unpackHalves(leafValues[3u * s]); }
+vec3 leafNormal(uint s) { return unpackHalves(leafValues[3u * s + 1u]).xyz; }
+vec3 leafEmission(uint s) { return unpackHalves(leafValues[3u * s + 2u]).xyz; }
 
 float opacityAt(ivec3 v) {
   uint s = slotOf(uDepth, v);

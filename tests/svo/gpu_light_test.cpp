@@ -59,7 +59,7 @@ TEST_P(GpuSvoLight, InjectionMipAndGatherAgreeWithTheCpu) {
   const cpu::svo::Octree o = cpu::svo::buildOctree(set.samples, kDepth);
   const Words sums = cpu::svo::accumulateLeaves(o, set.samples, set.weightScale, scene.file);
   const cpu::svo::Leaves leaves =
-      voxgi::svo::resolveLeaves(sums, set.weightScale, set.emissionScale);
+      voxgi::svo::storedLeaves(voxgi::svo::resolveLeaves(sums, set.weightScale, set.emissionScale));
   const svo::OctreeWords words{o.nodes, o.tiles, o.leafTiles, {}};
   const gpu::svo::Tree tree{words, kDepth};
   gpu::GlContext& context = glContext(GetParam());
