@@ -170,7 +170,7 @@ LeafRadiance bounceOnce(GlContext& context, const Tree& tree, const voxgi::svo::
                         voxgi::svo::FrameOutputs* outputs) {
   context.makeCurrent();
   const Gl& gl = context.gl();
-  const Volumes v(gl, tree, leaves, &source);
+  Volumes v(gl, tree, leaves, &source);
   NodeLevels mips = mipInto(gl, tree, v, first);
   // Every level as bricks, so that a cone's trilinear cell is one walk and eight texels
   // ([Salm 2015, §4.4]), as on the CPU.
@@ -179,6 +179,10 @@ LeafRadiance bounceOnce(GlContext& context, const Tree& tree, const voxgi::svo::
       gl, buildBricks(gl, v.nodes.get(), v.leafTiles.get(), v.source.get(), v.slots / 8, 1));
   GlBuffer nodeBricks(gl, buildBricks(gl, v.nodes.get(), tiles.get(), v.nodeFaces.get(),
                                       v.nodeCount / 8, shared::kFaces));
+  // The cones read the bricks alone (VOXGI_BRICK_CELLS): the faces and the source they repeat
+  // go before the gather's own pools are allocated, as [Salm 2015]'s pools are bricks alone.
+  v.source = GlBuffer(gl, 0);
+  v.nodeFaces = GlBuffer(gl, 0);
   GlBuffer coneBlock(gl, createBlock(gl, params, cones));
   GlBuffer directBlock(gl, uploadHalves(gl, direct));
   GlBuffer frame(gl, createBuffer(gl, halvesBytes(2 * v.slots), nullptr));
