@@ -24,7 +24,6 @@ float Buffer::halfToFloat(uint32_t bits) {
 }
 
 Words floatWords(const Buffer& b) {
-  if (!b.halves()) return b.words;
   Words out(b.words.size() * 2);
   halvesToFloats(b.words, std::span(reinterpret_cast<float*>(out.data()), out.size()));
   return out;

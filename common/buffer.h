@@ -108,8 +108,8 @@ inline glm::vec3 vec3AtOr0(const Buffer* b, size_t e) {
   return b == nullptr ? glm::vec3(0.0f) : b->vec3At(e);
 }
 
-// The components of a float buffer (f32 or f16) as f32 words, an f16 buffer's halves widened
-// exactly: for readers that work in floats.
+// The components of an f16 buffer as f32 words, each half widened exactly: for readers that work
+// in floats.
 Words floatWords(const Buffer& b);
 // An f16 buffer's words from floats and back, in bulk (two values a word, the low half first;
 // `floats` has twice as many values as `words`): each value rounded to the nearest half, and each

@@ -96,23 +96,13 @@ std::span<float> floatsOf(std::vector<glm::vec4>& values) {
 
 Buffer vec4Buffer(BufferId id, const std::vector<glm::vec4>& values) {
   Buffer b(id, glm::ivec3(int(values.size()), 1, 1));
-  if (b.halves()) {
-    floatsToHalves(floatsOf(values), b.words);
-    return b;
-  }
-  for (size_t i = 0; i < values.size(); ++i)
-    for (int c = 0; c < 4; ++c) b.set(i, c, values[i][c]);
+  floatsToHalves(floatsOf(values), b.words);
   return b;
 }
 
 std::vector<glm::vec4> vec4Values(const Buffer& buffer) {
   std::vector<glm::vec4> out(buffer.elementCount());
-  if (buffer.halves()) {
-    halvesToFloats(buffer.words, floatsOf(out));
-    return out;
-  }
-  for (size_t i = 0; i < out.size(); ++i)
-    for (int c = 0; c < 4; ++c) out[i][c] = buffer.get<float>(i, c);
+  halvesToFloats(buffer.words, floatsOf(out));
   return out;
 }
 

@@ -30,7 +30,8 @@ Leaves storedLeaves(Leaves leaves);
 // The leaves from build's leaf sums and scales, as the geometry pool holds them.
 Leaves treeLeaves(const BufferSet& buffers);
 
-// A per-leaf (or per-texel) RGBA buffer and back.
+// A per-leaf (or per-texel) RGBA buffer of halves (the octree's light, common/svo/stages.inc) and
+// back; the values are rounded to the nearest half.
 Buffer vec4Buffer(BufferId id, const std::vector<glm::vec4>& values);
 std::vector<glm::vec4> vec4Values(const Buffer& buffer);
 // mip's node_faces (six faces a node, nodes in canonical order) and back, for a tree whose
