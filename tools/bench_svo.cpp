@@ -36,13 +36,14 @@ uint64_t elementBytes(BufferId id) {
   return uint64_t(b.components) * (b.type == ScalarType::f16 ? 2u : 4u);
 }
 
-// Bytes of the technique's tree buffers at this tree: the structure's words; per leaf (8 a leaf
-// tile) the sums, the direct, radiance and gathered light; per leaf tile the gathered light's 3^3
+// Bytes of the technique's tree buffers at this tree, as a run without the leaf sums (which voxgi
+// diff and dump keep) holds them: the structure's words; per leaf (8 a leaf tile) the decoded
+// leaves, the direct, radiance and gathered light; per leaf tile the gathered light's 3^3
 // brick; per node (8 a node tile) six RGBA faces.
 uint64_t octreeBytes(const cpu::svo::Octree& o) {
   const uint64_t structure = (o.nodes.size() + o.tiles.size() + o.leafTiles.size()) * 4;
   uint64_t perLeaf = 0;
-  for (const BufferId id : {BufferId::svo_build_leaf_sums, BufferId::svo_propagate_direct,
+  for (const BufferId id : {BufferId::svo_build_leaves, BufferId::svo_propagate_direct,
                             BufferId::svo_propagate_radiance, BufferId::svo_propagate_gathered})
     perLeaf += elementBytes(id);
   const uint64_t perLeafTile = 8 * perLeaf + uint64_t(shared::kBrickTexels) *

@@ -91,6 +91,9 @@ SparseLayouts sparseLayouts(const BufferSet& run, const GridSpec& grid) {
     leafSums.metadata = {{"voxgi_svo_weight_scale", std::to_string(s->get<float>(0, 0))},
                          {"voxgi_svo_emission_scale", std::to_string(s->get<float>(0, 1))}};
   out[BufferId::svo_build_leaf_sums] = leafSums;
+  SparseLayout decoded = leaves;
+  decoded.groups = {{0, 3, "_albedo"}, {3, 1, "_opacity"}, {4, 3, "_normal"}, {7, 3, "_emission"}};
+  out[BufferId::svo_build_leaves] = decoded;
   for (const BufferId id : {BufferId::svo_propagate_direct, BufferId::svo_propagate_radiance,
                             BufferId::svo_propagate_gathered})
     out[id] = leaves;

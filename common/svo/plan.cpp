@@ -46,6 +46,12 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
     build << ", " << triangles << " triangle(s) sampled at " << s.meshDensity
           << " points per leaf face (build.mesh_density)";
   p.lightStage(StageId::svo_build, true, build.str());
+  // Every later stage reads the leaves decoded from the sums; the sums are the words the backends'
+  // builds compare exactly.
+  p.effect("fixed-point leaf sums", Effect::leaf_sums, settings.inspect || p.full,
+           settings.inspect ? "voxgi diff and dump compare the builds' sums word for word"
+           : p.full         ? "plan.mode=full keeps them beside the leaves"
+                            : "decoded into the leaves' halves and released");
   std::ostringstream frames;
   const size_t areaLights = areaLightCount(scene, settings.vct.emitters);
   frames << scene.lights.size() << " analytic light(s)";

@@ -5,7 +5,6 @@
 #include <string>
 
 #include "common/parallel.h"
-#include "shaders/shared/half_float.h"
 #include "shaders/shared/svo/svo_layout.h"
 #include "shaders/shared/svo/build_kernel.h"
 
@@ -22,30 +21,30 @@ void treeParams(shared::ConeTraceParams& params, int depth) {
 
 }  // namespace
 
-void putTree(BufferSet& buffers, OctreeWords words, float weightScale, float emissionScale) {
+void putTree(BufferSet& buffers, OctreeWords words, float weightScale, float emissionScale,
+             bool keepSums) {
   const auto put = [&](BufferId id, Words& w) {
     Buffer b(id, glm::ivec3(0, 1, 1));
     b.extent.x = int(w.size() / size_t(b.components()));
     b.words = std::move(w);
     buffers.put(std::move(b));
   };
+  buffers.put(leavesBuffer(resolveLeaves(words.sums, weightScale, emissionScale)));
   put(BufferId::svo_build_nodes, words.nodes);
   put(BufferId::svo_build_tiles, words.tiles);
   put(BufferId::svo_build_leaf_tiles, words.leafTiles);
-  put(BufferId::svo_build_leaf_sums, words.sums);
+  if (keepSums) put(BufferId::svo_build_leaf_sums, words.sums);
   Buffer scales(BufferId::svo_build_scales, glm::ivec3(1));
   scales.set(0, 0, weightScale);
   scales.set(0, 1, emissionScale);
   buffers.put(std::move(scales));
 }
 
-OctreeWords treeWords(const BufferSet& buffers, bool sums) {
-  OctreeWords w{buffers.at(BufferId::svo_build_nodes).words,
-                buffers.at(BufferId::svo_build_tiles).words,
-                buffers.at(BufferId::svo_build_leaf_tiles).words,
-                {}};
-  if (sums) w.sums = buffers.at(BufferId::svo_build_leaf_sums).words;
-  return w;
+OctreeWords treeWords(const BufferSet& buffers) {
+  return {buffers.at(BufferId::svo_build_nodes).words,
+          buffers.at(BufferId::svo_build_tiles).words,
+          buffers.at(BufferId::svo_build_leaf_tiles).words,
+          {}};
 }
 
 Leaves resolveLeaves(const Words& sums, float weightScale, float emissionScale) {
@@ -67,19 +66,45 @@ Leaves resolveLeaves(const Words& sums, float weightScale, float emissionScale) 
   return out;
 }
 
-Leaves storedLeaves(Leaves leaves) {
-  parallelFor(size_t(0), leaves.albedo.size(), [&](size_t i) {
-    leaves.albedo[i] = shared::roundToHalf4(leaves.albedo[i]);
-    leaves.normal[i] = glm::vec3(shared::roundToHalf4(glm::vec4(leaves.normal[i], 0.0f)));
-    leaves.emission[i] = glm::vec3(shared::roundToHalf4(glm::vec4(leaves.emission[i], 0.0f)));
+// build's leaves: per leaf albedo (rgb) and opacity, normal, emission: ten halves, five words.
+constexpr int kLeafValues = 10;
+static_assert(kLeafValues == shared::kSumWords, "a leaf value per sum");
+
+Buffer leavesBuffer(const Leaves& leaves) {
+  const size_t n = leaves.albedo.size();
+  std::vector<float> values(n * kLeafValues);
+  parallelFor(size_t(0), n, [&](size_t i) {
+    float* v = &values[i * kLeafValues];
+    for (int c = 0; c < 4; ++c) v[c] = leaves.albedo[i][c];
+    for (int c = 0; c < 3; ++c) {
+      v[4 + c] = leaves.normal[i][c];
+      v[7 + c] = leaves.emission[i][c];
+    }
   });
-  return leaves;
+  Buffer b(BufferId::svo_build_leaves, glm::ivec3(int(n), 1, 1));
+  floatsToHalves(values, b.words);
+  return b;
+}
+
+Leaves leavesOf(const Buffer& leaves) {
+  const size_t n = leaves.elementCount();
+  std::vector<float> values(n * kLeafValues);
+  halvesToFloats(leaves.words, values);
+  Leaves out;
+  out.albedo.resize(n);
+  out.normal.resize(n);
+  out.emission.resize(n);
+  parallelFor(size_t(0), n, [&](size_t i) {
+    const float* v = &values[i * kLeafValues];
+    out.albedo[i] = glm::vec4(v[0], v[1], v[2], v[3]);
+    out.normal[i] = glm::vec3(v[4], v[5], v[6]);
+    out.emission[i] = glm::vec3(v[7], v[8], v[9]);
+  });
+  return out;
 }
 
 Leaves treeLeaves(const BufferSet& buffers) {
-  const Buffer& scales = buffers.at(BufferId::svo_build_scales);
-  return storedLeaves(resolveLeaves(buffers.at(BufferId::svo_build_leaf_sums).words,
-                                    scales.get<float>(0, 0), scales.get<float>(0, 1)));
+  return leavesOf(buffers.at(BufferId::svo_build_leaves));
 }
 
 namespace {

@@ -15,19 +15,23 @@
 
 namespace voxgi::svo {
 
-// Puts build's buffers: the tree's words (moved in) and the scales of its sums.
-void putTree(BufferSet& buffers, OctreeWords words, float weightScale, float emissionScale);
-// build's words (copies): nodes, tiles, leaf tiles and, with `sums`, the leaf sums.
-OctreeWords treeWords(const BufferSet& buffers, bool sums);
+// Puts build's buffers: the tree's words (moved in), the leaves decoded from its sums and the
+// sums' scales; the sums themselves only with `keepSums` (the plan's leaf_sums effect), as the
+// leaves hold what every later stage reads.
+void putTree(BufferSet& buffers, OctreeWords words, float weightScale, float emissionScale,
+             bool keepSums);
+// build's words (copies): nodes, tiles and leaf tiles.
+OctreeWords treeWords(const BufferSet& buffers);
 
 // The leaf sums in floats: sums / weightScale (times emissionScale for the emission), one value
 // per leaf slot. Both factors are powers of two, so the decode is exact wherever a sum fits a
 // float's 24 bits, and the same on both backends.
 Leaves resolveLeaves(const Words& sums, float weightScale, float emissionScale);
-// The leaves as the geometry pool holds them: every value rounded to the nearest half, as
-// [Salm 2015, §4.3.1]'s RGBA16F pools (the GPU's holds two halves a word).
-Leaves storedLeaves(Leaves leaves);
-// The leaves from build's leaf sums and scales, as the geometry pool holds them.
+// build's leaves buffer from the leaves (every value rounded to the nearest half: the geometry pool
+// of [Salm 2015, §4.3.1], whose GPU twin holds two halves a word) and back.
+Buffer leavesBuffer(const Leaves& leaves);
+Leaves leavesOf(const Buffer& leaves);
+// The leaves as build stored them.
 Leaves treeLeaves(const BufferSet& buffers);
 
 // A per-leaf (or per-texel) RGBA buffer of halves (the octree's light, common/svo/stages.inc) and

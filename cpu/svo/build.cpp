@@ -1,5 +1,5 @@
 // CPU build stage: the scene's samples (common/svo/samples.h) into the canonical octree and
-// its fixed-point leaf sums (cpu/svo/octree.h).
+// its fixed-point leaf sums (cpu/svo/octree.h), decoded into the leaves.
 #include "common/svo/samples.h"
 #include "common/svo/stage_inputs.h"
 #include "common/svo/tree_depth.h"
@@ -18,7 +18,7 @@ void svo::build(const StageContext& ctx, BufferSet& buffers) {
   Words sums = accumulateLeaves(o, set.samples, set.weightScale, ctx.scene.file, &homes);
   voxgi::svo::putTree(
       buffers, {std::move(o.nodes), std::move(o.tiles), std::move(o.leafTiles), std::move(sums)},
-      set.weightScale, set.emissionScale);
+      set.weightScale, set.emissionScale, ctx.plan.on(Effect::leaf_sums));
 }
 
 }  // namespace voxgi::cpu

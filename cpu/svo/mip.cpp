@@ -10,7 +10,7 @@ namespace voxgi::cpu {
 void svo::mip(const StageContext& ctx, BufferSet& buffers) {
   using namespace voxgi::svo;
   const int depth = treeDepth(ctx.scene);
-  const Octree o = octreeFromWords(treeWords(buffers, false), depth);
+  const Octree o = octreeFromWords(treeWords(buffers), depth);
   const Leaves leaves = treeLeaves(buffers);
   const FirstStep first = firstStep(ctx.settings);
   const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_radiance));

@@ -13,7 +13,7 @@ void svo::propagate(const StageContext& ctx, BufferSet& buffers) {
   using namespace voxgi::svo;
   const int depth = treeDepth(ctx.scene);
   const SvoSettings& s = ctx.settings.svo;
-  const Octree o = octreeFromWords(treeWords(buffers, false), depth);
+  const Octree o = octreeFromWords(treeWords(buffers), depth);
   const Leaves leaves = treeLeaves(buffers);
   // Under emitters.mode=area_lights the meshes' emitters are lights and their samples carry no
   // emission (common/svo/samples.h); a point cloud's emission stays in the leaves.

@@ -23,7 +23,7 @@ void svo::shade(const StageContext& ctx, BufferSet& buffers) {
   using namespace voxgi::svo;
   checkStageMemory(ctx, StageId::svo_shade);
   const int depth = treeDepth(ctx.scene);
-  const Octree o = octreeFromWords(treeWords(buffers, false), depth);
+  const Octree o = octreeFromWords(treeWords(buffers), depth);
   const Leaves leaves = treeLeaves(buffers);
   const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_radiance));
   const NodeLevels mips = nodeLevels(buffers.at(BufferId::svo_mip_node_faces), o.tiles, depth);

@@ -17,7 +17,7 @@ void svo::build(GlContext& context, const StageContext& ctx, BufferSet& buffers)
       ctx.scene, depth, s.meshDensity, uint64_t(s.seed), ctx.settings.vct.emitters);
   voxgi::svo::putTree(buffers,
                       buildOctree(context, set.samples, depth, set.weightScale, ctx.scene.file),
-                      set.weightScale, set.emissionScale);
+                      set.weightScale, set.emissionScale, ctx.plan.on(Effect::leaf_sums));
 }
 
 }  // namespace voxgi::gpu

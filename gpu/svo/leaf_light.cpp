@@ -46,7 +46,7 @@ std::vector<glm::vec4> downloadHalves(const Gl& gl, GLuint buffer, size_t count,
 
 // The octree and the leaves as svo_volumes.glsl reads them: node words, leaf tiles, leaf values
 // (albedo, normal, emission: three RGBA a leaf slot), level 0's radiance and the node faces, the
-// values in halves (storedLeaves' leaves are halves already, so their packing is exact).
+// values in halves (build's leaves are halves already, so their packing is exact).
 struct Volumes {
   GlBuffer nodes, leafTiles, leafValues, source, nodeFaces;
   size_t slots, nodeCount;

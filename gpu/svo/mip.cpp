@@ -14,7 +14,7 @@ void svo::mip(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   using namespace voxgi::svo;
   const Gl& gl = beginStage(context, ctx, StageId::svo_mip);
   const int depth = treeDepth(ctx.scene);
-  const OctreeWords words = treeWords(buffers, false);
+  const OctreeWords words = treeWords(buffers);
   const Tree tree{words, depth};
   const Leaves leaves = treeLeaves(buffers);
   const FirstStep first = firstStep(ctx.settings);

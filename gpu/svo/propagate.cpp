@@ -18,7 +18,7 @@ void svo::propagate(GlContext& context, const StageContext& ctx, BufferSet& buff
   beginStage(context, ctx, StageId::svo_propagate);
   const int depth = treeDepth(ctx.scene);
   const SvoSettings& s = ctx.settings.svo;
-  const OctreeWords words = treeWords(buffers, false);
+  const OctreeWords words = treeWords(buffers);
   const Tree tree{words, depth};
   const Leaves leaves = treeLeaves(buffers);
   // Under emitters.mode=area_lights the meshes' emitters are lights and their samples carry no

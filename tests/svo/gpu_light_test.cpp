@@ -58,8 +58,8 @@ TEST_P(GpuSvoLight, InjectionMipAndGatherAgreeWithTheCpu) {
   const svo::SampleSet set = svo::prepareSamples(scene, kDepth, 2.0, 1, EmitterLighting::voxels);
   const cpu::svo::Octree o = cpu::svo::buildOctree(set.samples, kDepth);
   const Words sums = cpu::svo::accumulateLeaves(o, set.samples, set.weightScale, scene.file);
-  const cpu::svo::Leaves leaves =
-      voxgi::svo::storedLeaves(voxgi::svo::resolveLeaves(sums, set.weightScale, set.emissionScale));
+  const cpu::svo::Leaves leaves = voxgi::svo::leavesOf(voxgi::svo::leavesBuffer(
+      voxgi::svo::resolveLeaves(sums, set.weightScale, set.emissionScale)));
   const svo::OctreeWords words{o.nodes, o.tiles, o.leafTiles, {}};
   const gpu::svo::Tree tree{words, kDepth};
   gpu::GlContext& context = glContext(GetParam());

@@ -26,7 +26,7 @@ SvoImage renderSvo(const Scene& scene) {
   const Technique& svo = findTechnique("svo");
   const BufferSet b = runCpuUntil(svo, scene, techniqueDefaults(svo), "shade");
   SvoImage out{Image(scene.camera.width, scene.camera.height),
-               b.at(BufferId::svo_build_leaf_sums).elementCount()};
+               b.at(BufferId::svo_build_leaves).elementCount()};
   for (size_t i = 0; i < out.image.pixels.size(); ++i)
     out.image.pixels[i] = b.at(BufferId::svo_shade_color).vec3At(i);
   return out;
@@ -99,7 +99,7 @@ Gathered receiverGather(int wallLeaves) {
   Settings svoSettings = techniqueDefaults(svo);
   svoSettings.vct.emitters = EmitterLighting::voxels;  // the square's light, gathered by cones
   const BufferSet b = runCpuUntil(svo, scene, svoSettings, "propagate");
-  const cpu::svo::Octree o = cpu::svo::octreeFromWords(svo::treeWords(b, false), 6);
+  const cpu::svo::Octree o = cpu::svo::octreeFromWords(svo::treeWords(b), 6);
   const uint32_t tile = o.findTile(6, shared::mortonEncode(leaf >> 1u));
   EXPECT_NE(tile, shared::kSvoNull);
   const Buffer& g = b.at(BufferId::svo_propagate_gathered);

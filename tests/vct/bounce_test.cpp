@@ -90,7 +90,7 @@ TEST(Bounce, OctreeClosedBoxApproachesRadiosity) {
         resolveSettings(svo, {}, scene.file, "default",
                         {"propagate.frames=" + std::to_string(frames), "emitters.mode=voxels"});
     const BufferSet b = runCpuUntil(svo, scene, settings, "propagate");
-    const cpu::svo::Octree o = cpu::svo::octreeFromWords(svo::treeWords(b, false), depth);
+    const cpu::svo::Octree o = cpu::svo::octreeFromWords(svo::treeWords(b), depth);
     const glm::uvec3 leaf(kResolution / 2, 2, kResolution / 2);
     const uint32_t tile = o.findTile(depth, shared::mortonEncode(leaf >> 1u));
     ASSERT_NE(tile, shared::kSvoNull);
