@@ -60,10 +60,12 @@ TEST(Cli, SvoLevelsDumpAsAlignedGrids) {
   openvdb::io::File mip(dir + "/mip.vdb");
   mip.open();
   const double h = 562.0 / 16.0;
+  openvdb::io::File propagate(dir + "/propagate.vdb");
+  propagate.open();
   for (const auto& [name, level] : {std::pair<std::string, int>{"node_faces_+x_L1", 1},
                                     std::pair<std::string, int>{"node_faces_-z_L2", 2},
                                     std::pair<std::string, int>{"gathered_bricks", 0}}) {
-    const auto g = mip.readGrid(name);
+    const auto g = (level == 0 ? propagate : mip).readGrid(name);
     EXPECT_GT(g->activeVoxelCount(), 0u) << name;
     const openvdb::Vec3d c = g->indexToWorld(openvdb::Coord(0, 0, 0));
     EXPECT_NEAR(c.x(), -2.0 + 0.5 * h * double(1 << level), 1e-9) << name;

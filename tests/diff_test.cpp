@@ -88,7 +88,6 @@ TEST(Diff, HalvesAllowOneUlpOfTheirRounding) {
   Buffer faces(BufferId::svo_mip_node_faces, glm::ivec3(2, 1, 1));
   for (int c = 0; c < faces.components(); ++c) faces.set(0, c, 1.0f);  // halves 0x3c00
   cpu.put(faces);                                                      // element 1 stays zero
-  cpu.put(Buffer(BufferId::svo_mip_gathered_bricks, glm::ivec3(27, 1, 1)));
   const auto withFace = [&](size_t e, int c, float v) {
     BufferSet gpu = cpu;
     Buffer f = gpu.take(BufferId::svo_mip_node_faces);

@@ -36,18 +36,18 @@ uint64_t elementBytes(BufferId id) {
   return uint64_t(b.components) * (b.type == ScalarType::f16 ? 2u : 4u);
 }
 
-// Bytes of the technique's tree buffers at this tree, as a run without the leaf sums (which voxgi
-// diff and dump keep) holds them: the structure's words; per leaf (8 a leaf tile) the decoded
-// leaves, the direct, radiance and gathered light; per leaf tile the gathered light's 3^3
-// brick; per node (8 a node tile) six RGBA faces.
+// Bytes of the technique's tree buffers at this tree, as a run holds them without what voxgi diff
+// and dump keep besides (the leaf sums, the per-leaf direct and gathered light): the structure's
+// words; per leaf (8 a leaf tile) the decoded leaves and the radiance; per leaf tile the gathered
+// light's 3^3 brick; per node (8 a node tile) six RGBA faces.
 uint64_t octreeBytes(const cpu::svo::Octree& o) {
   const uint64_t structure = (o.nodes.size() + o.tiles.size() + o.leafTiles.size()) * 4;
   uint64_t perLeaf = 0;
-  for (const BufferId id : {BufferId::svo_build_leaves, BufferId::svo_propagate_direct,
-                            BufferId::svo_propagate_radiance, BufferId::svo_propagate_gathered})
+  for (const BufferId id : {BufferId::svo_build_leaves, BufferId::svo_propagate_radiance})
     perLeaf += elementBytes(id);
-  const uint64_t perLeafTile = 8 * perLeaf + uint64_t(shared::kBrickTexels) *
-                                                 elementBytes(BufferId::svo_mip_gathered_bricks);
+  const uint64_t perLeafTile =
+      8 * perLeaf +
+      uint64_t(shared::kBrickTexels) * elementBytes(BufferId::svo_propagate_gathered_bricks);
   const uint64_t perNodeTile = 8 * elementBytes(BufferId::svo_mip_node_faces);
   return structure + o.leafTileCount() * perLeafTile + o.tileCount() * perNodeTile;
 }

@@ -98,7 +98,7 @@ SparseLayouts sparseLayouts(const BufferSet& run, const GridSpec& grid) {
                             BufferId::svo_propagate_gathered})
     out[id] = leaves;
   out[BufferId::svo_mip_node_faces] = childLayout(tiles->words, depth, faces);
-  out[BufferId::svo_mip_gathered_bricks] = brickLayout(leafTiles->words);
+  out[BufferId::svo_propagate_gathered_bricks] = brickLayout(leafTiles->words);
   out[BufferId::svo_build_scales] = {{-1}, {glm::ivec3(0)}, {}, {}};  // in leaf_sums' metadata
   return out;
 }

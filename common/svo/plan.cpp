@@ -63,12 +63,17 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
                                                : ", one more bounce each")
          << (carriesLight(settings)
                  ? ", in a sequence from the light the frame before gathered (propagate.carry)"
-                 : "");
+                 : "")
+         << "; the last frame's gathered light as leaf bricks";
   p.lightStage(StageId::svo_propagate, true, frames.str());
+  // Shading reads the gathered light from its bricks; the per-leaf light is compared.
+  p.effect("per-leaf direct and gathered light", Effect::leaf_light, settings.inspect || p.full,
+           settings.inspect ? "voxgi diff and dump compare the backends' injection and gather"
+           : p.full         ? "plan.mode=full keeps them beside the gathered bricks"
+                            : "the gathered bricks hold what shading reads");
   p.lightStage(StageId::svo_mip, true,
                "the last frame's radiance up the tree (svo.first_step=" +
-                   settingValue(settings, "svo.first_step") +
-                   "), the gathered light's leaf bricks");
+                   settingValue(settings, "svo.first_step") + ")");
   p.lightStage(StageId::common_gbuffer, true,
                "the surface each pixel sees (point clouds as discs)");
   const std::string emitters = materialsWith(scene, [](const Material& m) { return m.emissive(); });

@@ -27,7 +27,7 @@ void svo::shade(const StageContext& ctx, BufferSet& buffers) {
   const Leaves leaves = treeLeaves(buffers);
   const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_radiance));
   const NodeLevels mips = nodeLevels(buffers.at(BufferId::svo_mip_node_faces), o.tiles, depth);
-  const Words bricks = floatWords(buffers.at(BufferId::svo_mip_gathered_bricks));
+  const Words bricks = floatWords(buffers.at(BufferId::svo_propagate_gathered_bricks));
   // The cones' trilinear cells from bricks (cpu/svo/leaf_light.h), one tile lookup each.
   const TreeBricks cells = treeBricks(o, radiance, mips);
   const ConeTraceSetup trace = treeConeTrace(ctx, depth);

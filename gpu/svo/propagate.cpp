@@ -1,8 +1,7 @@
 // GPU propagate stage: injection and propagate.frames progressive bounces on the GPU
 // (gpu/svo/leaf_light.h), frame by frame as cpu/svo/leaf_light.cpp's propagateFrames, from the
-// light the frame before carried under propagate.carry. The leaf
-// sums are decoded on the host (common/svo/stage_inputs.h: exact power-of-two scaling, the same
-// floats the CPU decodes).
+// light the frame before carried under propagate.carry; the last frame's gathered light as leaf
+// bricks (shaders/svo/mip_brick.comp) for shading.
 #include "common/lights.h"
 #include "common/svo/propagate.h"
 #include "common/svo/stage_inputs.h"
@@ -10,12 +9,13 @@
 #include "gpu/stages.h"
 #include "gpu/svo/leaf_light.h"
 #include "gpu/volumes.h"
+#include "shaders/shared/svo/svo_layout.h"
 
 namespace voxgi::gpu {
 
 void svo::propagate(GlContext& context, const StageContext& ctx, BufferSet& buffers) {
   using namespace voxgi::svo;
-  beginStage(context, ctx, StageId::svo_propagate);
+  const Gl& gl = beginStage(context, ctx, StageId::svo_propagate);
   const int depth = treeDepth(ctx.scene);
   const SvoSettings& s = ctx.settings.svo;
   const OctreeWords words = treeWords(buffers);
@@ -40,9 +40,22 @@ void svo::propagate(GlContext& context, const StageContext& ctx, BufferSet& buff
                           s.clearEachFrame == SvoToggle::on ? direct : radiance, bounce.cones,
                           bounce.params, first, frame + 1 == s.frames ? &last : nullptr);
   carryOut(ctx, words.leafTiles, std::move(last.gatheredStraight));
-  buffers.put(vec4Buffer(BufferId::svo_propagate_direct, direct));
+  Buffer gathered = vec4Buffer(BufferId::svo_propagate_gathered, last.gathered);
+  const size_t tiles = words.leafTiles.size() / shared::kTileWords;
+  GlBuffer nodes(gl, createBuffer(gl, words.nodes.size() * 4, words.nodes.data()));
+  GlBuffer leafTiles(gl, createBuffer(gl, words.leafTiles.size() * 4, words.leafTiles.data()));
+  GlBuffer interior(gl, uploadWords(gl, gathered));  // halves, as the pools hold them
+  GlBuffer bricks(gl, svo::buildBricks(gl, nodes.get(), leafTiles.get(), interior.get(), tiles, 1));
+  Buffer out(BufferId::svo_propagate_gathered_bricks,
+             glm::ivec3(int(tiles * shared::kBrickTexels), 1, 1));
+  readWords(gl, bricks.get(), out);
+  buffers.put(std::move(out));
   buffers.put(vec4Buffer(BufferId::svo_propagate_radiance, radiance));
-  buffers.put(vec4Buffer(BufferId::svo_propagate_gathered, last.gathered));
+  // The bricks hold the gathered light; the per-leaf light is kept only to be compared.
+  if (ctx.plan.on(Effect::leaf_light)) {
+    buffers.put(vec4Buffer(BufferId::svo_propagate_direct, direct));
+    buffers.put(std::move(gathered));
+  }
 }
 
 }  // namespace voxgi::gpu

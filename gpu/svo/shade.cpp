@@ -40,7 +40,7 @@ void svo::shade(GlContext& context, const StageContext& ctx, BufferSet& buffers)
   // The light as the buffers hold it, in halves (shaders/svo/svo_pyramid.glsl).
   GlBuffer source(gl, uploadWords(gl, buffers.at(BufferId::svo_propagate_radiance)));
   GlBuffer faces(gl, uploadWords(gl, buffers.at(BufferId::svo_mip_node_faces)));
-  GlBuffer bricks(gl, uploadWords(gl, buffers.at(BufferId::svo_mip_gathered_bricks)));
+  GlBuffer bricks(gl, uploadWords(gl, buffers.at(BufferId::svo_propagate_gathered_bricks)));
   // The cones read the radiance and the node faces as bricks, as the gather does.
   const Buffer& leafTileWords = buffers.at(BufferId::svo_build_leaf_tiles);
   const Buffer& tileWords = buffers.at(BufferId::svo_build_tiles);

@@ -59,8 +59,8 @@ TEST(SvoCarry, EachFrameAfterALightCameOnAddsOneBounce) {
     Settings still = techniqueDefaults(svo);
     still.svo.frames = k + 1;
     const BufferSet want = runCpuUntil(svo, lit, still, "shade");
-    for (const BufferId id : {BufferId::svo_propagate_radiance, BufferId::svo_propagate_gathered,
-                              BufferId::svo_shade_color})
+    for (const BufferId id : {BufferId::svo_propagate_radiance,
+                              BufferId::svo_propagate_gathered_bricks, BufferId::svo_shade_color})
       EXPECT_TRUE(sameWords(runner.buffers(), want, id))
           << "frame " << k + 1 << ": " << bufferSpec(id).qualifiedName();
     // Not yet the still with one gather more: the next bounce is still to come.

@@ -98,6 +98,7 @@ Gathered receiverGather(int wallLeaves) {
   const Technique& svo = findTechnique("svo");
   Settings svoSettings = techniqueDefaults(svo);
   svoSettings.vct.emitters = EmitterLighting::voxels;  // the square's light, gathered by cones
+  svoSettings.planMode = PlanMode::full;               // keeps the per-leaf gathered light
   const BufferSet b = runCpuUntil(svo, scene, svoSettings, "propagate");
   const cpu::svo::Octree o = cpu::svo::octreeFromWords(svo::treeWords(b), 6);
   const uint32_t tile = o.findTile(6, shared::mortonEncode(leaf >> 1u));
