@@ -1,7 +1,11 @@
 // The octree's effect planner (common/svo/plan.cpp; docs/effect-plan.md).
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include "common/scene/scene_load.h"
+#include "shaders/shared/half_float.h"
+#include "shaders/shared/svo/build_kernel.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {
@@ -23,9 +27,57 @@ TEST(SvoPlan, FollowsTheSceneAndTheFullPlanChangesNothing) {
   settings.planMode = PlanMode::full;
   const BufferSet full = runCpuUntil(svo, scene, settings, "shade");
   EXPECT_TRUE(full.contains(BufferId::svo_shade_indirect_specular));
+  EXPECT_TRUE(full.contains(BufferId::svo_build_leaf_sums));
+  EXPECT_TRUE(full.contains(BufferId::svo_propagate_gathered));
   EXPECT_TRUE(sameWords(lean, full, BufferId::svo_shade_color));
   Scene glossy = cornellBoxCloud(2000, true);
   EXPECT_TRUE(planItemIn(svo.plan(glossy, techniqueDefaults(svo)), "specular cone"));
+}
+
+// A render holds the leaves decoded from the sums and the gathered bricks; the sums and the
+// per-leaf direct and gathered light, which no later stage reads, are kept where voxgi diff and
+// dump compare them (the memory docs/benchmarks.md counts), and the image is the same either way.
+// The leaves are each sum over the weight scale (times the emission scale), rounded to a half.
+TEST(SvoPlan, KeepsTheSumsAndPerLeafLightOnlyWhereTheyAreCompared) {
+  const Technique& svo = findTechnique("svo");
+  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
+  scene.grid.resolution = 16;
+  scene.camera.width = scene.camera.height = 32;
+  Settings settings = techniqueDefaults(svo);
+  const BufferSet lean = runCpuUntil(svo, scene, settings, "shade");
+  for (const BufferId id : {BufferId::svo_build_leaf_sums, BufferId::svo_propagate_direct,
+                            BufferId::svo_propagate_gathered})
+    EXPECT_FALSE(lean.contains(id)) << bufferSpec(id).qualifiedName();
+  settings.inspect = true;
+  const BufferSet kept = runCpuUntil(svo, scene, settings, "shade");
+  for (const BufferId id : {BufferId::svo_build_leaf_sums, BufferId::svo_propagate_direct,
+                            BufferId::svo_propagate_gathered})
+    EXPECT_TRUE(kept.contains(id)) << bufferSpec(id).qualifiedName();
+  for (const BufferId id : {BufferId::svo_build_leaves, BufferId::svo_propagate_gathered_bricks,
+                            BufferId::svo_shade_color})
+    EXPECT_TRUE(sameWords(lean, kept, id)) << bufferSpec(id).qualifiedName();
+
+  const Buffer& leaves = lean.at(BufferId::svo_build_leaves);
+  const Words& sums = kept.at(BufferId::svo_build_leaf_sums).words;
+  const Buffer& scales = kept.at(BufferId::svo_build_scales);
+  const float weightScale = scales.get<float>(0, 0), emissionScale = scales.get<float>(0, 1);
+  ASSERT_EQ(leaves.elementCount() * shared::kSumWords, sums.size());
+  // leaves' components: albedo rgb, opacity, normal xyz, emission rgb.
+  const std::array<int, 10> sumOf = {shared::kSumAlbedo,       shared::kSumAlbedo + 1,
+                                     shared::kSumAlbedo + 2,   shared::kSumOpacity,
+                                     shared::kSumNormal,       shared::kSumNormal + 1,
+                                     shared::kSumNormal + 2,   shared::kSumEmission,
+                                     shared::kSumEmission + 1, shared::kSumEmission + 2};
+  size_t nonZero = 0;
+  for (size_t e = 0; e < leaves.elementCount(); ++e)
+    for (int c = 0; c < 10; ++c) {
+      const double sum = double(int32_t(sums[e * shared::kSumWords + size_t(sumOf[size_t(c)])]));
+      const double value = sum / weightScale * (c >= 7 ? emissionScale : 1.0f);
+      nonZero += value != 0.0;
+      ASSERT_EQ(leaves.get<float>(e, c), shared::roundToHalf(float(value)))
+          << "leaf " << e << " component " << c;
+    }
+  EXPECT_GT(nonZero, 1000u);
 }
 
 }  // namespace
