@@ -78,6 +78,19 @@ TEST(SvoPlan, KeepsTheSumsAndPerLeafLightOnlyWhereTheyAreCompared) {
           << "leaf " << e << " component " << c;
     }
   EXPECT_GT(nonZero, 1000u);
+
+  // The tree's bytes as `voxgi bench svo` and docs/benchmarks.md count them: the structure's words,
+  // per leaf tile 8 leaves of 20 bytes and 8 radiance values of 8, a 27-texel brick of 8-byte
+  // texels; per node tile 8 nodes of six 8-byte faces; and the scales' 8 bytes.
+  const size_t leafTiles = lean.at(BufferId::svo_build_leaf_tiles).elementCount();
+  const size_t nodeTiles = lean.at(BufferId::svo_build_tiles).elementCount();
+  const size_t structure = 4 * (lean.at(BufferId::svo_build_nodes).words.size() +
+                                lean.at(BufferId::svo_build_tiles).words.size() +
+                                lean.at(BufferId::svo_build_leaf_tiles).words.size());
+  size_t held = 0;
+  for (const auto& [id, b] : lean)
+    if (bufferSpec(id).shape == BufferShape::sparse) held += 4 * b.words.size();
+  EXPECT_EQ(held, structure + leafTiles * (8 * 20 + 8 * 8 + 27 * 8) + nodeTiles * 8 * 6 * 8 + 8);
 }
 
 }  // namespace
