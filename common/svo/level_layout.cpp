@@ -2,6 +2,7 @@
 
 #include <bit>
 
+#include "common/svo/light_types.h"
 #include "shaders/shared/svo/build_kernel.h"
 #include "shaders/shared/svo/svo_layout.h"
 
@@ -92,7 +93,10 @@ SparseLayouts sparseLayouts(const BufferSet& run, const GridSpec& grid) {
                          {"voxgi_svo_emission_scale", std::to_string(s->get<float>(0, 1))}};
   out[BufferId::svo_build_leaf_sums] = leafSums;
   SparseLayout decoded = leaves;
-  decoded.groups = {{0, 3, "_albedo"}, {3, 1, "_opacity"}, {4, 3, "_normal"}, {7, 3, "_emission"}};
+  decoded.groups = {{kLeafAlbedo, 3, "_albedo"},
+                    {kLeafOpacity, 1, "_opacity"},
+                    {kLeafNormal, 3, "_normal"},
+                    {kLeafEmission, 3, "_emission"}};
   out[BufferId::svo_build_leaves] = decoded;
   for (const BufferId id : {BufferId::svo_propagate_direct, BufferId::svo_propagate_radiance,
                             BufferId::svo_propagate_gathered})

@@ -16,6 +16,13 @@ struct Leaves {
   std::vector<glm::vec3> emission;  // sum of weight x emission, radiance units
 };
 
+// Where build's `leaves` buffer (common/svo/stages.inc) holds a leaf's values: ten halves a leaf.
+constexpr int kLeafAlbedo = 0;    // 0..2: Leaves::albedo's rgb
+constexpr int kLeafOpacity = 3;   // Leaves::albedo's a
+constexpr int kLeafNormal = 4;    // 4..6
+constexpr int kLeafEmission = 7;  // 7..9
+constexpr int kLeafValues = 10;
+
 // Outgoing radiance per leaf, premultiplied by the leaf's opacity clamped to 1 (a: that opacity),
 // 8 a leaf tile; what pyramid level 0 holds.
 using LeafRadiance = std::vector<glm::vec4>;

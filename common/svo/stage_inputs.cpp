@@ -66,8 +66,6 @@ Leaves resolveLeaves(const Words& sums, float weightScale, float emissionScale) 
   return out;
 }
 
-// build's leaves: per leaf albedo (rgb) and opacity, normal, emission: ten halves, five words.
-constexpr int kLeafValues = 10;
 static_assert(kLeafValues == shared::kSumWords, "a leaf value per sum");
 
 Buffer leavesBuffer(const Leaves& leaves) {
@@ -75,11 +73,12 @@ Buffer leavesBuffer(const Leaves& leaves) {
   std::vector<float> values(n * kLeafValues);
   parallelFor(size_t(0), n, [&](size_t i) {
     float* v = &values[i * kLeafValues];
-    for (int c = 0; c < 4; ++c) v[c] = leaves.albedo[i][c];
     for (int c = 0; c < 3; ++c) {
-      v[4 + c] = leaves.normal[i][c];
-      v[7 + c] = leaves.emission[i][c];
+      v[kLeafAlbedo + c] = leaves.albedo[i][c];
+      v[kLeafNormal + c] = leaves.normal[i][c];
+      v[kLeafEmission + c] = leaves.emission[i][c];
     }
+    v[kLeafOpacity] = leaves.albedo[i].a;
   });
   Buffer b(BufferId::svo_build_leaves, glm::ivec3(int(n), 1, 1));
   floatsToHalves(values, b.words);
@@ -96,9 +95,10 @@ Leaves leavesOf(const Buffer& leaves) {
   out.emission.resize(n);
   parallelFor(size_t(0), n, [&](size_t i) {
     const float* v = &values[i * kLeafValues];
-    out.albedo[i] = glm::vec4(v[0], v[1], v[2], v[3]);
-    out.normal[i] = glm::vec3(v[4], v[5], v[6]);
-    out.emission[i] = glm::vec3(v[7], v[8], v[9]);
+    const auto vec3At = [&](int at) { return glm::vec3(v[at], v[at + 1], v[at + 2]); };
+    out.albedo[i] = glm::vec4(vec3At(kLeafAlbedo), v[kLeafOpacity]);
+    out.normal[i] = vec3At(kLeafNormal);
+    out.emission[i] = vec3At(kLeafEmission);
   });
   return out;
 }

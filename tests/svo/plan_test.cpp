@@ -4,6 +4,7 @@
 #include <array>
 
 #include "common/scene/scene_load.h"
+#include "common/svo/light_types.h"
 #include "shaders/shared/half_float.h"
 #include "shaders/shared/svo/build_kernel.h"
 #include "tests/test_scenes.h"
@@ -11,13 +12,19 @@
 namespace voxgi::test {
 namespace {
 
+// The Cornell box at 16^3 and 32^2.
+Scene smallBox() {
+  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
+  scene.grid.resolution = 16;
+  scene.camera.width = scene.camera.height = 32;
+  return scene;
+}
+
 // The octree's plan: emission and the specular cone from the materials of meshes and clouds, and
 // the full pipeline gives the same image with the extra buffers.
 TEST(SvoPlan, FollowsTheSceneAndTheFullPlanChangesNothing) {
   const Technique& svo = findTechnique("svo");
-  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
-  scene.grid.resolution = 16;
-  scene.camera.width = scene.camera.height = 32;
+  const Scene scene = smallBox();
   Settings settings = techniqueDefaults(svo);
   const EffectPlan plan = svo.plan(scene, settings);
   EXPECT_TRUE(planItemIn(plan, "emission per pixel"));
@@ -40,9 +47,7 @@ TEST(SvoPlan, FollowsTheSceneAndTheFullPlanChangesNothing) {
 // The leaves are each sum over the weight scale (times the emission scale), rounded to a half.
 TEST(SvoPlan, KeepsTheSumsAndPerLeafLightOnlyWhereTheyAreCompared) {
   const Technique& svo = findTechnique("svo");
-  Scene scene = loadScene(sourcePath("scenes/cornell_box.json"));
-  scene.grid.resolution = 16;
-  scene.camera.width = scene.camera.height = 32;
+  const Scene scene = smallBox();
   Settings settings = techniqueDefaults(svo);
   const BufferSet lean = runCpuUntil(svo, scene, settings, "shade");
   for (const BufferId id : {BufferId::svo_build_leaf_sums, BufferId::svo_propagate_direct,
@@ -62,17 +67,19 @@ TEST(SvoPlan, KeepsTheSumsAndPerLeafLightOnlyWhereTheyAreCompared) {
   const Buffer& scales = kept.at(BufferId::svo_build_scales);
   const float weightScale = scales.get<float>(0, 0), emissionScale = scales.get<float>(0, 1);
   ASSERT_EQ(leaves.elementCount() * shared::kSumWords, sums.size());
-  // leaves' components: albedo rgb, opacity, normal xyz, emission rgb.
-  const std::array<int, 10> sumOf = {shared::kSumAlbedo,       shared::kSumAlbedo + 1,
-                                     shared::kSumAlbedo + 2,   shared::kSumOpacity,
-                                     shared::kSumNormal,       shared::kSumNormal + 1,
-                                     shared::kSumNormal + 2,   shared::kSumEmission,
-                                     shared::kSumEmission + 1, shared::kSumEmission + 2};
+  // Each leaf value's sum.
+  std::array<int, svo::kLeafValues> sumOf{};
+  sumOf[svo::kLeafOpacity] = shared::kSumOpacity;
+  for (int c = 0; c < 3; ++c) {
+    sumOf[size_t(svo::kLeafAlbedo + c)] = shared::kSumAlbedo + c;
+    sumOf[size_t(svo::kLeafNormal + c)] = shared::kSumNormal + c;
+    sumOf[size_t(svo::kLeafEmission + c)] = shared::kSumEmission + c;
+  }
   size_t nonZero = 0;
   for (size_t e = 0; e < leaves.elementCount(); ++e)
-    for (int c = 0; c < 10; ++c) {
+    for (int c = 0; c < svo::kLeafValues; ++c) {
       const double sum = double(int32_t(sums[e * shared::kSumWords + size_t(sumOf[size_t(c)])]));
-      const double value = sum / weightScale * (c >= 7 ? emissionScale : 1.0f);
+      const double value = sum / weightScale * (c >= svo::kLeafEmission ? emissionScale : 1.0f);
       nonZero += value != 0.0;
       ASSERT_EQ(leaves.get<float>(e, c), shared::roundToHalf(float(value)))
           << "leaf " << e << " component " << c;
