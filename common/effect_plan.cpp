@@ -55,6 +55,22 @@ bool bufferNeeded(const BufferSpec& spec, const EffectPlan& plan) {
   return plan.runs(spec.stage) && plan.on(spec.need);
 }
 
+void planVoxelSums(EffectPlan& p, const Settings& settings, const std::string& reader) {
+  p.effect("voxel sums", Effect::voxel_sums,
+           settings.inspect || p.full || !reader.empty() || settings.sequence,
+           settings.inspect  ? "voxgi diff and dump compare the backends' sums word for word"
+           : p.full          ? "plan.mode=full keeps them beside the volumes"
+           : !reader.empty() ? reader + " reads them"
+           : settings.sequence
+               ? "a sequence: where meshes move, the next frame updates them in part"
+               : "resolved into the volumes and released (the CPU holds them only in the "
+                 "blocks of 8^3 voxels the surface reaches)");
+}
+
+void finishVoxelSums(EffectPlan& p) {
+  p.set(Effect::emission_sum, p.on(Effect::voxel_sums) && p.on(Effect::emission));
+}
+
 bool meshInView(const Scene& scene, const Mesh& mesh) {
   if (mesh.triangles.empty()) return false;
   // The camera both gbuffer backends render with, in voxel-local coordinates.

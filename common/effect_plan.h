@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/scene.h"
+#include "common/settings.h"
 #include "common/stage_list.h"
 
 namespace voxgi {
@@ -63,6 +64,16 @@ extern const char* const kDarkReason;
 
 // Whether the plan produces the buffer: its stage runs and its effect is on.
 bool bufferNeeded(const BufferSpec& spec, const EffectPlan& plan);
+
+// Decides voxelize's dense fixed-point sums (Effect::voxel_sums), as the line under voxelize: kept
+// where they are compared or written (settings.inspect), under plan.mode=full, where a later stage
+// reads them (`reader` names it; empty for none), or in a sequence (Settings::sequence: the next
+// frame's update in part starts from them); otherwise the CPU holds them only in the blocks the
+// surface reaches and the GPU in its own memory. Call finishVoxelSums once Effect::emission is
+// decided.
+void planVoxelSums(EffectPlan& p, const Settings& settings, const std::string& reader);
+// The emission volume's sums (Effect::emission_sum): with the other sums and the emission volume.
+void finishVoxelSums(EffectPlan& p);
 
 // Refuses a scene with point clouds for a technique that renders triangle meshes only (throws
 // InputError naming the scene file and its first cloud), rather than render it without them.

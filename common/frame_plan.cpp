@@ -188,6 +188,7 @@ const std::vector<FrameStep>& FrameRunner::run(Scene scene, const Settings& sett
   previousScene_ = std::move(scene_);
   scene_ = std::move(scene);
   settings_ = settings;
+  settings_.sequence = !scratch_;
   // Unmoved geometry keeps its prepared triangles.
   const bool prepare = first_ || scratch_ || (change_.parts & kSceneGeometry) != 0;
   if (prepare) {

@@ -34,6 +34,9 @@ struct Settings {
   // Not a key: voxgi diff and dump set it, and planners then keep intermediate volumes a render
   // drops (lpv: every propagation step).
   bool inspect = false;
+  // Not a key: FrameRunner sets it for the frames of a sequence it does not run from scratch, and
+  // planners then keep what the next frame's update in part starts from (voxelize's sums).
+  bool sequence = false;
   VctSettings vct;
   LpvSettings lpv;
   SvoSettings svo;

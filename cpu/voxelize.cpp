@@ -1,11 +1,14 @@
 // CPU voxelize stage: every (triangle, voxel) pair the shared kernel accepts is accumulated with
-// integer atomics (order-independent, so bit-identical for any thread count), then resolved. In a
-// sequence where a few meshes moved, the frame before's sums are updated in part instead
-// ([Villegas 2017, §1.2] revoxelizes its dynamic objects alone): the moved meshes' contributions of
-// that frame are subtracted, this frame's added, and only the blocks of 8^3 voxels either touched
-// are resolved again. Integer sums make the update exact, so the buffers are the ones voxelizing
-// every triangle gives. A fresh voxelization resolves only the blocks contributions reached too:
-// the rest resolve to the zeros the buffers start with.
+// integer atomics (order-independent, so bit-identical for any thread count), then resolved. A
+// fresh voxelization accumulates into the blocks of 8^3 voxels the surface reaches (BlockSums) and
+// resolves those blocks alone: every other voxel resolves to the zeros its buffers start with. The
+// dense sums are outputs only where the plan keeps them (Effect::voxel_sums), filled from the
+// blocks. In a sequence where a few meshes moved, the frame before's dense sums are updated in
+// part instead ([Villegas 2017, §1.2] revoxelizes its dynamic objects alone): the moved meshes'
+// contributions of that frame are subtracted, this frame's added, and only the blocks of 8^3
+// voxels either touched are resolved again. Integer sums make the update exact, so the buffers are
+// the ones voxelizing every triangle gives.
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <optional>
@@ -15,6 +18,7 @@
 #include <tbb/blocked_range.h>
 
 #include "common/error.h"
+#include "common/memory.h"
 #include "common/parallel.h"
 #include "common/voxel_overflow.h"
 #include "common/voxelize_update.h"
@@ -27,65 +31,113 @@ namespace {
 using shared::VoxelContribution;
 using shared::VoxelTriangle;
 
-// Which blocks of 8^3 voxels any contribution reached: a small mesh's surface touches few, and
-// only those are resolved (the other voxels keep the zeros their buffers were allocated with).
-struct TouchedBlocks {
-  static constexpr int kShift = 3;
-  int side;  // blocks a side
-  std::vector<uint8_t> marks;
+// A voxel's sums on adjacent words: weight, albedo (3), normal (3), then with emission its rgb and
+// the emitters' weight.
+constexpr int kSumWords = 7, kEmissiveSumWords = 11;
 
-  explicit TouchedBlocks(int n)
-      : side(((n - 1) >> kShift) + 1), marks(size_t(side) * size_t(side) * size_t(side), 0) {}
-  void mark(const glm::ivec3& voxel) {
-    const glm::ivec3 b = voxel >> kShift;
-    const size_t i = size_t(b.x) + size_t(side) * (size_t(b.y) + size_t(side) * size_t(b.z));
-    // A racing store of the same 1 is harmless; the atomic keeps ThreadSanitizer informed.
-    std::atomic_ref<uint8_t>(marks[i]).store(1, std::memory_order_relaxed);
+// Adds (or, subtracting, takes out) one contribution into a voxel's sums, wherever they lie:
+// `word(i)` is the voxel's i-th sum word. Returns the weight sum before the addition.
+template <class Word>
+uint32_t addContribution(const shared::VoxelContribution& c, bool emissive, bool subtract,
+                         Word&& word) {
+  const auto add = [&](int i, uint32_t v) {
+    // Adding (0 - v) modulo 2^32 takes v out exactly.
+    return std::atomic_ref<uint32_t>(word(i)).fetch_add(subtract ? 0u - v : v,
+                                                        std::memory_order_relaxed);
+  };
+  const uint32_t old = add(0, c.weight);
+  for (int i = 0; i < 3; ++i) {
+    add(1 + i, c.albedo[i]);
+    add(4 + i, static_cast<uint32_t>(c.normal[i]));
+    if (emissive) add(7 + i, c.emission[i]);
   }
+  if (emissive) add(10, c.emitterWeight);
+  return old;
+}
+
+// Set by the first contribution that takes a voxel past kMaxWeightSum: the sums of that voxel are
+// lost, the stage fails, so the remaining triangles are skipped.
+struct Overflow {
+  std::atomic<bool> flag{false};
+  // Adds alone raise a sum, so the check fires exactly when the final sum passes the bound.
+  void check(uint32_t old, uint32_t weight) {
+    if (uint64_t(old) + weight > shared::kMaxWeightSum) flag.store(true, std::memory_order_relaxed);
+  }
+};
+
+// A fresh voxelization's sums, held only in the blocks of 8^3 voxels the surface reaches (a small
+// mesh's surface touches few of a grid's blocks), a voxel's sums on adjacent words: the dense sums
+// cost clearing and writing 28-44 bytes a voxel of the whole grid, where the blocks' cost what the
+// surface covers. A first walk marks the blocks, which take their places in index order; the
+// second adds the contributions.
+struct BlockSums {
+  static constexpr int kShift = 3, kVoxels = 1 << (3 * kShift);
+  int side, words;
+  std::vector<uint32_t> place;  // per block of the grid: 1 + its index in `low`, or 0
+  std::vector<glm::ivec3> low;  // the marked blocks' lowest voxels, in index order
+  Words sums;
+
+  BlockSums(int n, bool emissive)
+      : side(((n - 1) >> kShift) + 1),
+        words(emissive ? kEmissiveSumWords : kSumWords),
+        place(size_t(side) * size_t(side) * size_t(side), 0) {}
+  size_t blockIndex(const glm::ivec3& voxel) const {
+    const glm::ivec3 b = voxel >> kShift;
+    return size_t(b.x) + size_t(side) * (size_t(b.y) + size_t(side) * size_t(b.z));
+  }
+  void mark(size_t block) {
+    // A racing store of the same 1 is harmless; the atomic keeps ThreadSanitizer informed.
+    std::atomic_ref<uint32_t>(place[block]).store(1, std::memory_order_relaxed);
+  }
+  bool marked(const glm::ivec3& voxel) const { return place[blockIndex(voxel)] != 0; }
   // The marked blocks' lowest voxels, in index order.
-  std::vector<glm::ivec3> list() const {
+  std::vector<glm::ivec3> markedList() const {
     std::vector<glm::ivec3> out;
     for (int z = 0; z < side; ++z)
       for (int y = 0; y < side; ++y)
         for (int x = 0; x < side; ++x)
-          if (marks[size_t(x) + size_t(side) * (size_t(y) + size_t(side) * size_t(z))] != 0)
-            out.push_back(glm::ivec3(x, y, z) << kShift);
+          if (marked(glm::ivec3(x, y, z) << kShift)) out.push_back(glm::ivec3(x, y, z) << kShift);
     return out;
+  }
+  // Gives the marked blocks their places; refuses, before allocating, sums that memory cannot hold.
+  void allocate(const StageContext& ctx) {
+    low = markedList();
+    for (size_t b = 0; b < low.size(); ++b) place[blockIndex(low[b])] = uint32_t(b + 1);
+    const uint64_t count = uint64_t(low.size()) * kVoxels * uint64_t(words);
+    requireMemory(count * sizeof(uint32_t),
+                  "the voxelize sums of " + std::to_string(low.size()) + " blocks of 8^3 voxels",
+                  ctx.scene.file, "grid.resolution");
+    sums.resize(count);
+  }
+  // The first sum word of a voxel in a marked block.
+  uint32_t* at(const glm::ivec3& voxel) {
+    const size_t local = size_t(voxel.x & 7) | size_t(voxel.y & 7) << 3 | size_t(voxel.z & 7) << 6;
+    return &sums[((place[blockIndex(voxel)] - 1) * size_t(kVoxels) + local) * size_t(words)];
   }
 };
 
-struct Accumulator {
+// Adds contributions into the dense sums (the frame before's, updated in part), marking the
+// blocks they reach.
+struct DenseAccumulator {
   const GridSpec& grid;
   Buffer& weight;
   Buffer& albedo;
   Buffer& normal;
-  Buffer* emission;       // null when the scene emits nothing
-  bool subtract = false;  // take the contributions out (wrapping, exact) instead of adding
-  TouchedBlocks* touched = nullptr;  // when set, the blocks a contribution reaches
-  // Set by the first contribution that takes a voxel past kMaxWeightSum: the sums of that voxel
-  // are lost, the stage fails, so the remaining triangles are skipped.
-  std::atomic<bool> overflow{false};
-
-  static void add(uint32_t& word, uint32_t value) {
-    std::atomic_ref<uint32_t>(word).fetch_add(value, std::memory_order_relaxed);
-  }
+  Buffer* emission;  // null when the scene emits nothing
+  BlockSums& touched;
+  Overflow& overflow;
+  bool subtract = false;
 
   void operator()(const glm::ivec3& voxel, const VoxelContribution& c) {
     const size_t e = grid.index(voxel);
-    if (touched != nullptr) touched->mark(voxel);
-    // Adding (0 - v) modulo 2^32 takes v out exactly.
-    const auto term = [this](uint32_t v) { return subtract ? 0u - v : v; };
-    const uint32_t old = std::atomic_ref<uint32_t>(weight.words[e])
-                             .fetch_add(term(c.weight), std::memory_order_relaxed);
-    // Adds alone raise a sum, so the check fires exactly when the final sum passes the bound.
-    if (!subtract && uint64_t(old) + c.weight > shared::kMaxWeightSum)
-      overflow.store(true, std::memory_order_relaxed);
-    for (int i = 0; i < 3; ++i) {
-      add(albedo.words[3 * e + size_t(i)], term(c.albedo[i]));
-      add(normal.words[3 * e + size_t(i)], term(static_cast<uint32_t>(c.normal[i])));
-      if (emission != nullptr) add(emission->words[4 * e + size_t(i)], term(c.emission[i]));
-    }
-    if (emission != nullptr) add(emission->words[4 * e + 3], term(c.emitterWeight));
+    touched.mark(touched.blockIndex(voxel));
+    const uint32_t old = addContribution(c, emission != nullptr, subtract, [&](int i) -> uint32_t& {
+      if (i == 0) return weight.words[e];
+      if (i < 4) return albedo.words[3 * e + size_t(i - 1)];
+      if (i < 7) return normal.words[3 * e + size_t(i - 4)];
+      return emission->words[4 * e + size_t(i - 7)];
+    });
+    if (!subtract) overflow.check(old, c.weight);
   }
 };
 
@@ -119,7 +171,12 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
   const bool emissive =
       ctx.plan.on(Effect::emission);  // emissionScale may be 0 under plan.mode=full
   const bool emitterMean = ctx.settings.voxelizeEmission == VoxelizeEmission::emitters;
+  // The dense sums are outputs only where the plan keeps them (voxel_sums): compared, written, read
+  // by a later stage or updated in part in the next frame. Otherwise the sums live in BlockSums.
+  const bool keepSums = ctx.plan.on(Effect::voxel_sums);
   const glm::ivec3 extent(n);
+  // The update starts from the frame before's dense sums, which the stash holds only when the plan
+  // kept them.
   const std::optional<MovedTriangles> moved = movedTriangles(ctx, emissive);
   VoxelBuffers v;
   if (moved) {
@@ -133,103 +190,148 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
          stash.take(BufferId::common_voxelize_normal),
          stash.take(BufferId::common_voxelize_emission)};
   } else {
-    v = {Buffer(BufferId::common_voxelize_weight_sum, extent),
-         Buffer(BufferId::common_voxelize_albedo_sum, extent),
-         Buffer(BufferId::common_voxelize_normal_sum, extent),
-         emissive ? Buffer(BufferId::common_voxelize_emission_sum, extent) : Buffer(),
-         Buffer(BufferId::common_voxelize_opacity, extent),
-         Buffer(BufferId::common_voxelize_albedo, extent),
-         Buffer(BufferId::common_voxelize_normal, extent),
-         emissive ? Buffer(BufferId::common_voxelize_emission, extent) : Buffer()};
+    const auto fresh = [&](BufferId id, bool needed) {
+      return needed ? Buffer(id, extent) : Buffer();
+    };
+    v = {fresh(BufferId::common_voxelize_weight_sum, keepSums),
+         fresh(BufferId::common_voxelize_albedo_sum, keepSums),
+         fresh(BufferId::common_voxelize_normal_sum, keepSums),
+         fresh(BufferId::common_voxelize_emission_sum, keepSums && emissive),
+         fresh(BufferId::common_voxelize_opacity, true),
+         fresh(BufferId::common_voxelize_albedo, true),
+         fresh(BufferId::common_voxelize_normal, true),
+         fresh(BufferId::common_voxelize_emission, emissive)};
   }
-  // Only the blocks contributions reach are resolved where every other voxel already holds its
-  // value: the frame before's outputs (a voxel resolves from its sums alone, and the update leaves
-  // the others' sums as they were), or fresh buffers' +0 where that is what a voxel without
-  // contributions resolves to (resolvesToZero).
-  std::optional<TouchedBlocks> touched;
-  if (moved || resolvesToZero(antialiased, emissive, ctx.triangles.emissionScale))
-    touched.emplace(n);
-  Accumulator acc{grid, v.weight, v.albedoSum, v.normalSum, emissive ? &v.emissionSum : nullptr};
-  acc.touched = touched ? &*touched : nullptr;
 
+  BlockSums blocks(n, emissive);
+  Overflow overflow;
   const TextureAccess textures{ctx.scene.textures};
-  const auto walk = [&](const std::vector<shared::VoxelTriangle>& tris, size_t first, size_t end) {
+  const auto walk = [&](const std::vector<shared::VoxelTriangle>& tris, size_t first, size_t end,
+                        auto& sink) {
     parallelFor(tbb::blocked_range<size_t>(first, end, 64), [&](const auto& range) {
       for (size_t i = range.begin(); i != range.end(); ++i) {
         // A million copies of one triangle fail after the first few thousand, not after all.
-        if (acc.overflow.load(std::memory_order_relaxed)) return;
+        if (overflow.flag.load(std::memory_order_relaxed)) return;
         if (antialiased)
-          antialiasedWalk(tris[i], n, textures, acc);
+          antialiasedWalk(tris[i], n, textures, sink);
         else
-          conservativeWalk(tris[i], n, textures, acc);
+          conservativeWalk(tris[i], n, textures, sink);
       }
     });
   };
   if (moved) {
+    DenseAccumulator acc{
+        grid,   v.weight, v.albedoSum, v.normalSum, emissive ? &v.emissionSum : nullptr,
+        blocks, overflow};
     // Every subtraction before any addition, so that a running sum passes the bound only when
     // the final one does.
     acc.subtract = true;
     for (const auto& [first, end] : moved->before)
-      walk(ctx.previous->triangles->triangles, first, end);
+      walk(ctx.previous->triangles->triangles, first, end, acc);
     acc.subtract = false;
-    for (const auto& [first, end] : moved->now) walk(ctx.triangles.triangles, first, end);
+    for (const auto& [first, end] : moved->now) walk(ctx.triangles.triangles, first, end, acc);
   } else {
-    walk(ctx.triangles.triangles, 0, ctx.triangles.triangles.size());
+    const std::vector<shared::VoxelTriangle>& tris = ctx.triangles.triangles;
+    // The blocks of the walks' candidate voxels, a superset of those contributions reach (a block
+    // marked in vain resolves to the zeros it holds) at a fraction of the contributions' cost: each
+    // block is marked once per run of a triangle's candidates in it.
+    parallelFor(tbb::blocked_range<size_t>(0, tris.size(), 64), [&](const auto& range) {
+      for (size_t i = range.begin(); i != range.end(); ++i) {
+        size_t last = SIZE_MAX;
+        const auto mark = [&](const glm::ivec3& voxel) {
+          const size_t b = blocks.blockIndex(voxel);
+          if (b != last) blocks.mark(b);
+          last = b;
+        };
+        if (antialiased)
+          antialiasedCandidates(tris[i], n, mark);
+        else
+          conservativeCandidates(tris[i], n, mark);
+      }
+    });
+    blocks.allocate(ctx);
+    auto add = [&](const glm::ivec3& voxel, const VoxelContribution& c) {
+      uint32_t* sums = blocks.at(voxel);
+      overflow.check(
+          addContribution(c, emissive, false, [sums](int i) -> uint32_t& { return sums[i]; }),
+          c.weight);
+    };
+    walk(tris, 0, tris.size(), add);
   }
 
-  if (acc.overflow)
+  if (overflow.flag)
     throw InputError(ctx.scene.file, "meshes",
                      "more than 32768 voxel faces of surface fall into one voxel (fixed-point "
                      "overflow); lower grid.resolution or remove overlapping copies");
 
-  const auto resolve = [&](size_t e) {
-    const uint32_t w = v.weight.words[e];
+  // Voxel e's outputs from its sums (kSumWords or kEmissiveSumWords words, BlockSums' order).
+  const auto resolve = [&](size_t e, const uint32_t* s) {
+    const uint32_t w = s[0];
     v.opacity.set(e, 0, shared::resolveOpacity(w, antialiased));
-    auto sum3 = [&](const Buffer& b) {
-      return glm::uvec3(b.words[3 * e], b.words[3 * e + 1], b.words[3 * e + 2]);
-    };
-    const glm::vec3 a = shared::resolveAverage(sum3(v.albedoSum), w);
-    const glm::vec3 nm = shared::resolveNormal(glm::ivec3(sum3(v.normalSum)), w);
+    const glm::vec3 a = shared::resolveAverage(glm::uvec3(s[1], s[2], s[3]), w);
+    const glm::vec3 nm = shared::resolveNormal(glm::ivec3(glm::uvec3(s[4], s[5], s[6])), w);
     for (int c = 0; c < 3; ++c) {
       v.albedo.set(e, c, a[c]);
       v.normal.set(e, c, nm[c]);
     }
     if (emissive) {
-      const uint32_t* sum = &v.emissionSum.words[4 * e];
-      const uint32_t over = emitterMean ? sum[3] : w;
-      const glm::vec3 em = shared::resolveEmission(glm::uvec3(sum[0], sum[1], sum[2]), over,
-                                                   ctx.triangles.emissionScale);
+      const glm::vec3 em = shared::resolveEmission(
+          glm::uvec3(s[7], s[8], s[9]), emitterMean ? s[10] : w, ctx.triangles.emissionScale);
       for (int c = 0; c < 3; ++c) v.emission.set(e, c, em[c]);
     }
   };
-  if (touched) {
-    // Each block by one task, its voxels in index order.
-    const std::vector<glm::ivec3> blocks = touched->list();
-    const int side = 1 << TouchedBlocks::kShift;
-    parallelFor(tbb::blocked_range<size_t>(0, blocks.size(), 8), [&](const auto& range) {
+  // The dense sums of voxel e, gathered into BlockSums' order or scattered from it.
+  const auto denseSums = [&](size_t e, auto&& visit) {
+    visit(v.weight.words[e], 0);
+    for (int c = 0; c < 3; ++c) {
+      visit(v.albedoSum.words[3 * e + size_t(c)], 1 + c);
+      visit(v.normalSum.words[3 * e + size_t(c)], 4 + c);
+    }
+    if (emissive)
+      for (int c = 0; c < 4; ++c) visit(v.emissionSum.words[4 * e + size_t(c)], 7 + c);
+  };
+  // Whether a voxel without sums resolves to the +0 that fresh buffers hold.
+  const bool blank = resolvesToZero(antialiased, emissive, ctx.triangles.emissionScale);
+  const auto resolveVoxel = [&](const glm::ivec3& voxel) {
+    const size_t e = grid.index(voxel);
+    if (moved) {
+      uint32_t s[kEmissiveSumWords] = {};
+      denseSums(e, [&](uint32_t word, int i) { s[i] = word; });
+      return resolve(e, s);
+    }
+    static constexpr uint32_t kZero[kEmissiveSumWords] = {};
+    const uint32_t* s = blocks.marked(voxel) ? blocks.at(voxel) : kZero;
+    // Most voxels of a block the surface reaches are empty, and hold what they resolve to.
+    if (blank && std::all_of(s, s + blocks.words, [](uint32_t w) { return w == 0u; })) return;
+    resolve(e, s);
+    if (keepSums) denseSums(e, [&](uint32_t& word, int i) { word = s[i]; });
+  };
+  // Only the blocks contributions reached are resolved where every other voxel already holds its
+  // value: the frame before's outputs (a voxel resolves from its sums alone, and the update leaves
+  // the others' sums as they were), or fresh buffers' +0 where that is what a voxel without
+  // contributions resolves to (resolvesToZero). Each block by one task, its voxels in index order.
+  if (moved || blank) {
+    const std::vector<glm::ivec3> low = moved ? blocks.markedList() : blocks.low;
+    const int side = 1 << BlockSums::kShift;
+    parallelFor(tbb::blocked_range<size_t>(0, low.size(), 8), [&](const auto& range) {
       for (size_t b = range.begin(); b != range.end(); ++b) {
-        const glm::ivec3 high = glm::min(blocks[b] + side, glm::ivec3(n));
-        for (int z = blocks[b].z; z < high.z; ++z)
-          for (int y = blocks[b].y; y < high.y; ++y)
-            for (int x = blocks[b].x; x < high.x; ++x) resolve(grid.index({x, y, z}));
+        const glm::ivec3 high = glm::min(low[b] + side, glm::ivec3(n));
+        for (int z = low[b].z; z < high.z; ++z)
+          for (int y = low[b].y; y < high.y; ++y)
+            for (int x = low[b].x; x < high.x; ++x) resolveVoxel({x, y, z});
       }
     });
   } else {
-    parallelFor(tbb::blocked_range<size_t>(0, v.weight.elementCount(), 4096),
+    parallelFor(tbb::blocked_range<size_t>(0, size_t(n) * size_t(n) * size_t(n), 4096),
                 [&](const auto& range) {
-                  for (size_t e = range.begin(); e != range.end(); ++e) resolve(e);
+                  for (size_t e = range.begin(); e != range.end(); ++e)
+                    resolveVoxel(glm::ivec3(int(e % size_t(n)), int(e / size_t(n) % size_t(n)),
+                                            int(e / (size_t(n) * size_t(n)))));
                 });
   }
-  buffers.put(std::move(v.weight));
-  buffers.put(std::move(v.albedoSum));
-  buffers.put(std::move(v.normalSum));
-  buffers.put(std::move(v.opacity));
-  buffers.put(std::move(v.albedo));
-  buffers.put(std::move(v.normal));
-  if (emissive) {
-    buffers.put(std::move(v.emissionSum));
-    buffers.put(std::move(v.emission));
-  }
+  for (Buffer* b : {&v.weight, &v.albedoSum, &v.normalSum, &v.emissionSum, &v.opacity, &v.albedo,
+                    &v.normal, &v.emission})
+    if (b->spec != nullptr) buffers.put(std::move(*b));
 }
 
 }  // namespace voxgi::cpu

@@ -1,8 +1,9 @@
 // GPU voxelize stage: the graphics-pipeline voxelizer (conservative) or a compute splatter
-// (antialiased) accumulate into integer images, a compute pass resolves them, and every buffer is
-// read back for the next stage and for `voxgi diff`. In a sequence where few meshes moved, the
-// images start from the frame before's sums and only the moved meshes' triangles are drawn, once
-// subtracting that frame's and once adding this one's (common/voxelize_update.h).
+// (antialiased) accumulate into integer images, a compute pass resolves them, and the volumes are
+// read back for the next stage; the sums only where the plan keeps them (Effect::voxel_sums: for
+// `voxgi diff`, a later stage or the next frame's update). In a sequence where few meshes moved,
+// the images start from the frame before's sums and only the moved meshes' triangles are drawn,
+// once subtracting that frame's and once adding this one's (common/voxelize_update.h).
 #include <algorithm>
 #include <optional>
 #include <vector>
@@ -143,21 +144,24 @@ ResolvedImages resolve(const Gl& gl, const StageContext& ctx, const SumImages& s
 }
 
 void readBack(const Gl& gl, const SumImages& sums, const ResolvedImages& resolved, int n,
-              BufferSet& buffers) {
+              bool keepSums, BufferSet& buffers) {
   auto read = [&](BufferId id, const GlTexture& texture, GLenum format, GLenum type) {
     Buffer b(id, glm::ivec3(n));
     readTexture(gl, texture.get(), 0, format, type, {b.components() * n, n, n}, b);
     buffers.put(std::move(b));
   };
   using enum BufferId;
-  read(common_voxelize_weight_sum, sums.weight, GL_RED_INTEGER, GL_UNSIGNED_INT);
-  read(common_voxelize_albedo_sum, sums.albedo, GL_RED_INTEGER, GL_UNSIGNED_INT);
-  read(common_voxelize_normal_sum, sums.normal, GL_RED_INTEGER, GL_INT);
+  if (keepSums) {
+    read(common_voxelize_weight_sum, sums.weight, GL_RED_INTEGER, GL_UNSIGNED_INT);
+    read(common_voxelize_albedo_sum, sums.albedo, GL_RED_INTEGER, GL_UNSIGNED_INT);
+    read(common_voxelize_normal_sum, sums.normal, GL_RED_INTEGER, GL_INT);
+  }
   read(common_voxelize_opacity, resolved.opacity, GL_RED, GL_FLOAT);
   read(common_voxelize_albedo, resolved.albedo, GL_RED, GL_FLOAT);
   read(common_voxelize_normal, resolved.normal, GL_RED, GL_FLOAT);
   if (sums.emission.get() != 0) {
-    read(common_voxelize_emission_sum, sums.emission, GL_RED_INTEGER, GL_UNSIGNED_INT);
+    if (keepSums)
+      read(common_voxelize_emission_sum, sums.emission, GL_RED_INTEGER, GL_UNSIGNED_INT);
     read(common_voxelize_emission, resolved.emission, GL_RED, GL_FLOAT);
   }
   gl.check("voxelize: reading back");
@@ -174,11 +178,16 @@ void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& bu
                      std::to_string(n) + " needs 3D images of width " + std::to_string(3 * n) +
                          ", above this GL's GL_MAX_3D_TEXTURE_SIZE " +
                          std::to_string(context.max3dTextureSize()));
-  checkStageMemory(ctx, StageId::common_voxelize, 2.0);  // GPU copies plus the read-back buffers
-  const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
-  refuseRepeatedTriangles(ctx.triangles, n, antialiased, ctx.scene.file);
   const bool emissive =
       ctx.plan.on(Effect::emission);  // emissionScale may be 0 under plan.mode=full
+  const bool keepSums = ctx.plan.on(Effect::voxel_sums);
+  // The GPU's images plus the read-back buffers. Where the sums are not read back, the planned
+  // buffers are the volumes alone, and the GPU holds the sums beside them: 28 bytes a voxel as the
+  // volumes' 28, or 44 beside 40 with emission.
+  checkStageMemory(ctx, StageId::common_voxelize,
+                   keepSums ? 2.0 : 2.0 + (emissive ? 44.0 / 40.0 : 1.0));
+  const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
+  refuseRepeatedTriangles(ctx.triangles, n, antialiased, ctx.scene.file);
   const std::optional<MovedTriangles> moved = movedTriangles(ctx, emissive);
   const uint32_t zero = 0;
   GlBuffer status(gl, createBuffer(gl, sizeof zero, &zero));
@@ -217,7 +226,7 @@ void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& bu
     throw InputError(ctx.scene.file, "meshes",
                      "more than 32768 voxel faces of surface fall into one voxel (fixed-point "
                      "overflow); lower grid.resolution or remove overlapping copies");
-  readBack(gl, sums, resolved, n, buffers);
+  readBack(gl, sums, resolved, n, keepSums, buffers);
 }
 
 }  // namespace voxgi::gpu

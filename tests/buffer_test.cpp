@@ -74,6 +74,10 @@ TEST(Buffer, ShapesAndStageBytes) {
   scene.lights.emplace_back().intensity = glm::vec3(1.0f);  // unlit: no voxelize (EffectPlan::dark)
   Settings settings;
   const Technique& vct = findTechnique("vct");
+  // A render plans the volumes alone (opacity, albedo, normal); voxgi diff the sums beside them.
+  EXPECT_EQ(stageBufferBytes(StageId::common_voxelize, scene, vct.plan(scene, settings)),
+            64u * 4u * (1 + 3 + 3));
+  settings.inspect = true;
   EXPECT_EQ(stageBufferBytes(StageId::common_voxelize, scene, vct.plan(scene, settings)),
             64u * 4u * (1 + 3 + 3 + 1 + 3 + 3));
   // bounce produces nothing unless asked, then the radiance and the pyramid mip.mode picks.

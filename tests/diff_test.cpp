@@ -15,8 +15,11 @@ namespace {
 const StageSpec& voxelize() {
   return stageSpec(StageId::common_voxelize);
 }
+// The plan voxgi diff runs under (Settings::inspect): the sums are compared.
 EffectPlan plan(const Scene& scene) {
-  return vct().plan(scene, Settings{});
+  Settings settings;
+  settings.inspect = true;
+  return vct().plan(scene, settings);
 }
 
 TEST(Diff, IdenticalBuffersPass) {

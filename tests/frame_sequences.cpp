@@ -70,7 +70,10 @@ void expectIncrementalFramesEqualScratch(const TechniqueCase& c, StageBackend& b
   FrameRunner runner(technique, backend);
   for (size_t f = 0; f < frames.size(); ++f) {
     const Scene& scene = frames[f];
-    const Settings settings = caseSettings(c, scene);
+    // The plan of a sequence's frames (FrameRunner sets it), so that voxelize's sums, which the
+    // next frame's update starts from, are compared too.
+    Settings settings = caseSettings(c, scene);
+    settings.sequence = true;
     const std::vector<FrameStep>& steps = runner.run(scene, settings);
     const BufferSet& incremental = runner.buffers();
     const SceneChange change = f == 0 ? SceneChange{} : sceneChange(frames[f - 1], scene);
@@ -117,6 +120,7 @@ void expectVolumesUpdateEveryInterval(const TechniqueCase& c, StageBackend& back
   const auto settingsOf = [&](const Scene& scene) {
     Settings s = caseSettings(c, scene);
     s.updateInterval = interval;
+    s.sequence = true;  // the plan of a sequence's frames, as FrameRunner sets it
     return s;
   };
   FrameRunner runner(technique, backend);

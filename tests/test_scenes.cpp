@@ -115,6 +115,7 @@ Scene litQuad() {
 BufferSet runCpu(const Scene& scene, VoxelizeMode mode) {
   Settings settings;
   settings.voxelizeMode = mode;
+  settings.inspect = true;  // keeps the sums, as voxgi diff and dump do (Effect::voxel_sums)
   // Most test scenes have no light, which the planner answers with a black image and no
   // voxelization (EffectPlan::dark); voxelize does not read lights, so one is added here.
   Scene lit = scene;

@@ -45,7 +45,8 @@ Light testLight();
 // The quad z = 0.3 over [0.1, 0.9]^2 in the unit grid of 16 voxels, lit by testLight: a scene in
 // which every stage of vct runs.
 Scene litQuad();
-// The voxelize stage on the CPU (the scene lit by testLight if nothing lights it).
+// The voxelize stage on the CPU (the scene lit by testLight if nothing lights it), its fixed-point
+// sums kept (Settings::inspect).
 BufferSet runCpu(const Scene& scene, VoxelizeMode mode);
 // Runs the CPU stages the technique's plan runs (vct's by default), in graph order, up to and
 // including `last` ("mip", "vct/mip").

@@ -7,6 +7,7 @@
 #include <tbb/task_arena.h>
 
 #include "common/scene/scene_load.h"
+#include "shaders/shared/voxelize_kernel.h"
 #include "shaders/shared/voxelize_layout.h"
 #include "tests/test_scenes.h"
 
@@ -86,22 +87,32 @@ TEST(Voxelize, AttributesAreTheMaterialsAndTheUnitNormal) {
   EXPECT_NEAR(b.at(BufferId::common_voxelize_normal).get<float>(e, 0), 0.0f, 1e-4);
 }
 
+// A wall at y = 0.3 over [0.1, 0.9]^2 and on it a lamp over [0.4, 0.6]^2 emitting (4, 2, 1)
+// (material 1), in the unit grid of `resolution` voxels.
+Scene lampOnAWall(int resolution) {
+  Material wall, light;
+  light.emission = {4.0f, 2.0f, 1.0f};
+  Scene scene = makeScene(quad(1, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(resolution), wall);
+  Mesh lamp =
+      makeScene(quad(1, 0.3, {0.4, 0.4}, {0.6, 0.6}), unitGrid(resolution), light).meshes[0];
+  lamp.material = 1;
+  scene.materials.push_back(light);
+  scene.meshes.push_back(lamp);
+  return scene;
+}
+
 // voxelize.emission (docs/stages/voxelize.md): a light on a wall in one voxel layer. By default
 // a voxel's emission is the mean over all its surfaces, so the wall halves the light where both
 // fill a voxel; with `emitters` it is the mean over the emitting surfaces, the light's own, also
 // in the voxels its edge only partly covers (60 % here).
 TEST(Voxelize, AnEmitterOnAWallKeepsItsEmissionWithEmittersMean) {
-  Material wall, light;
-  light.emission = {4.0f, 2.0f, 1.0f};
-  Scene scene = makeScene(quad(1, 0.3, {0.1, 0.1}, {0.9, 0.9}), unitGrid(16), wall);
-  Mesh lamp = makeScene(quad(1, 0.3, {0.4, 0.4}, {0.6, 0.6}), unitGrid(16), light).meshes[0];
-  lamp.material = 1;
-  scene.materials.push_back(light);
-  scene.meshes.push_back(lamp);
+  const Scene scene = lampOnAWall(16);
+  const Material& light = scene.materials.at(1);
   const glm::ivec3 inside(8, 4, 8), edge(6, 4, 8);  // voxel 6 spans x in [0.375, 0.4375)
   for (const VoxelizeEmission mode : {VoxelizeEmission::surfaces, VoxelizeEmission::emitters}) {
     Settings settings;
     settings.voxelizeEmission = mode;
+    settings.inspect = true;  // keeps the sums (Effect::voxel_sums)
     const BufferSet b = runCpuUntil(scene, settings, "voxelize");
     const Buffer& emission = b.at(BufferId::common_voxelize_emission);
     const bool emitters = mode == VoxelizeEmission::emitters;
@@ -116,6 +127,65 @@ TEST(Voxelize, AnEmitterOnAWallKeepsItsEmissionWithEmittersMean) {
     const Buffer& sum = b.at(BufferId::common_voxelize_emission_sum);
     EXPECT_NEAR(double(sum.words[4 * scene.grid.index(edge) + 3]) / 65536.0, 0.6, 1e-4);
   }
+}
+
+// A render leaves voxelize's sums out (Effect::voxel_sums off) and keeps them only in the blocks of
+// 8^3 voxels the surface reaches; voxgi diff keeps them dense. Both give the same volumes, word for
+// word, and the dense sums resolve voxel by voxel to those volumes (the blocks' sums land where
+// they belong; the GPU diff compares the sums themselves with the GPU's dense images). Both modes,
+// both emission means, a grid of 20 voxels (its last blocks partial) and the bunny at 40.
+TEST(Voxelize, ReleasingTheSumsLeavesTheVolumesBitForBit) {
+  Scene lamp = lampOnAWall(20);
+  Scene bunny = loadScene(sourcePath("scenes/bunny.obj"));
+  bunny.grid.resolution = 40;
+  bunny.lights.push_back(testLight());
+  using enum BufferId;
+  const BufferId sums[] = {common_voxelize_weight_sum, common_voxelize_albedo_sum,
+                           common_voxelize_normal_sum, common_voxelize_emission_sum};
+  const BufferId volumes[] = {common_voxelize_opacity, common_voxelize_albedo,
+                              common_voxelize_normal, common_voxelize_emission};
+  for (const Scene* scene : {&lamp, &bunny})
+    for (const VoxelizeMode mode : {VoxelizeMode::conservative, VoxelizeMode::antialiased})
+      for (const VoxelizeEmission mean : {VoxelizeEmission::surfaces, VoxelizeEmission::emitters}) {
+        SCOPED_TRACE(std::string(scene == &lamp ? "lamp, " : "bunny, ") + voxelizeModeName(mode));
+        Settings render;
+        render.voxelizeMode = mode;
+        render.voxelizeEmission = mean;
+        Settings inspect = render;
+        inspect.inspect = true;
+        const BufferSet a = runCpuUntil(*scene, render, "voxelize");
+        const BufferSet b = runCpuUntil(*scene, inspect, "voxelize");
+        const bool emissive = scene == &lamp;
+        for (const BufferId id : sums) {
+          EXPECT_FALSE(a.contains(id)) << bufferSpec(id).qualifiedName();
+          EXPECT_EQ(b.contains(id), emissive || id != common_voxelize_emission_sum);
+        }
+        for (const BufferId id : volumes) {
+          if (!emissive && id == common_voxelize_emission) continue;
+          EXPECT_TRUE(a.at(id).words == b.at(id).words) << bufferSpec(id).qualifiedName();
+        }
+        const Buffer &weight = b.at(common_voxelize_weight_sum),
+                     &albedoSum = b.at(common_voxelize_albedo_sum),
+                     &normalSum = b.at(common_voxelize_normal_sum);
+        size_t occupied = 0;
+        for (size_t e = 0; e < weight.elementCount(); ++e) {
+          const uint32_t w = weight.words[e];
+          occupied += w != 0u;
+          const glm::uvec3 albedo(albedoSum.words[3 * e], albedoSum.words[3 * e + 1],
+                                  albedoSum.words[3 * e + 2]);
+          const glm::ivec3 normal(int32_t(normalSum.words[3 * e]),
+                                  int32_t(normalSum.words[3 * e + 1]),
+                                  int32_t(normalSum.words[3 * e + 2]));
+          ASSERT_EQ(a.at(common_voxelize_opacity).get<float>(e, 0),
+                    shared::resolveOpacity(w, mode == VoxelizeMode::antialiased))
+              << "voxel " << e;
+          ASSERT_EQ(a.at(common_voxelize_albedo).vec3At(e), shared::resolveAverage(albedo, w))
+              << "voxel " << e;
+          ASSERT_EQ(a.at(common_voxelize_normal).vec3At(e), shared::resolveNormal(normal, w))
+              << "voxel " << e;
+        }
+        EXPECT_GT(occupied, 100u);
+      }
 }
 
 TEST(Voxelize, NonEmissiveScenesGetNoEmissionBuffers) {

@@ -19,9 +19,12 @@ struct VoxelizeOptions {
 int runVoxelize(const VoxelizeOptions& o) {
   checkOutputPath(o.out);
   const StageSpec& voxelize = stageSpec(StageId::common_voxelize);
-  const StageRun run = runStages(o.scene, &voxelize);
+  // --sums keeps the fixed-point sums (the plan's voxel_sums), as voxgi dump does.
+  const StageRun run = runStages(o.scene, &voxelize, o.sums);
+  // A voxel is occupied exactly when its weight sum is not 0, and so its opacity is above 0.
   size_t occupied = 0;
-  for (uint32_t w : run.buffers.at(BufferId::common_voxelize_weight_sum).words) occupied += w != 0u;
+  const Buffer& opacity = run.buffers.at(BufferId::common_voxelize_opacity);
+  for (size_t e = 0; e < opacity.elementCount(); ++e) occupied += opacity.get<float>(e, 0) > 0.0f;
   writeVdb(o.out, buffersOf(run.buffers, voxelize, o.sums), run.scene.grid,
            {{"voxgi_mode", voxelizeModeName(run.settings.voxelizeMode)},
             {"voxgi_backend", run.backend.gpu ? run.backend.context->renderer() : "cpu"}});

@@ -29,6 +29,9 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
           ? "surface area and normals per voxel -> the geometry volume"
           : "propagate.occlusion=off, but the voxel volumes are the scene's grid for every "
             "technique");
+  planVoxelSums(
+      p, settings,
+      s.occlusion == LpvOcclusion::on || p.full ? "inject_geometry (the geometry volume)" : "");
   const int views = rsmViewCount(scene, settings);
   std::ostringstream rsm;
   if (views == 0)
@@ -77,6 +80,7 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   // only a volume next to the sums voxelize keeps anyway.
   p.effect("emission per pixel", Effect::emission, p.full || !emitters.empty(),
            emitters.empty() ? "no emissive material" : "emissive material " + emitters);
+  finishVoxelSums(p);
   p.set(Effect::direct_light, views > 0 || p.full);
   p.stage(StageId::lpv_shade, true,
           p.dark ? "the black image alone"

@@ -39,11 +39,13 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
   p.lightStage(StageId::common_voxelize, true,
                "surfaces -> albedo, normal, opacity volumes; in a sequence, redone (in part when "
                "few meshes moved) only when geometry moves");
+  planVoxelSums(p, settings, "");
   const MeshesWith emitters = meshesWith(scene, [](const Material& m) { return m.emissive(); });
   p.effect("emission volume", Effect::emission, p.full || !emitters.names.empty(),
            !emitters.names.empty() ? "emissive material " + emitters.names
            : p.full                ? "no emissive material; " + full
                                    : "no emissive material");
+  finishVoxelSums(p);
 
   int shadowLights = 0;
   for (const Light& l : scene.lights) shadowLights += l.castsShadows ? 1 : 0;

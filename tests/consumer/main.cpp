@@ -16,8 +16,8 @@ int main(int argc, char** argv) {
   voxgi::cpu::CpuBackend cpu;
   voxgi::runPipeline(cpu, ctx, buffers, &voxgi::stageSpec(voxgi::StageId::common_voxelize));
   size_t occupied = 0;
-  for (uint32_t w : buffers.at(voxgi::BufferId::common_voxelize_weight_sum).words)
-    occupied += w != 0u;
+  const voxgi::Buffer& opacity = buffers.at(voxgi::BufferId::common_voxelize_opacity);
+  for (size_t e = 0; e < opacity.elementCount(); ++e) occupied += opacity.get<float>(e, 0) > 0.0f;
   std::cout << "consumer: " << occupied << " occupied voxels\n";
   return occupied > 0 ? 0 : 1;
 }

@@ -62,6 +62,28 @@ TEST(EffectPlan, FollowsTheScene) {
               plan.on(Effect::ambient_occlusion));
 }
 
+// voxelize's dense sums are kept only where they are compared (voxgi diff and dump), under
+// plan.mode=full, where a later stage reads them (lpv's geometry injection) and in a sequence (the
+// next frame's update in part starts from them); the emission's with the emission volume.
+TEST(EffectPlan, KeepsTheVoxelSumsOnlyWhereTheyAreComparedReadOrUpdated) {
+  const Scene scene = floorAndHiddenMirror();
+  const Technique& lpv = findTechnique("lpv");
+  const auto sums = [&](const Technique& t, auto change) {
+    Settings s;
+    change(s);
+    const EffectPlan p = t.plan(scene, s);
+    EXPECT_EQ(planItemIn(p, "voxel sums"), p.on(Effect::voxel_sums));
+    EXPECT_EQ(p.on(Effect::emission_sum), p.on(Effect::voxel_sums) && p.on(Effect::emission));
+    return p.on(Effect::voxel_sums);
+  };
+  EXPECT_FALSE(sums(vct(), [](Settings&) {}));
+  EXPECT_TRUE(sums(vct(), [](Settings& s) { s.inspect = true; }));
+  EXPECT_TRUE(sums(vct(), [](Settings& s) { s.planMode = PlanMode::full; }));
+  EXPECT_TRUE(sums(vct(), [](Settings& s) { s.sequence = true; }));
+  EXPECT_TRUE(sums(lpv, [](Settings&) {}));  // propagate.occlusion=on by default
+  EXPECT_FALSE(sums(lpv, [](Settings& s) { s.lpv.occlusion = LpvOcclusion::off; }));
+}
+
 // Renders with the plan and with plan.mode=full; the full pipeline must really compute the skipped
 // effects (their buffers exist) and the images must agree bit for bit.
 void expectPlannedEqualsFull(const Scene& scene, Settings settings) {
