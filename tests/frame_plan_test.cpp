@@ -4,12 +4,14 @@
 // reused) equals the frame rendered from scratch bit for bit on the CPU, and the steps reuse what
 // the change allows: no volume stage when only the camera moved, nothing when nothing did, and
 // no voxelization when only a light did.
+#include <algorithm>
 #include <cstring>
 
 #include <gtest/gtest.h>
 
 #include "common/frame_plan.h"
 #include "common/scene/scene_load.h"
+#include "common/voxelize_update.h"
 #include "cpu/backend.h"
 #include "tests/frame_sequences.h"
 #include "tests/technique_cases.h"
@@ -53,6 +55,43 @@ TEST(FramePlan, CarriedLightIsTheSameFromScratch) {
 TEST(FramePlan, LightVoxelsRelightsOnlyWhatTheMovedMeshCanReach) {
   cpu::CpuBackend cpu;
   expectPartialRelightEqualsScratch(cpu);
+}
+
+// A sequence's frames keep voxelize's sums (Settings::sequence, which FrameRunner sets), so that a
+// frame in which a small mesh moved updates the frame before's sums in part: with the buffers the
+// runner's frame left, the next frame's voxelize finds all its update needs. A still image drops
+// the sums, and the same frame after it would be voxelized whole.
+TEST(FramePlan, ASequenceKeepsWhatVoxelizesUpdateInPartStartsFrom) {
+  const std::vector<TechniqueCase> cases = allTechniqueCases("motion");
+  const auto c = std::find_if(cases.begin(), cases.end(),
+                              [](const TechniqueCase& k) { return k.technique == "vct"; });
+  ASSERT_NE(c, cases.end());
+  const std::vector<Scene> frames = motionFrames(caseScene(*c));
+  const Scene &before = frames[3], &now = frames[4];  // frame 4 moves the smallest mesh
+  cpu::CpuBackend cpu;
+  FrameRunner runner(vct(), cpu);
+  for (size_t f = 0; f <= 3; ++f) runner.run(frames[f], caseSettings(*c, frames[f]));
+  const VoxelTriangles trianglesBefore = prepareVoxelTriangles(before, before.grid);
+  const VoxelTriangles trianglesNow = prepareVoxelTriangles(now, now.grid);
+  BufferSet still;
+  runPipeline(cpu, StageContext{vct(), before, caseSettings(*c, before), trianglesBefore}, still,
+              &stageSpec(StageId::common_voxelize));
+  for (const bool sequence : {true, false}) {
+    SCOPED_TRACE(sequence ? "a sequence" : "after a still image");
+    const Settings settings = sequence ? runner.settings() : caseSettings(*c, now);
+    EXPECT_EQ(settings.sequence, sequence);
+    PreviousFrame previous{&before, &trianglesBefore, {}};
+    for (const BufferSpec* spec : stageBuffers(stageSpec(StageId::common_voxelize)))
+      if (const Buffer* b = (sequence ? runner.buffers() : still).find(spec->id))
+        previous.stash.put(Buffer(*b));
+    StageContext ctx{vct(), now, settings, trianglesNow};
+    ctx.previous = &previous;
+    const std::optional<MovedTriangles> moved = movedTriangles(ctx, ctx.plan.on(Effect::emission));
+    EXPECT_EQ(moved.has_value(), sequence);
+    if (moved) {
+      EXPECT_EQ(moved->now.size(), 1u);
+    }
+  }
 }
 
 // What moved, as the plan says it.
