@@ -51,21 +51,34 @@ Mesh bumpySphere(int triangles) {
   return mesh;
 }
 
-double meshToVolumeSeconds(const Scene& scene, int repeats, float bandWidth) {
+// The median seconds of meshToVolume at the band width, and the bytes its grid holds.
+struct PeerRun {
+  double seconds;
+  uint64_t bytes = 0;
+};
+PeerRun meshToVolumeRun(const Scene& scene, int repeats, float bandWidth) {
   std::vector<openvdb::Vec3s> points;
   std::vector<openvdb::Vec3I> tris;
   for (const Mesh& m : scene.meshes) {
     const auto base = static_cast<unsigned>(points.size());
-    for (const auto& p : m.positions) points.emplace_back(float(p.x), float(p.y), float(p.z));
+    // The adapter's points are in the grid's index space (MeshDataAdapter::getIndexSpacePoint), not
+    // in world space: voxgi's voxel coordinates, so that both voxelize the mesh at the same size.
+    for (const auto& p : m.positions) {
+      const glm::dvec3 v = scene.grid.toVoxel(p);
+      points.emplace_back(float(v.x), float(v.y), float(v.z));
+    }
     for (const auto& t : m.triangles) tris.emplace_back(base + t.x, base + t.y, base + t.z);
   }
   const auto transform = openvdb::math::Transform::createLinearTransform(scene.grid.voxelSize());
   openvdb::tools::QuadAndTriangleDataAdapter<openvdb::Vec3s, openvdb::Vec3I> mesh(points, tris);
-  return medianSeconds(repeats, [&] {
+  PeerRun run;
+  run.seconds = medianSeconds(repeats, [&] {
     auto grid =
         openvdb::tools::meshToVolume<openvdb::FloatGrid>(mesh, *transform, bandWidth, bandWidth);
     if (grid->activeVoxelCount() == 0) throw std::runtime_error("meshToVolume produced nothing");
+    run.bytes = grid->memUsage();
   });
+  return run;
 }
 
 }  // namespace
@@ -89,6 +102,7 @@ int runBenchVoxelize(const BenchOptions& o) {
     s.file = "generated";
     s.materials.push_back(Material{});
     s.meshes.push_back(bumpySphere(o.generatedTriangles));
+    addDefaultLights(s);  // an unlit scene's plan leaves voxelize out (EffectPlan::dark)
     meshes.push_back(std::move(s));
   }
   std::unique_ptr<gpu::GlContext> context;
@@ -102,8 +116,9 @@ int runBenchVoxelize(const BenchOptions& o) {
   nlohmann::json rows = nlohmann::json::array();
   std::cout << "| mesh | triangles | N | cpu 1 thread s | cpu 2 threads s | speed-up | gpu ("
             << (context ? context->renderer() : "none") << ") s | meshToVolume band 3, 2 threads s"
-            << " | meshToVolume band 1, 2 threads s | cpu 2 threads / meshToVolume band 3 |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|\n";
+            << " | meshToVolume band 1, 2 threads s | cpu 2 threads / meshToVolume band 3"
+            << " | cpu volumes MB | meshToVolume band 3 MB |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   Settings settings;
   const Technique& vct = findTechnique("vct");  // any technique runs the shared voxelize stage
   const StageSpec& voxelize = stageSpec(StageId::common_voxelize);
@@ -113,12 +128,19 @@ int runBenchVoxelize(const BenchOptions& o) {
   for (Scene& scene : meshes) {
     for (int n : o.resolutions) {
       scene.grid = fitGrid(scene.bounds(), n);
+      // The bytes of the buffers the stage hands on, as a render plans them.
+      uint64_t volumeBytes = 0;
       auto runCpu = [&](size_t threads) {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
         return medianSeconds(o.repeats, [&] {
           const VoxelTriangles tris = prepareVoxelTriangles(scene, scene.grid);
           BufferSet out;
-          runStage(cpuBackend, voxelize, StageContext{vct, scene, settings, tris}, out);
+          const StageContext ctx{vct, scene, settings, tris};
+          if (!ctx.plan.runs(StageId::common_voxelize))
+            throw std::runtime_error("bench: the plan leaves voxelize out for " + scene.file);
+          runStage(cpuBackend, voxelize, ctx, out);
+          volumeBytes = 0;
+          for (const auto& [id, b] : out) volumeBytes += b.words.size() * sizeof(uint32_t);
         });
       };
       const double cpu1 = runCpu(1), cpu2 = runCpu(2);
@@ -135,14 +157,17 @@ int runBenchVoxelize(const BenchOptions& o) {
         }
       }
       tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
-      const double peer3 = meshToVolumeSeconds(scene, o.repeats, 3.0f);
-      const double peer1 = meshToVolumeSeconds(scene, o.repeats, 1.0f);
+      const PeerRun band3 = meshToVolumeRun(scene, o.repeats, 3.0f);
+      const double peer3 = band3.seconds;
+      const double peer1 = meshToVolumeRun(scene, o.repeats, 1.0f).seconds;
+      const double mb = 1e-6;
       const std::string name = scene.file == "generated" ? "generated sphere" : scene.file;
       std::cout << std::fixed << std::setprecision(3) << "| " << name << " | "
                 << scene.triangleCount() << " | " << n << " | " << cpu1 << " | " << cpu2 << " | "
                 << std::setprecision(2) << cpu1 / cpu2 << "x | " << std::setprecision(3)
                 << gpuSeconds << " | " << peer3 << " | " << peer1 << " | " << std::setprecision(2)
-                << cpu2 / peer3 << " |\n"
+                << cpu2 / peer3 << " | " << std::setprecision(1) << double(volumeBytes) * mb
+                << " | " << double(band3.bytes) * mb << " |\n"
                 << std::flush;
       rows.push_back(
           {{"mesh", name},
@@ -152,7 +177,9 @@ int runBenchVoxelize(const BenchOptions& o) {
            {"cpu_2_threads_s", cpu2},
            {"gpu_s", std::isnan(gpuSeconds) ? nlohmann::json() : nlohmann::json(gpuSeconds)},
            {"mesh_to_volume_band3_s", peer3},
-           {"mesh_to_volume_band1_s", peer1}});
+           {"mesh_to_volume_band1_s", peer1},
+           {"cpu_volumes_bytes", volumeBytes},
+           {"mesh_to_volume_band3_bytes", band3.bytes}});
     }
   }
   if (!o.json.empty()) writeFileAtomically(o.json, rows.dump(2) + "\n");
