@@ -74,7 +74,7 @@ struct BlockSums {
   static constexpr int kShift = 3, kVoxels = 1 << (3 * kShift);
   int side, words;
   std::vector<uint32_t> place;  // per block of the grid: 1 + its index in `low`, or 0
-  std::vector<glm::ivec3> low;  // the marked blocks' lowest voxels, in index order
+  std::vector<glm::ivec3> low;  // the marked blocks' lowest voxels, in index order, once listed
   Words sums;
 
   BlockSums(int n, bool emissive)
@@ -230,6 +230,7 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
       walk(ctx.previous->triangles->triangles, first, end, acc);
     acc.subtract = false;
     for (const auto& [first, end] : moved->now) walk(ctx.triangles.triangles, first, end, acc);
+    blocks.low = blocks.markedList();  // resolved again; the sums stay dense
   } else {
     const std::vector<shared::VoxelTriangle>& tris = ctx.triangles.triangles;
     // The blocks of the walks' candidate voxels, a superset of those contributions reach (a block
@@ -311,7 +312,7 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
   // the others' sums as they were), or fresh buffers' +0 where that is what a voxel without
   // contributions resolves to (resolvesToZero). Each block by one task, its voxels in index order.
   if (moved || blank) {
-    const std::vector<glm::ivec3> low = moved ? blocks.markedList() : blocks.low;
+    const std::vector<glm::ivec3>& low = blocks.low;
     const int side = 1 << BlockSums::kShift;
     parallelFor(tbb::blocked_range<size_t>(0, low.size(), 8), [&](const auto& range) {
       for (size_t b = range.begin(); b != range.end(); ++b) {

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "common/effect_plan.h"
 #include "common/error.h"
 #include "common/voxel_overflow.h"
 #include "common/voxelize_update.h"
@@ -181,11 +182,14 @@ void common::voxelize(GlContext& context, const StageContext& ctx, BufferSet& bu
   const bool emissive =
       ctx.plan.on(Effect::emission);  // emissionScale may be 0 under plan.mode=full
   const bool keepSums = ctx.plan.on(Effect::voxel_sums);
-  // The GPU's images plus the read-back buffers. Where the sums are not read back, the planned
-  // buffers are the volumes alone, and the GPU holds the sums beside them: 28 bytes a voxel as the
-  // volumes' 28, or 44 beside 40 with emission.
-  checkStageMemory(ctx, StageId::common_voxelize,
-                   keepSums ? 2.0 : 2.0 + (emissive ? 44.0 / 40.0 : 1.0));
+  // The GPU holds its sum images whether or not the plan reads them back: its images are the
+  // stage's buffers with the sums, beside the read-back of the planned ones.
+  EffectPlan withSums = ctx.plan;
+  withSums.set(Effect::voxel_sums, true);
+  finishVoxelSums(withSums);
+  const double held = double(stageBufferBytes(StageId::common_voxelize, ctx.scene, withSums));
+  const double planned = double(stageBufferBytes(StageId::common_voxelize, ctx.scene, ctx.plan));
+  checkStageMemory(ctx, StageId::common_voxelize, 1.0 + held / planned);
   const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
   refuseRepeatedTriangles(ctx.triangles, n, antialiased, ctx.scene.file);
   const std::optional<MovedTriangles> moved = movedTriangles(ctx, emissive);
