@@ -68,8 +68,9 @@ function(voxgi_stage_files out folder suffix)
 endfunction()
 
 # The GLSL files of every stage, relative to shaders/: each file in shaders/ belongs to the stage
-# of its folder whose name it is or starts with followed by "_" (the longest such name), every
-# file to one stage and every stage to at least one file.
+# of its folder whose name it is or starts with followed by "_" (the longest such name), or, a pass
+# several of a technique's stages run, to the GPU file of the same name (shaders/T/F.comp,
+# gpu/T/F.cpp); every stage has at least one file.
 function(voxgi_stage_shaders out)
   get_property(stages GLOBAL PROPERTY VOXGI_STAGES)
   set(folder ${PROJECT_SOURCE_DIR}/shaders)
@@ -96,10 +97,18 @@ function(voxgi_stage_shaders out)
       endif()
     endforeach()
     if(best STREQUAL "")
-      message(FATAL_ERROR "shaders/${shader} belongs to no stage of ${dir}: a stage's GLSL files "
-                          "are named after it (docs/architecture.md, \"Adding a stage\")")
+      # A pass that several of a technique's stages run is named after the GPU file that runs it
+      # (shaders/svo/bricks.comp, gpu/svo/bricks.cpp).
+      get_filename_component(folder_of_dir ${shader} DIRECTORY)
+      if(NOT EXISTS ${PROJECT_SOURCE_DIR}/gpu/${folder_of_dir}/${file}.cpp OR dir STREQUAL common)
+        message(FATAL_ERROR "shaders/${shader} belongs to no stage of ${dir} and to no file "
+                            "gpu/${folder_of_dir}/${file}.cpp: a stage's GLSL files are named after "
+                            "it, a pass several stages run after the GPU file that runs it "
+                            "(docs/architecture.md, \"Adding a stage\")")
+      endif()
+    else()
+      list(APPEND claimed ${dir}/${best})
     endif()
-    list(APPEND claimed ${dir}/${best})
   endforeach()
   foreach(stage ${stages})
     if(NOT stage IN_LIST claimed)

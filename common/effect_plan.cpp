@@ -1,5 +1,7 @@
 #include "common/effect_plan.h"
 
+#include <stdexcept>
+
 #include "common/camera_geometry.h"
 #include "common/error.h"
 
@@ -103,9 +105,18 @@ bool meshInView(const Scene& scene, const Mesh& mesh) {
   return true;
 }
 
+void EffectPlan::carry(StageId id, bool carries) {
+  if (carries && (stageSpec(id).reads & stage_reads::history) == 0)
+    throw std::logic_error(stageSpec(id).qualifiedName() +
+                           " carries a state across frames but does not declare the history "
+                           "among what it reads (common/stages.inc)");
+  carries_.set(size_t(id), carries);
+}
+
 bool EffectPlan::sameDecisions(const EffectPlan& other) const {
   if (full != other.full || dark != other.dark || seriesLength != other.seriesLength ||
-      maps != other.maps || effects_ != other.effects_ || items.size() != other.items.size())
+      maps != other.maps || effects_ != other.effects_ || carries_ != other.carries_ ||
+      items.size() != other.items.size())
     return false;
   for (size_t i = 0; i < items.size(); ++i)
     if (items[i].name != other.items[i].name || items[i].in != other.items[i].in) return false;

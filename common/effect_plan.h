@@ -42,6 +42,11 @@ class EffectPlan {
   void set(Effect e, bool in) { effects_.set(size_t(e), in); }
   // An item that is neither a stage nor a buffer's effect (cones, shadow lights).
   void note(std::string name, bool in, std::string why);
+  // Whether the stage carries a state of its own from frame to frame in a sequence (FrameHistory,
+  // common/frame_plan.h) under these settings; only a stage that declares the history among what
+  // it reads may (stage_reads::history, common/stages.inc), else std::logic_error.
+  void carry(StageId id, bool carries);
+  bool carries(StageId id) const { return carries_.test(size_t(id)); }
 
   // Whether the stage runs (a stage the planner did not list does not).
   bool runs(StageId id) const;
@@ -57,6 +62,7 @@ class EffectPlan {
 
  private:
   std::bitset<256> effects_;  // by Effect (a uint8_t)
+  std::bitset<256> carries_;  // by StageId
 };
 
 // Why a dark plan (EffectPlan::dark) leaves a stage out, as `voxgi plan` prints it.

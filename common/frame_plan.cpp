@@ -5,49 +5,21 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "common/svo/propagate.h"
 #include "common/voxel_triangles.h"
 
 namespace voxgi {
 
 unsigned stageSceneInputs(StageId stage) {
-  constexpr unsigned all = kSceneGeometry | kSceneLights | kSceneCamera;
-  switch (stage) {
-    case StageId::common_voxelize:
-      return kSceneGeometry;
-    case StageId::common_gbuffer:
-      return kSceneGeometry | kSceneCamera;
-    // Lights include a mesh's emitters under emitters.mode=area_lights (sceneLights), so a stage
-    // that reads lights reads the geometry too.
-    case StageId::vct_light_voxels:
-    case StageId::vct_bounce:
-    case StageId::lpv_rsm:
-    case StageId::lpv_inject:
-    case StageId::lpv_inject_geometry:
-    case StageId::lpv_propagate:
-    case StageId::svo_build:
-    case StageId::svo_propagate:
-      return kSceneGeometry | kSceneLights;
-    case StageId::vct_mip:
-    case StageId::svo_mip:
-      return 0;  // the grid and the buffers before them
-    case StageId::vct_trace_cones:
-    case StageId::vct_compose:
-    case StageId::lpv_shade:
-    case StageId::svo_shade:
-      return all;
-  }
-  return all;
+  return stageSpec(stage).reads & (kSceneGeometry | kSceneLights | kSceneCamera);
 }
 
 bool stageReadsBuffers(StageId stage) {
-  return stage != StageId::common_voxelize && stage != StageId::common_gbuffer &&
-         stage != StageId::svo_build;
+  return (stageSpec(stage).reads & stage_reads::buffers) != 0;
 }
 
 bool stageCarries(const StageContext& ctx, StageId stage) {
-  return ctx.history != nullptr && stage == StageId::svo_propagate &&
-         svo::carriesLight(ctx.settings);
+  return ctx.history != nullptr && (stageSpec(stage).reads & stage_reads::history) != 0 &&
+         ctx.plan.carries(stage);
 }
 
 namespace {

@@ -15,24 +15,27 @@
 
 namespace voxgi {
 
-// The parts of a scene a stage can read besides the buffers of the stages before it. Materials,
-// textures, the grid and the settings stay fixed through a sequence.
+// The parts of a scene that can change from frame to frame, as the stages declare what they read
+// (stage_reads, common/stages.inc). Materials, textures, the grid and the settings stay fixed
+// through a sequence.
 enum SceneInput : unsigned {
-  kSceneGeometry = 1,  // mesh positions, point clouds
-  kSceneLights = 2,
-  kSceneCamera = 4,
+  kSceneGeometry = stage_reads::geometry,
+  kSceneLights = stage_reads::lights,
+  kSceneCamera = stage_reads::camera,
 };
 
-// The scene inputs of a stage (a switch over every StageId: a new stage must say what it reads).
+// The scene inputs of a stage, from its declaration.
 unsigned stageSceneInputs(StageId stage);
 
 // Whether `stage` reads buffers of the stages before it (gbuffer, voxelize and the octree's build
-// read the scene alone): one that does not, runs only when what it reads of the scene changed.
+// read the scene alone), from its declaration: one that does not, runs only when what it reads of
+// the scene changed.
 bool stageReadsBuffers(StageId stage);
 
-// Whether `stage` carries a state of its own from frame to frame (FrameHistory) under ctx's
-// settings and runner: such a stage runs in a frame where nothing it reads changed, until its
-// state settles.
+// Whether `stage` carries a state of its own from frame to frame (FrameHistory): it declares the
+// history among what it reads, ctx's plan says it carries under these settings, and a runner keeps
+// the history. Such a stage runs in a frame where nothing it reads changed, until its state
+// settles.
 bool stageCarries(const StageContext& ctx, StageId stage);
 
 // What moved from one frame's scene to the next's: a set of SceneInput bits and, for messages,

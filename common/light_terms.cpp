@@ -2,7 +2,7 @@
 
 #include "common/error.h"
 #include "common/technique.h"
-#include "shaders/shared/vct/compose_kernel.h"
+#include "shaders/shared/compose.h"
 
 namespace voxgi {
 

@@ -44,7 +44,7 @@ Image directOnly(const TermImages& terms);
 
 // A staged technique's terms from the buffers its run left: the gbuffer's materials times the
 // light buffers of its shading stage (Technique::lightTerms), put together by the kernel that
-// composes its image (shaders/shared/vct/compose_kernel.h), so the terms add up to the image up to
+// composes its image (shaders/shared/compose.h), so the terms add up to the image up to
 // float rounding. nullopt when the technique has no such buffers.
 std::optional<TermImages> techniqueTerms(const Technique& technique, const BufferSet& buffers,
                                          const Settings& settings, const Scene& scene);

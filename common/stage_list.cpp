@@ -8,7 +8,7 @@ namespace {
 
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
 #define VOXGI_EFFECT(owner, effect, meaning) EffectSpec{Effect::effect, #owner, #effect, meaning},
-#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STAGE(owner, stage, reads, summary)
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
 constexpr EffectSpec kEffects[] = {
@@ -18,8 +18,17 @@ constexpr EffectSpec kEffects[] = {
 
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
 #define VOXGI_EFFECT(owner, effect, meaning)
-#define VOXGI_STAGE(owner, stage, summary) \
-  StageSpec{StageId::owner##_##stage, #owner, #stage, summary},
+// `reads` is an expression of stage_reads' names; one outside them, or none, stops the build here.
+#define VOXGI_STAGE(owner, stage, reads, summary)                        \
+  StageSpec{StageId::owner##_##stage, #owner, #stage, summary, [] {      \
+              using namespace stage_reads;                               \
+              constexpr unsigned bits = reads;                           \
+              static_assert(bits != 0 && (bits & ~kAll) == 0,            \
+                            "stage " #owner "/" #stage                   \
+                            " must declare what it reads (stage_reads, " \
+                            "common/stages.inc)");                       \
+              return bits;                                               \
+            }()},
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
 constexpr StageSpec kStages[] = {
@@ -31,7 +40,7 @@ struct Step {
 };
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
 #define VOXGI_EFFECT(owner, effect, meaning)
-#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STAGE(owner, stage, reads, summary)
 #define VOXGI_STEP(technique, owner, stage) Step{#technique, #owner, #stage},
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
 constexpr Step kSteps[] = {
@@ -40,7 +49,7 @@ constexpr Step kSteps[] = {
 
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
 #define VOXGI_EFFECT(owner, effect, meaning)
-#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STAGE(owner, stage, reads, summary)
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning) \
   BufferSpec{BufferId::owner##_##stage##_##buffer,                                 \

@@ -30,7 +30,7 @@ const char* bufferShapeName(BufferShape shape);  // as common/stages.inc spells 
 // An effect of the plan (common/effect_plan.h) a buffer may depend on; `always` for none.
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
 #define VOXGI_EFFECT(owner, effect, meaning) effect,
-#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STAGE(owner, stage, reads, summary)
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
 enum class Effect : uint8_t {
@@ -41,7 +41,7 @@ enum class Effect : uint8_t {
 // Every declared stage: StageId::<owner>_<stage>, in declaration order.
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
 #define VOXGI_EFFECT(owner, effect, meaning)
-#define VOXGI_STAGE(owner, stage, summary) owner##_##stage,
+#define VOXGI_STAGE(owner, stage, reads, summary) owner##_##stage,
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
 enum class StageId : uint16_t {
@@ -51,13 +51,32 @@ enum class StageId : uint16_t {
 // Every declared buffer: BufferId::<owner>_<stage>_<buffer>, in declaration order.
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
 #define VOXGI_EFFECT(owner, effect, meaning)
-#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STAGE(owner, stage, reads, summary)
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning) \
   owner##_##stage##_##buffer,
 enum class BufferId : uint16_t {
 #include "common/stages.inc"
 };
+
+// What a stage reads besides the settings, the grid, the materials and the textures (which stay
+// fixed through a sequence), declared with it: VOXGI_STAGE's `reads` (common/stages.inc), as
+// `geometry | lights | buffers`. The planner in time (common/frame_plan.h) reruns a stage in a
+// frame where one of them changed.
+namespace stage_reads {
+enum Input : unsigned {
+  geometry = 1,  // mesh positions, point clouds
+  // the scene's lights, and a mesh's emitters where they light as area lights (emitters.mode), so
+  // a stage that reads lights reads the geometry too
+  lights = 2,
+  camera = 4,
+  buffers = 8,  // buffers of the stages before it
+  // its own state from the frame before (FrameHistory), where its plan says it carries one
+  // (EffectPlan::carries)
+  history = 16,
+};
+constexpr unsigned kAll = geometry | lights | camera | buffers | history;
+}  // namespace stage_reads
 
 struct EffectSpec {
   Effect effect;
@@ -69,6 +88,7 @@ struct StageSpec {
   std::string_view owner;  // the technique, or "common" for a stage several techniques run
   std::string_view name;
   std::string_view summary;
+  unsigned reads;  // stage_reads bits
   bool shared() const { return owner == "common"; }
   // How commands and reports name it: "voxelize" for a shared stage, "vct/trace_cones" otherwise.
   std::string qualifiedName() const;

@@ -19,7 +19,7 @@ std::span<const Technique> techniques() {
     out.back().defaults = &v.defaults;                                                            \
   }
 #define VOXGI_EFFECT(owner, effect, meaning)
-#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STAGE(owner, stage, reads, summary)
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
 #include "common/stages.inc"

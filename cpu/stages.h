@@ -10,7 +10,7 @@ namespace voxgi::cpu {
 
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
 #define VOXGI_EFFECT(owner, effect, meaning)
-#define VOXGI_STAGE(owner, stage, summary)                 \
+#define VOXGI_STAGE(owner, stage, reads, summary)          \
   namespace owner {                                        \
   void stage(const StageContext& ctx, BufferSet& buffers); \
   }

@@ -23,7 +23,7 @@ constexpr bool everyBufferHasItsComparison() {
     size_t n = 0;
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
 #define VOXGI_EFFECT(owner, effect, meaning)
-#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STAGE(owner, stage, reads, summary)
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning) ++n;
 #include "common/stages.inc"
@@ -42,7 +42,7 @@ static_assert(everyBufferHasItsComparison(),
 constexpr StageId kBufferStages[] = {
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
 #define VOXGI_EFFECT(owner, effect, meaning)
-#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STAGE(owner, stage, reads, summary)
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning) \
   StageId::owner##_##stage,
@@ -53,7 +53,7 @@ constexpr StageId kBufferStages[] = {
 constexpr ScalarType kBufferTypes[] = {
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
 #define VOXGI_EFFECT(owner, effect, meaning)
-#define VOXGI_STAGE(owner, stage, summary)
+#define VOXGI_STAGE(owner, stage, reads, summary)
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning) ScalarType::type,
 #include "common/stages.inc"

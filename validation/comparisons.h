@@ -14,7 +14,8 @@ enum class Metric { exact, max_ulp, max_abs, max_rel };
 
 // Which elements outside the tolerance are ties, a documented near-boundary disagreement that
 // passes (validation/diff.h's classifiers): none; within rounding of a voxel boundary
-// (voxelize); on a triangle edge of the image's pixels (gbuffer) or of the maps' texels (rsm).
+// (voxelize); on a triangle edge of the image's pixels (gbuffer) or of the maps' texels (a stage
+// with a `primitive_id` buffer of maps, lpv's rsm).
 // Every buffer of a stage has the same rule: an element is classified once for all of them.
 enum class Ties { none, voxel_boundaries, pixel_edges, texel_edges };
 

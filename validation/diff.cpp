@@ -50,7 +50,7 @@ TieClassifier stageTies(const StageSpec& stage, const StageContext& ctx, const B
     case Ties::pixel_edges:
       return gbufferTies(ctx, cpu, gpu);
     case Ties::texel_edges:
-      return rsmTies(cpu, gpu);
+      return mapTies(stage, cpu, gpu);
   }
   return {};
 }

@@ -76,7 +76,9 @@ TieClassifier voxelizeTies(const StageContext& ctx);
 // the GPU's depth buffer cannot separate (validation/edge_ties.cpp). The buffers must outlive the
 // classifier.
 TieClassifier gbufferTies(const StageContext& ctx, const BufferSet& cpu, const BufferSet& gpu);
-// The rsm stage's: the same rule within each view's map (validation/edge_ties.cpp).
-TieClassifier rsmTies(const BufferSet& cpu, const BufferSet& gpu);
+// A stage that renders square maps (BufferShape::maps, lpv's rsm): the same rule within each map,
+// from the stage's own `primitive_id` buffer, which such a stage declares (std::logic_error
+// otherwise; validation/edge_ties.cpp).
+TieClassifier mapTies(const StageSpec& stage, const BufferSet& cpu, const BufferSet& gpu);
 
 }  // namespace voxgi::validation

@@ -5,6 +5,7 @@
 // its rim, or meets both surfaces at depths the GPU's depth buffer cannot tell apart.
 #include <cmath>
 #include <memory>
+#include <stdexcept>
 
 #include "common/camera_geometry.h"
 #include "validation/diff.h"
@@ -83,9 +84,14 @@ TieClassifier gbufferTies(const StageContext& ctx, const BufferSet& cpu, const B
   };
 }
 
-TieClassifier rsmTies(const BufferSet& cpu, const BufferSet& gpu) {
-  const Buffer& c = cpu.at(BufferId::lpv_rsm_primitive_id);
-  return edgeTies(c, gpu.at(BufferId::lpv_rsm_primitive_id), c.extent.x);
+TieClassifier mapTies(const StageSpec& stage, const BufferSet& cpu, const BufferSet& gpu) {
+  for (const BufferSpec* b : stageBuffers(stage))
+    if (b->name == "primitive_id") {
+      const Buffer& c = cpu.at(b->id);
+      return edgeTies(c, gpu.at(b->id), c.extent.x);  // square maps: a map is as high as wide
+    }
+  throw std::logic_error(stage.qualifiedName() +
+                         " compares texel_edges ties but declares no primitive_id buffer");
 }
 
 }  // namespace voxgi::validation

@@ -27,7 +27,7 @@ constexpr int kLeafValues = 10;
 // 8 a leaf tile; what pyramid level 0 holds.
 using LeafRadiance = std::vector<glm::vec4>;
 
-// The node levels' six faces (+x -x +y -y +z -z as cone travel directions, mip_kernel.h): levels[l]
+// The node levels' six faces (+x -x +y -y +z -z as cone travel directions, cone/mip.h): levels[l]
 // for l = 1 .. depth-1 holds 8 nodes x 6 faces per node tile of the level, in tile order.
 struct NodeLevels {
   std::vector<std::vector<glm::vec4>> levels;

@@ -66,6 +66,7 @@ EffectPlan planEffects(const Scene& scene, const Settings& settings) {
                  : "")
          << "; the last frame's gathered light as leaf bricks";
   p.lightStage(StageId::svo_propagate, true, frames.str());
+  p.carry(StageId::svo_propagate, carriesLight(settings));
   // Shading reads the gathered light from its bricks; the per-leaf light is compared.
   p.effect("per-leaf direct and gathered light", Effect::leaf_light, settings.inspect || p.full,
            settings.inspect ? "voxgi diff and dump compare the backends' injection and gather"

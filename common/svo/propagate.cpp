@@ -5,7 +5,7 @@
 #include "common/svo/tree_depth.h"
 #include "shaders/shared/half_float.h"
 #include "shaders/shared/svo/svo_layout.h"
-#include "shaders/shared/vct/bounce_kernel.h"
+#include "shaders/shared/cone/gather.h"
 
 namespace voxgi::svo {
 namespace {
@@ -46,7 +46,7 @@ bool carriesLight(const Settings& settings) {
 }
 
 std::optional<CarriedLight> carriedIn(const StageContext& ctx) {
-  if (ctx.history == nullptr || !carriesLight(ctx.settings)) return std::nullopt;
+  if (ctx.history == nullptr || !ctx.plan.carries(StageId::svo_propagate)) return std::nullopt;
   const auto it = ctx.history->carried.find(StageId::svo_propagate);
   // Keys of another depth name other leaves (a sequence keeps its grid, but the runner does not
   // require it).
@@ -79,7 +79,7 @@ LeafRadiance carriedSource(const CarriedLight& before, const Words& leafTiles, c
 
 void carryOut(const StageContext& ctx, const Words& leafTiles,
               std::vector<glm::vec3> gatheredStraight) {
-  if (ctx.history == nullptr || !carriesLight(ctx.settings)) return;
+  if (ctx.history == nullptr || !ctx.plan.carries(StageId::svo_propagate)) return;
   std::vector<uint32_t> words =
       pack(treeDepth(ctx.scene), {tileKeys(leafTiles), std::move(gatheredStraight)});
   std::vector<uint32_t>& kept = ctx.history->carried[StageId::svo_propagate];

@@ -35,7 +35,7 @@ bool carriesLight(const Settings& settings);
 std::optional<CarriedLight> carriedIn(const StageContext& ctx);
 
 // The first gather's source under `before`: per real leaf, its direct light plus its albedo times
-// the light carried by the leaf of the same key (bounce_kernel.h's addReflected, as a gather
+// the light carried by the leaf of the same key (gather.h's addReflected, as a gather
 // writes it); a leaf the frame before did not have starts from its direct light. `leafTiles` is
 // build's leaf_tiles buffer.
 LeafRadiance carriedSource(const CarriedLight& before, const Words& leafTiles, const Leaves& leaves,

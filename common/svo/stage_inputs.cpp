@@ -179,8 +179,8 @@ ConeTraceSetup treeConeTrace(const StageContext& ctx, int depth) {
   return s;
 }
 
-ConeTraceSetup treeBounce(const StageContext& ctx, int depth) {
-  ConeTraceSetup s = prepareBounce(ctx);
+ConeTraceSetup treeGather(const StageContext& ctx, int depth) {
+  ConeTraceSetup s = prepareGather(ctx);
   treeParams(s.params, depth);
   return s;
 }

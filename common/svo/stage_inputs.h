@@ -10,8 +10,8 @@
 #include "common/stage.h"
 #include "common/svo/canonical.h"
 #include "common/svo/light_types.h"
-#include "common/vct/bounce.h"
-#include "common/vct/light_voxels.h"
+#include "common/cone/cone_trace.h"
+#include "common/cone/voxel_light.h"
 
 namespace voxgi::svo {
 
@@ -46,10 +46,10 @@ NodeLevels nodeLevels(const Buffer& faces, const Words& tiles, int depth);
 // svo.first_step as the light functions take it.
 FirstStep firstStep(const Settings& settings);
 
-// The cone parameters of voxel cone tracing (common/vct/trace_cones.h) for a tree of `depth`:
+// The cone parameters of voxel cone tracing (common/cone/cone_trace.h) for a tree of `depth`:
 // the pyramid's top is the root tile's level (depth - 1), and it is six-faced. Shading traces no
 // diffuse cones: the leaves hold the diffuse light.
 ConeTraceSetup treeConeTrace(const StageContext& ctx, int depth);
-ConeTraceSetup treeBounce(const StageContext& ctx, int depth);
+ConeTraceSetup treeGather(const StageContext& ctx, int depth);
 
 }  // namespace voxgi::svo

@@ -3,7 +3,7 @@
 
 #include "common/lights.h"
 #include "common/technique.h"
-#include "common/vct/cone_sets.h"
+#include "common/cone/cone_sets.h"
 
 namespace voxgi::vct {
 namespace {

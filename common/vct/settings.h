@@ -7,7 +7,7 @@ namespace voxgi {
 enum class LightAttenuation { cosine, normal_weighted };  // [Villegas 2017, §2.1]
 enum class VoxelShadow { none, hard, soft };              // [Villegas 2017, §2.2, §2.2.1]
 enum class MipMode { isotropic, anisotropic };            // [Villegas 2017, §3]
-enum class ConeSet { equal7, villegas6, kahl5, kahl9 };   // common/vct/cone_sets.cpp
+enum class ConeSet { equal7, villegas6, kahl5, kahl9 };   // common/cone/cone_sets.cpp
 enum class DiffuseCones { weighted, first_hit };          // first_hit: [Kahl 2019, §5.4.4]
 enum class ShadowFalloff { plain, kahl2019 };    // kahl2019: [Kahl 2019, §5.4.4] smoothstep/sqrt
 enum class SpecularBrdf { phong, light_angle };  // light_angle: [Kahl 2019, eq. 5.6]

@@ -10,7 +10,7 @@
 #include "common/lpv/sh_buffers.h"
 #include "common/parallel.h"
 #include "cpu/stages.h"
-#include "shaders/shared/vct/compose_kernel.h"
+#include "shaders/shared/compose.h"
 #include "shaders/shared/lpv/shade_kernel.h"
 
 namespace voxgi::cpu {

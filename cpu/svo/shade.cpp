@@ -1,8 +1,8 @@
 // CPU shade stage: per pixel, trace_cones' direct light with a shadow cone per light and the
 // specular cone, read through the tree's bricks (no diffuse cones: the leaves hold the diffuse
 // light), plus the leaves' gathered light through their bricks (shaders/shared/svo/shade_kernel.h),
-// composed as the dense technique composes (compose_kernel.h). The twin of shaders/svo/shade.comp.
-// A tile's cones march together in SIMD lanes (cpu/vct/tile_tracer.h), as trace_cones' do: the
+// composed as the dense technique composes (compose.h). The twin of shaders/svo/shade.comp.
+// A tile's cones march together in SIMD lanes (cpu/cone/tile_tracer.h), as trace_cones' do: the
 // numbers tracePixel gives.
 #include <tbb/blocked_range2d.h>
 
@@ -11,11 +11,11 @@
 #include "common/svo/stage_inputs.h"
 #include "common/svo/tree_depth.h"
 #include "cpu/stages.h"
-#include "cpu/svo/leaf_light.h"
-#include "cpu/vct/tile_tracer.h"
-#include "shaders/shared/vct/compose_kernel.h"
+#include "cpu/svo/svo_volumes.h"
+#include "cpu/cone/tile_tracer.h"
+#include "shaders/shared/compose.h"
 #include "shaders/shared/svo/shade_kernel.h"
-#include "shaders/shared/vct/trace_cones_kernel.h"
+#include "shaders/shared/cone/pixel_light.h"
 
 namespace voxgi::cpu {
 
@@ -28,7 +28,7 @@ void svo::shade(const StageContext& ctx, BufferSet& buffers) {
   const LeafRadiance radiance = vec4Values(buffers.at(BufferId::svo_propagate_radiance));
   const NodeLevels mips = nodeLevels(buffers.at(BufferId::svo_mip_node_faces), o.tiles, depth);
   const Words bricks = floatWords(buffers.at(BufferId::svo_propagate_gathered_bricks));
-  // The cones' trilinear cells from bricks (cpu/svo/leaf_light.h), one tile lookup each.
+  // The cones' trilinear cells from bricks (cpu/svo/svo_volumes.h), one tile lookup each.
   const TreeBricks cells = treeBricks(o, radiance, mips);
   const ConeTraceSetup trace = treeConeTrace(ctx, depth);
   const bool tricubic = ctx.settings.svo.shadeFilter == SvoShadeFilter::tricubic;

@@ -1,16 +1,16 @@
-// CPU bounce stage: the shared kernel (shaders/shared/vct/bounce_kernel.h) per voxel, its cones
-// marched in lanes (cpu/vct/gather_lanes.h), then the pyramid again, bounce.count times. Each voxel
-// is written by one task, so any thread count gives the same bits.
+// CPU bounce stage: the shared kernel (shaders/shared/cone/gather.h) per voxel, its cones
+// marched in lanes (cpu/cone/gather_lanes.h), then the pyramid again, bounce.count times. Each
+// voxel is written by one task, so any thread count gives the same bits.
 #include <tbb/blocked_range.h>
 
 #include "common/parallel.h"
-#include "common/vct/bounce.h"
+#include "common/cone/cone_trace.h"
 #include "common/vct/radiance_buffers.h"
-#include "cpu/vct/cone_volumes.h"
-#include "cpu/vct/gather_lanes.h"
+#include "cpu/cone/cone_volumes.h"
+#include "cpu/cone/gather_lanes.h"
 #include "cpu/vct/pyramid.h"
 #include "cpu/stages.h"
-#include "shaders/shared/vct/bounce_kernel.h"
+#include "shaders/shared/cone/gather.h"
 
 namespace voxgi::cpu {
 namespace {
@@ -43,7 +43,7 @@ struct BounceVolumes {
 void vct::bounce(const StageContext& ctx, BufferSet& buffers) {
   checkStageMemory(ctx, StageId::vct_bounce, 2.0);  // the new bounce next to the previous one
   const int n = ctx.scene.grid.resolution;
-  const ConeTraceSetup setup = prepareBounce(ctx);
+  const ConeTraceSetup setup = prepareGather(ctx);
   const MipMode mode = ctx.settings.vct.mip;
   const RadianceBuffers first = directRadiance(mode);
   const Buffer& direct = buffers.at(first.radiance);

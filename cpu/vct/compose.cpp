@@ -1,4 +1,4 @@
-// CPU compose stage: the shared kernel (shaders/shared/vct/compose_kernel.h) per pixel.
+// CPU compose stage: the shared kernel (shaders/shared/compose.h) per pixel.
 #include <optional>
 
 #include <tbb/blocked_range.h>
@@ -6,7 +6,7 @@
 #include "common/parallel.h"
 #include "common/technique.h"
 #include "cpu/stages.h"
-#include "shaders/shared/vct/compose_kernel.h"
+#include "shaders/shared/compose.h"
 
 namespace voxgi::cpu {
 void vct::compose(const StageContext& ctx, BufferSet& buffers) {

@@ -1,5 +1,5 @@
-// CPU light_voxels stage: the shared kernel (shaders/shared/vct/light_voxels_kernel.h) per voxel,
-// a row of voxels at a time with their visibility rays in SIMD lanes (light_voxel_lanes.h). Each
+// CPU light_voxels stage: the shared kernel (shaders/shared/cone/voxel_light.h) per voxel,
+// a row of voxels at a time with their visibility rays in SIMD lanes (voxel_light_lanes.h). Each
 // voxel is written by exactly one task, so the result does not depend on the thread count.
 #include <bit>
 
@@ -8,8 +8,8 @@
 #include "common/parallel.h"
 #include "common/vct/light_voxels.h"
 #include "cpu/stages.h"
-#include "cpu/vct/light_voxel_lanes.h"
-#include "shaders/shared/svo/morton.h"
+#include "cpu/cone/voxel_light_lanes.h"
+#include "shaders/shared/morton.h"
 
 namespace voxgi::cpu {
 namespace {

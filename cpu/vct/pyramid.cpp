@@ -7,7 +7,7 @@
 #include <tbb/blocked_range.h>
 
 #include "common/mips.h"
-#include "shaders/shared/vct/mip_kernel.h"
+#include "shaders/shared/cone/mip.h"
 
 namespace voxgi::cpu {
 namespace {

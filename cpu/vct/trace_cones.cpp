@@ -1,5 +1,5 @@
-// CPU trace_cones stage: the shared kernel's phases (shaders/shared/vct/trace_cones_kernel.h)
-// per tile, with the cones of the tile's pixels marched in SIMD lanes (cpu/vct/tile_tracer.h):
+// CPU trace_cones stage: the shared kernel's phases (shaders/shared/cone/pixel_light.h)
+// per tile, with the cones of the tile's pixels marched in SIMD lanes (cpu/cone/tile_tracer.h):
 // the same numbers tracePixel gives, faster. Each pixel is written by one task, so the image does
 // not depend on the thread count.
 #include <optional>
@@ -8,10 +8,10 @@
 #include <tbb/blocked_range2d.h>
 
 #include "common/parallel.h"
-#include "common/vct/trace_cones.h"
+#include "common/cone/cone_trace.h"
 #include "common/vct/radiance_buffers.h"
-#include "cpu/vct/cone_volumes.h"
-#include "cpu/vct/tile_tracer.h"
+#include "cpu/cone/cone_volumes.h"
+#include "cpu/cone/tile_tracer.h"
 #include "cpu/stages.h"
 #include "shaders/shared/vct/diffuse_upsample.h"
 

@@ -1,5 +1,5 @@
 // GPU shade stage: shaders/svo/shade.comp lights the gbuffer's pixels from the tree, its cones
-// reading every level as bricks (gpu/svo/leaf_light.h, buildBricks); the light terms and the
+// reading every level as bricks (gpu/svo/bricks.h, completeBricks); the light terms and the
 // colour are read back.
 #include <bit>
 
@@ -8,10 +8,10 @@
 #include "common/svo/tree_depth.h"
 #include "gpu/program.h"
 #include "gpu/stages.h"
-#include "gpu/svo/leaf_light.h"
+#include "gpu/svo/bricks.h"
 #include "gpu/volumes.h"
 #include "shaders/shared/svo/svo_layout.h"
-#include "shaders/shared/vct/mip_kernel.h"
+#include "shaders/shared/cone/mip.h"
 
 namespace voxgi::gpu {
 
@@ -46,11 +46,11 @@ void svo::shade(GlContext& context, const StageContext& ctx, BufferSet& buffers)
   const Buffer& tileWords = buffers.at(BufferId::svo_build_tiles);
   GlBuffer leafTiles(gl, uploadWords(gl, leafTileWords));
   GlBuffer tiles(gl, uploadWords(gl, tileWords));
-  GlBuffer leafBricks(gl, svo::buildBricks(gl, nodes.get(), leafTiles.get(), source.get(),
-                                           leafTileWords.words.size() / shared::kTileWords, 1));
+  GlBuffer leafBricks(gl, svo::completeBricks(gl, nodes.get(), leafTiles.get(), source.get(),
+                                              leafTileWords.words.size() / shared::kTileWords, 1));
   GlBuffer nodeBricks(
-      gl, svo::buildBricks(gl, nodes.get(), tiles.get(), faces.get(),
-                           tileWords.words.size() / shared::kTileWords, shared::kFaces));
+      gl, svo::completeBricks(gl, nodes.get(), tiles.get(), faces.get(),
+                              tileWords.words.size() / shared::kTileWords, shared::kFaces));
   GlBuffer lights(gl, createBlock(gl, trace.params, trace.lights));
   GlBuffer objects(
       gl, createBuffer(gl, trace.objects.size() * sizeof(trace.objects[0]), trace.objects.data()));

@@ -1,7 +1,7 @@
 // GPU bounce stage: shaders/vct/bounce.comp per voxel, then the pyramid again with mip.comp
 // (gpu/vct/pyramid.cpp), bounce.count times, all on the GPU; the last radiance and pyramid are read
 // back.
-#include "common/vct/bounce.h"
+#include "common/cone/cone_trace.h"
 #include "common/mips.h"
 #include "common/vct/radiance_buffers.h"
 #include "gpu/program.h"
@@ -17,7 +17,7 @@ void vct::bounce(GlContext& context, const StageContext& ctx, BufferSet& buffers
   const MipMode mode = ctx.settings.vct.mip;
   const int faces = pyramidFaces(mode);
   const RadianceBuffers first = directRadiance(mode);
-  const ConeTraceSetup setup = prepareBounce(ctx);
+  const ConeTraceSetup setup = prepareGather(ctx);
   const bool levels = mipLevelCount(n) > 0;  // a 1^3 grid has no pyramid
 
   GlBuffer coneBlock(gl, createBlock(gl, setup.params, setup.cones));

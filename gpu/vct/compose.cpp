@@ -7,7 +7,7 @@
 #include "gpu/program.h"
 #include "gpu/stages.h"
 #include "gpu/volumes.h"
-#include "shaders/shared/vct/compose_kernel.h"
+#include "shaders/shared/compose.h"
 
 namespace voxgi::gpu {
 

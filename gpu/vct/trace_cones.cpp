@@ -3,7 +3,7 @@
 // cones.diffuse_scale > 1, trace_cones_samples.comp first traces each block's diffuse sample.
 #include <vector>
 
-#include "common/vct/trace_cones.h"
+#include "common/cone/cone_trace.h"
 #include "common/mips.h"
 #include "common/vct/radiance_buffers.h"
 #include "gpu/program.h"

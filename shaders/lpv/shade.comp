@@ -1,11 +1,11 @@
 #version 450 core
 // shade: per pixel, the accumulated volume's irradiance and the analytic lights' direct light
 // with the RSM depth as shadow map (shaders/shared/lpv/shade_kernel.h), and the final colour
-// (shaders/shared/vct/compose_kernel.h).
+// (shaders/shared/compose.h).
 layout(local_size_x = 64) in;
 #include "shared/lpv/lpv_types.h"
 #include "shared/lighting.h"
-#include "shared/vct/compose_kernel.h"
+#include "shared/compose.h"
 
 uniform int uPixels;
 uniform vec3 uBackground;

@@ -1,5 +1,5 @@
 // Trilinear filtering of a voxel level, shared by the dense pyramid's cone sampler
-// (vct/cone_kernel.h) and the sparse voxel octree's brick sampler (svo/svo_sample.h): one cell,
+// (cone/march.h) and the sparse voxel octree's brick sampler (svo/svo_sample.h): one cell,
 // one order of lerps, so both filter the same eight values to the same bits. Included by C++ and
 // GLSL.
 #ifndef VOXGI_TRILINEAR_H

@@ -1,5 +1,5 @@
 #version 450 core
-// One node level of the octree's six-face mipmap (shaders/shared/vct/mip_kernel.h): each node's
+// One node level of the octree's six-face mipmap (shaders/shared/cone/mip.h): each node's
 // faces from its child tile, the leaves' radiance (optionally weighted per face by their normals,
 // shaders/shared/svo/mip_kernel.h) or the level below's faces, each face rounded to halves as the
 // pool stores it. One invocation per node.
@@ -20,7 +20,7 @@ vec4 childAt(int face, ivec3 c) {
   return uNdfWeights ? ndfWeighted(v, leafNormal(child), face) : v;
 }
 
-#include "shared/vct/mip_kernel.h"
+#include "shared/cone/mip.h"
 
 void main() {
   uint i = gl_GlobalInvocationID.x + gl_NumWorkGroups.x * 64u * gl_GlobalInvocationID.y;

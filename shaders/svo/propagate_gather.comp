@@ -1,11 +1,11 @@
 #version 450 core
-// One gather at every leaf that holds samples (shaders/shared/vct/bounce_kernel.h through the
+// One gather at every leaf that holds samples (shaders/shared/cone/gather.h through the
 // octree): the diffuse cones over the mipmap of the previous frame's radiance, giving the next
 // frame's radiance and the gathered E / pi with the opacity (straight: the host premultiplies it,
 // as the CPU does, and keeps it for propagate.carry). One invocation per leaf slot. The cones read
 // the levels through their bricks.
 layout(local_size_x = 64) in;
-#include "shared/vct/cone_types.h"
+#include "shared/cone/cone_types.h"
 #include "svo_volumes.glsl"
 
 // The light as halves (shared/half_float.h, packHalves), as the CPU's pools round it.
@@ -20,7 +20,7 @@ vec4 directAt(ivec3 v) {
 }
 ConeData coneAt(int i);  // defined below, after the cone block
 
-// The source's levels as bricks (gpu/svo/leaf_light.cpp, buildBricks): the cones read a trilinear
+// The source's levels as bricks (gpu/svo/bricks.cpp, completeBricks): the cones read a trilinear
 // cell with one walk and eight texels, not a walk per texel.
 layout(std430, binding = 8) readonly buffer LeafBricks { uvec2 leafBricks[]; };  // 27 a leaf tile
 layout(std430, binding = 9) readonly buffer NodeBricks { uvec2 nodeBricks[]; };  // 27 x 6 a tile
@@ -35,7 +35,7 @@ vec4 filterBrickCell(int level, int face, TrilinearCell c) {
 }
 #define VOXGI_BRICK_CELLS
 
-#include "shared/vct/bounce_kernel.h"
+#include "shared/cone/gather.h"
 
 layout(std430, binding = 5) readonly buffer Cones {
   ConeTraceParams params;

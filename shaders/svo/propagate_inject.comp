@@ -1,5 +1,5 @@
 #version 450 core
-// The direct light of every leaf that holds samples (shaders/shared/vct/light_voxels_kernel.h
+// The direct light of every leaf that holds samples (shaders/shared/cone/voxel_light.h
 // through the octree, shaders/svo/svo_volumes.glsl): emission plus the analytic lights with voxel
 // visibility, premultiplied by the clamped opacity. One invocation per leaf slot.
 layout(local_size_x = 64) in;
@@ -8,7 +8,7 @@ layout(local_size_x = 64) in;
 
 LightData lightAt(int i);  // defined below, after the light block
 
-#include "shared/vct/light_voxels_kernel.h"
+#include "shared/cone/voxel_light.h"
 
 layout(std430, binding = 5) readonly buffer Lights {
   LightVoxelsParams params;

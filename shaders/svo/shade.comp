@@ -1,12 +1,12 @@
 #version 450 core
 // shade: per pixel, the shared cone tracer's direct light (shadow cones) and specular cone
-// through the octree's bricks (shaders/shared/vct/trace_cones_kernel.h, no diffuse cones), the
+// through the octree's bricks (shaders/shared/cone/pixel_light.h, no diffuse cones), the
 // leaves' gathered light through their bricks (shaders/shared/svo/shade_kernel.h), composed as
-// the dense technique composes (shaders/shared/vct/compose_kernel.h). The twin of
+// the dense technique composes (shaders/shared/compose.h). The twin of
 // cpu/svo/shade.cpp.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/lighting.h"
-#include "shared/vct/cone_types.h"
+#include "shared/cone/cone_types.h"
 #include "svo_tree.glsl"
 #define SVO_SOURCE_BINDING 1
 #define SVO_FACES_BINDING 2
@@ -14,7 +14,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 // The light as halves (shared/half_float.h, packHalves), as the tree's buffers hold it.
 layout(std430, binding = 3) readonly buffer Bricks { uvec2 bricks[]; };  // 27 a leaf tile
-// The cones' levels as bricks (gpu/svo/leaf_light.cpp, buildBricks), as propagate_gather.comp
+// The cones' levels as bricks (gpu/svo/bricks.cpp, completeBricks), as propagate_gather.comp
 // reads them: one walk and eight texels a trilinear cell.
 layout(std430, binding = 8) readonly buffer LeafBricks { uvec2 leafBricks[]; };  // 27 a leaf tile
 layout(std430, binding = 9) readonly buffer NodeBricks { uvec2 nodeBricks[]; };  // 27 x 6 a tile
@@ -36,9 +36,9 @@ ConeData coneAt(int i) {  // no diffuse cones here
   return ConeData(vec3(0.0f), 0.0f, 0.0f, 0.0f, 0.0f, 0.0f);
 }
 
-#include "shared/vct/trace_cones_kernel.h"
+#include "shared/cone/pixel_light.h"
 #include "shared/svo/shade_kernel.h"
-#include "shared/vct/compose_kernel.h"
+#include "shared/compose.h"
 
 layout(std430, binding = 4) readonly buffer Lights {
   ConeTraceParams params;

@@ -1,4 +1,4 @@
-// What the shared kernels read in the octree on the GPU (the CPU's cpu/svo/leaf_light.h
+// What the shared kernels read in the octree on the GPU (the CPU's cpu/svo/svo_volumes.h
 // SvoVolumes): the tree's node words and leaf tiles, the leaves' attributes, and the radiance of
 // pyramid level 0 (the leaves) and of the node levels, each found by walking the tree.
 #include "svo_tree.glsl"

@@ -1,7 +1,7 @@
 #version 450 core
-// compose: the shared final-colour kernel (shaders/shared/vct/compose_kernel.h) per pixel.
+// compose: the shared final-colour kernel (shaders/shared/compose.h) per pixel.
 layout(local_size_x = 64) in;
-#include "shared/vct/compose_kernel.h"
+#include "shared/compose.h"
 
 layout(location = 0) uniform int uPixels;
 layout(location = 1) uniform vec3 uBackground;

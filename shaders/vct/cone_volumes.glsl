@@ -13,5 +13,5 @@ vec4 pyramidAt(int level, int face, ivec3 v) {
 }
 
 // The GPU reads empty cells through its texture cache; the CPU skips them with an occupancy
-// bitmask (cpu/vct/cell_occupancy.h), which gives the same +0.
+// bitmask (cpu/cone/cell_occupancy.h), which gives the same +0.
 bool cellEmpty(int level, ivec3 i) { return false; }

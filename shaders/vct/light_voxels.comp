@@ -1,5 +1,5 @@
 #version 450 core
-// light_voxels: direct light per voxel with the shared kernel (shaders/shared/vct/light_voxels_kernel.h).
+// light_voxels: direct light per voxel with the shared kernel (shaders/shared/cone/voxel_light.h).
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 #include "shared/lighting.h"
 
@@ -16,7 +16,7 @@ vec3 normalAt(ivec3 v) { return texelFetch(uNormal, v, 0).rgb; }
 vec3 emissionAt(ivec3 v) { return texelFetch(uEmission, v, 0).rgb; }
 LightData lightAt(int i);  // defined below, after the light block
 
-#include "shared/vct/light_voxels_kernel.h"
+#include "shared/cone/voxel_light.h"
 
 layout(std430, binding = 0) readonly buffer Lights {
   LightVoxelsParams params;

@@ -1,5 +1,5 @@
 #version 450 core
-// mip: one pyramid level from the level below with the shared kernel (shaders/shared/vct/mip_kernel.h).
+// mip: one pyramid level from the level below with the shared kernel (shaders/shared/cone/mip.h).
 // One invocation per voxel of every face; faces lie side by side along x.
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
 #include "shared/glsl_cpp.h"
@@ -14,7 +14,7 @@ vec4 childAt(int face, ivec3 c) {
   return imageLoad(uSource, uFromBase ? c : ivec3(c.x + face * 2 * uSize, c.y, c.z));
 }
 
-#include "shared/vct/mip_kernel.h"
+#include "shared/cone/mip.h"
 
 void main() {
   ivec3 t = ivec3(gl_GlobalInvocationID);

@@ -1,10 +1,10 @@
 #version 450 core
-// trace_cones: the shared per-pixel cone tracer (shaders/shared/vct/trace_cones_kernel.h) on the
+// trace_cones: the shared per-pixel cone tracer (shaders/shared/cone/pixel_light.h) on the
 // gbuffer; at cones.diffuse_scale > 1 a pixel's diffuse light is upsampled from the blocks'
 // samples that trace_cones_samples.comp traced (shaders/shared/vct/diffuse_upsample.h).
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/lighting.h"
-#include "shared/vct/cone_types.h"
+#include "shared/cone/cone_types.h"
 #include "cone_volumes.glsl"
 
 layout(location = 1) uniform int uWidth;

@@ -4,7 +4,7 @@
 // trace_cones.comp to upsample.
 layout(local_size_x = 8, local_size_y = 8) in;
 #include "shared/lighting.h"
-#include "shared/vct/cone_types.h"
+#include "shared/cone/cone_types.h"
 #include "cone_volumes.glsl"
 
 layout(location = 1) uniform int uWidth;

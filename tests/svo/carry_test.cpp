@@ -9,7 +9,7 @@
 #include "cpu/backend.h"
 #include "shaders/shared/half_float.h"
 #include "shaders/shared/svo/svo_layout.h"
-#include "shaders/shared/vct/bounce_kernel.h"
+#include "shaders/shared/cone/gather.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

@@ -1,9 +1,9 @@
-// Light in the octree on the GPU (gpu/svo/leaf_light.h) against the CPU (cpu/svo/leaf_light.h) on
-// both GL platforms (the gather on EGL only), with the dense technique's registered tolerances for
-// the same kernels (validation/vct/comparisons.inc): injection as light_voxels (bit for bit on
-// llvmpipe), the six-face mipmap (plain and NDF-weighted) bit for bit, and one gather as bounce:
-// GLSL's division in normalising the leaf normal moves the cones by an ULP (on llvmpipe about one
-// value in 200 differs, by 3.5e-7 relative), so max_rel 1e-4.
+// Light in the octree on the GPU (gpu/svo/propagate.h, mip.h) against the CPU (cpu/svo/propagate.h,
+// mip.h) on both GL platforms (the gather on EGL only), with the dense technique's registered
+// tolerances for the same kernels (validation/vct/comparisons.inc): injection as light_voxels (bit
+// for bit on llvmpipe), the six-face mipmap (plain and NDF-weighted) bit for bit, and one gather as
+// bounce: GLSL's division in normalising the leaf normal moves the cones by an ULP (on llvmpipe
+// about one value in 200 differs, by 3.5e-7 relative), so max_rel 1e-4.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -15,10 +15,12 @@
 #include "common/scene/scene_load.h"
 #include "common/stage.h"
 #include "common/svo/samples.h"
-#include "common/vct/bounce.h"
-#include "common/vct/light_voxels.h"
-#include "cpu/svo/leaf_light.h"
-#include "gpu/svo/leaf_light.h"
+#include "common/cone/cone_trace.h"
+#include "common/cone/voxel_light.h"
+#include "cpu/svo/mip.h"
+#include "cpu/svo/propagate.h"
+#include "gpu/svo/mip.h"
+#include "gpu/svo/propagate.h"
 #include "tests/gl_contexts.h"
 #include "tests/test_scenes.h"
 
@@ -86,7 +88,7 @@ TEST_P(GpuSvoLight, InjectionMipAndGatherAgreeWithTheCpu) {
   // on EGL. Both platforms are llvmpipe here and run the same program; OSMesa's context is
   // checked by the injection and the mipmap above.
   if (GetParam() != gpu::GlPlatform::egl) return;
-  ConeTraceSetup bounce = prepareBounce(ctx);
+  ConeTraceSetup bounce = prepareGather(ctx);
   bounce.params.topLevel = kDepth - 1;
   cpu::svo::FrameOutputs cpuFrame, gpuFrame;
   const cpu::svo::LeafRadiance cpuNext =

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "cpu/svo/leaf_light.h"
+#include "cpu/svo/mip.h"
 #include "tests/svo/tree_samples.h"
 
 namespace voxgi::test {

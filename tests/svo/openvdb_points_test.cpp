@@ -15,7 +15,7 @@
 
 #include "common/svo/samples.h"
 #include "common/svo/stage_inputs.h"
-#include "cpu/svo/leaf_light.h"
+#include "cpu/svo/svo_volumes.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

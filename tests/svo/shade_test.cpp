@@ -5,7 +5,7 @@
 
 #include <bit>
 
-#include "cpu/svo/leaf_light.h"
+#include "cpu/svo/svo_volumes.h"
 #include "shaders/shared/svo/shade_kernel.h"
 #include "tests/svo/tree_samples.h"
 

@@ -4,9 +4,6 @@
 // (docs/stages/vct/bounce.md), so each bounce adds a little less than rho times the previous one.
 #include <gtest/gtest.h>
 
-#include "common/svo/stage_inputs.h"
-#include "cpu/svo/octree.h"
-#include "shaders/shared/svo/svo_layout.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {
@@ -72,44 +69,6 @@ TEST(Bounce, ZeroAlbedoLeavesTheRadianceUnchanged) {
   EXPECT_TRUE(sameWords(direct, vct_mip_radiance_mips6, bounced, vct_bounce_radiance_mips6));
   // The bounce's own buffers leave light_voxels' and mip's as they were.
   EXPECT_TRUE(sameWords(direct, bounced, vct_light_voxels_radiance));
-}
-
-// The same box through the octree (S14, S15): its walls sampled into points, the floor's middle
-// leaf after 0 to 3 progressive frames obeys the dense bounce's bounds. Measured: 0.78 of the
-// exact first bounce (the dense directional pyramid: 0.83), then 0.39 and 0.39 of the one before.
-TEST(Bounce, OctreeClosedBoxApproachesRadiosity) {
-  const float rho = 0.5f;
-  Scene scene = furnace(rho);
-  scene.camera.width = scene.camera.height = 16;
-  const Technique& svo = findTechnique("svo");
-  int depth = 0;
-  while ((1 << depth) < kResolution) ++depth;
-  float l[4];
-  for (int frames = 0; frames < 4; ++frames) {
-    const Settings settings =
-        resolveSettings(svo, {}, scene.file, "default",
-                        {"propagate.frames=" + std::to_string(frames), "emitters.mode=voxels"});
-    const BufferSet b = runCpuUntil(svo, scene, settings, "propagate");
-    const cpu::svo::Octree o = cpu::svo::octreeFromWords(svo::treeWords(b), depth);
-    const glm::uvec3 leaf(kResolution / 2, 2, kResolution / 2);
-    const uint32_t tile = o.findTile(depth, shared::mortonEncode(leaf >> 1u));
-    ASSERT_NE(tile, shared::kSvoNull);
-    // Radiance per unit of the leaf's opacity: sampling puts 4 points per leaf face on average,
-    // so a leaf's opacity varies about 1 with the points that fall in it.
-    const Buffer& r = b.at(BufferId::svo_propagate_radiance);
-    const size_t slot = tile * 8 + shared::localId(leaf);
-    l[frames] = r.get<float>(slot, 0) / r.get<float>(slot, 3);
-  }
-  EXPECT_NEAR(l[0], kEmission, 1e-3f);
-  const float first = l[1] - l[0], second = l[2] - l[1], third = l[3] - l[2];
-  EXPECT_GT(first, rho * kEmission * 0.75f);
-  EXPECT_LE(first, rho * kEmission * 1.001f);
-  EXPECT_GT(second, 0.0f);
-  EXPECT_LE(second, rho * first * 1.001f);
-  EXPECT_GT(third, 0.0f);
-  EXPECT_LE(third, rho * second * 1.001f);
-  std::printf("octree: L0 %.4f L1 %.4f L2 %.4f L3 %.4f (exact 1, 1.5, 1.75, 1.875)\n", l[0], l[1],
-              l[2], l[3]);
 }
 
 }  // namespace

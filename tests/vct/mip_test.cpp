@@ -4,7 +4,7 @@
 
 #include "common/mips.h"
 #include "cpu/stages.h"
-#include "shaders/shared/vct/mip_kernel.h"
+#include "shaders/shared/cone/mip.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

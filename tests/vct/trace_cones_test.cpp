@@ -1,4 +1,4 @@
-// Numerical tests of the cone tracer (shaders/shared/vct/trace_cones_kernel.h) against analytic
+// Numerical tests of the cone tracer (shaders/shared/cone/pixel_light.h) against analytic
 // answers: the white furnace, the form factor of an emitting square, thin-wall leaking, and
 // extremes of the parameters. Tolerances and measured figures are in
 // docs/stages/vct/trace_cones.md.
@@ -7,11 +7,11 @@
 
 #include <gtest/gtest.h>
 
-#include "common/vct/trace_cones.h"
+#include "common/cone/cone_trace.h"
 #include "common/mips.h"
 #include "common/vct/radiance_buffers.h"
-#include "cpu/vct/cone_volumes.h"
-#include "shaders/shared/vct/trace_cones_kernel.h"
+#include "cpu/cone/cone_volumes.h"
+#include "shaders/shared/cone/pixel_light.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

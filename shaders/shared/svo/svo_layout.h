@@ -16,7 +16,7 @@
 // node-tile bricks in the mipmap pools, by tile index.
 #ifndef VOXGI_SVO_LAYOUT_H
 #define VOXGI_SVO_LAYOUT_H
-#include "morton.h"
+#include "../morton.h"
 
 VOXGI_NAMESPACE_BEGIN
 

@@ -4,7 +4,7 @@
 // shaders/vct/trace_cones_samples.comp.
 #ifndef VOXGI_DIFFUSE_SAMPLES_H
 #define VOXGI_DIFFUSE_SAMPLES_H
-#include "trace_cones_kernel.h"
+#include "../cone/pixel_light.h"
 
 VOXGI_NAMESPACE_BEGIN
 
