@@ -13,7 +13,7 @@
 # header) is not checked.
 
 # The registries: the one place each list of techniques lives.
-set(VOXGI_INCLUDE_REGISTRIES common/stages.inc common/settings.h validation/comparisons.inc)
+set(VOXGI_INCLUDE_REGISTRIES common/stages.inc validation/comparisons.inc)
 
 # `out`: the technique or library folder `path` (relative to the source root) lies in, "" for
 # generic code.

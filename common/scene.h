@@ -1,5 +1,5 @@
 // The scene model every technique renders: triangle meshes and point clouds with materials, lights,
-// a camera, background radiance and the voxel grid. Loaded by common/scene/scene_load.cpp
+// a camera, background radiance and the voxel grid. Loaded by common/scene_io/scene_load.cpp
 // (docs/scene-format.md).
 #pragma once
 
@@ -53,7 +53,7 @@ struct Mesh {
 
 // A point cloud (docs/svo.md, "Point clouds"): world-space points with one material. Every point
 // has a unit normal and a disc radius (from the file, or estimated from its neighbours when the
-// scene asks for it: common/scene/point_neighbours.h); colours are optional.
+// scene asks for it: common/scene_io/point_neighbours.h); colours are optional.
 struct PointCloud {
   std::string name;  // the file it came from, for messages
   std::vector<glm::dvec3> positions;
@@ -108,8 +108,8 @@ struct Scene {
   // The file's "settings" as "key=value" (common/settings.h keys, already validated); applied
   // before a --preset and --set.
   std::vector<std::string> settings;
-  // Set when voxgi lit a bare file that has no light of its own (common/scene/default_lights.cpp),
-  // for `voxgi plan` and `render` to say so.
+  // Set when voxgi lit a bare file that has no light of its own
+  // (common/scene_io/default_lights.cpp), for `voxgi plan` and `render` to say so.
   bool defaultLights = false;
   // What moves, and how (docs/motion.md); empty for a still scene. sceneAt evaluates it.
   SceneMotion motion;

@@ -1,5 +1,6 @@
 // Every technique parameter a stage reads, with its default: the shared stages' here, each
-// technique's in its own section (Settings::vct: common/vct/settings.h). Keys, ranges and
+// technique's in its own section (Settings::vct: common/vct/settings.h), one per technique of
+// common/stages.inc. Keys, ranges and
 // meanings are tables (common/settings_table.h): the shared one in common/settings.cpp, each
 // technique's next to its settings; presets belong to a technique.
 #pragma once
@@ -7,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "common/lpv/settings.h"
-#include "common/svo/settings.h"
-#include "common/vct/settings.h"
+// Generated (cmake/VoxgiStages.cmake): each technique's common/<technique>/settings.h and
+// VOXGI_TECHNIQUE_SETTINGS.
+#include "common/technique_settings.h"
 
 namespace voxgi {
 
@@ -37,9 +38,11 @@ struct Settings {
   // Not a key: FrameRunner sets it for the frames of a sequence it does not run from scratch, and
   // planners then keep what the next frame's update in part starts from (voxelize's sums).
   bool sequence = false;
-  VctSettings vct;
-  LpvSettings lpv;
-  SvoSettings svo;
+  // One section per technique of common/stages.inc, Settings::<technique>, of the type its
+  // common/<technique>/settings.h declares (Settings::vct: VctSettings).
+#define VOXGI_SECTION(technique, type) type technique;
+  VOXGI_TECHNIQUE_SETTINGS(VOXGI_SECTION)
+#undef VOXGI_SECTION
 };
 
 const char* voxelizeModeName(VoxelizeMode mode);

@@ -18,17 +18,7 @@ constexpr EffectSpec kEffects[] = {
 
 #define VOXGI_TECHNIQUE(technique, image_stage, image, summary)
 #define VOXGI_EFFECT(owner, effect, meaning)
-// `reads` is an expression of stage_reads' names; one outside them, or none, stops the build here.
-#define VOXGI_STAGE(owner, stage, reads, summary)                        \
-  StageSpec{StageId::owner##_##stage, #owner, #stage, summary, [] {      \
-              using namespace stage_reads;                               \
-              constexpr unsigned bits = reads;                           \
-              static_assert(bits != 0 && (bits & ~kAll) == 0,            \
-                            "stage " #owner "/" #stage                   \
-                            " must declare what it reads (stage_reads, " \
-                            "common/stages.inc)");                       \
-              return bits;                                               \
-            }()},
+#define VOXGI_STAGE(owner, stage, reads, summary) VOXGI_STAGE_SPEC(owner, stage, reads, summary),
 #define VOXGI_STEP(technique, owner, stage)
 #define VOXGI_BUFFER(owner, stage, buffer, type, components, shape, need, meaning)
 constexpr StageSpec kStages[] = {

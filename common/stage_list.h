@@ -94,6 +94,21 @@ struct StageSpec {
   std::string qualifiedName() const;
 };
 
+// A stage's entry in the table, from its declaration (VOXGI_STAGE's arguments, in namespace voxgi):
+// `reads` is an expression of stage_reads' names, and one that reads nothing, or something else,
+// stops the build naming the stage (tests/build_guards/stage_without_reads.cpp).
+#define VOXGI_STAGE_SPEC(owner, stage, reads, summary)                               \
+  StageSpec {                                                                        \
+    StageId::owner##_##stage, #owner, #stage, summary, [] {                          \
+      using namespace stage_reads;                                                   \
+      constexpr unsigned bits = reads;                                               \
+      static_assert(bits != 0 && (bits & ~kAll) == 0,                                \
+                    "stage " #owner "/" #stage                                       \
+                    " must declare what it reads (stage_reads, common/stages.inc)"); \
+      return bits;                                                                   \
+    }()                                                                              \
+  }
+
 struct BufferSpec {
   BufferId id;
   StageId stage;

@@ -30,7 +30,7 @@ struct SurfaceSampling {
 // emitters as meshes beside the cloud),
 // each with the triangle's right-hand normal, its material's albedo (times its texture there) as
 // colour and a radius with
-// pi r^2 = twice the area per point (common/scene/point_neighbours.h's convention). Throws
+// pi r^2 = twice the area per point (common/scene_io/point_neighbours.h's convention). Throws
 // InputError naming the scene when it has no triangle with area to sample.
 PointCloud sampleSurfaces(const Scene& scene, const SurfaceSampling& sampling);
 

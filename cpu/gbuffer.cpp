@@ -5,7 +5,7 @@
 
 #include "common/parallel.h"
 #include "common/camera_geometry.h"
-#include "common/scene/ray_scene.h"
+#include "common/scene_io/ray_scene.h"
 #include "cpu/stages.h"
 #include "common/texture.h"
 #include "shaders/shared/surface_hit.h"

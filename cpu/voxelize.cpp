@@ -159,80 +159,104 @@ struct VoxelBuffers {
   Buffer weight, albedoSum, normalSum, emissionSum, opacity, albedo, normal, emission;
 };
 
-}  // namespace
+// One run of the stage, in its steps: the buffers (taken from the frame before for an update in
+// part, else fresh), the contributions accumulated (into the frame before's dense sums, or into
+// the blocks the surface reaches), the overflow check, and each voxel resolved from its sums.
+class Voxelization {
+ public:
+  explicit Voxelization(const StageContext& ctx)
+      : ctx_(ctx),
+        grid_(ctx.scene.grid),
+        n_(grid_.resolution),
+        antialiased_(ctx.settings.voxelizeMode == VoxelizeMode::antialiased),
+        emissive_(ctx.plan.on(Effect::emission)),  // emissionScale may be 0 under plan.mode=full
+        emitterMean_(ctx.settings.voxelizeEmission == VoxelizeEmission::emitters),
+        // The dense sums are outputs only where the plan keeps them (voxel_sums): compared,
+        // written, read by a later stage or updated in part in the next frame. Otherwise the sums
+        // live in BlockSums.
+        keepSums_(ctx.plan.on(Effect::voxel_sums)),
+        // The update starts from the frame before's dense sums, which the stash holds only when
+        // the plan kept them.
+        moved_(movedTriangles(ctx, emissive_)),
+        blocks_(n_, emissive_),
+        textures_{ctx.scene.textures} {}
 
-void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
-  const GridSpec& grid = ctx.scene.grid;
-  const int n = grid.resolution;
-  checkStageMemory(ctx, StageId::common_voxelize);
-  refuseRepeatedTriangles(ctx.triangles, n, ctx.settings.voxelizeMode == VoxelizeMode::antialiased,
-                          ctx.scene.file);
-  const bool antialiased = ctx.settings.voxelizeMode == VoxelizeMode::antialiased;
-  const bool emissive =
-      ctx.plan.on(Effect::emission);  // emissionScale may be 0 under plan.mode=full
-  const bool emitterMean = ctx.settings.voxelizeEmission == VoxelizeEmission::emitters;
-  // The dense sums are outputs only where the plan keeps them (voxel_sums): compared, written, read
-  // by a later stage or updated in part in the next frame. Otherwise the sums live in BlockSums.
-  const bool keepSums = ctx.plan.on(Effect::voxel_sums);
-  const glm::ivec3 extent(n);
-  // The update starts from the frame before's dense sums, which the stash holds only when the plan
-  // kept them.
-  const std::optional<MovedTriangles> moved = movedTriangles(ctx, emissive);
-  VoxelBuffers v;
-  if (moved) {
-    BufferSet& stash = ctx.previous->stash;
-    v = {stash.take(BufferId::common_voxelize_weight_sum),
-         stash.take(BufferId::common_voxelize_albedo_sum),
-         stash.take(BufferId::common_voxelize_normal_sum),
-         stash.take(BufferId::common_voxelize_emission_sum),
-         stash.take(BufferId::common_voxelize_opacity),
-         stash.take(BufferId::common_voxelize_albedo),
-         stash.take(BufferId::common_voxelize_normal),
-         stash.take(BufferId::common_voxelize_emission)};
-  } else {
-    const auto fresh = [&](BufferId id, bool needed) {
-      return needed ? Buffer(id, extent) : Buffer();
-    };
-    v = {fresh(BufferId::common_voxelize_weight_sum, keepSums),
-         fresh(BufferId::common_voxelize_albedo_sum, keepSums),
-         fresh(BufferId::common_voxelize_normal_sum, keepSums),
-         fresh(BufferId::common_voxelize_emission_sum, keepSums && emissive),
-         fresh(BufferId::common_voxelize_opacity, true),
-         fresh(BufferId::common_voxelize_albedo, true),
-         fresh(BufferId::common_voxelize_normal, true),
-         fresh(BufferId::common_voxelize_emission, emissive)};
+  void run(BufferSet& buffers) {
+    v_ = moved_ ? previousBuffers() : freshBuffers();
+    if (moved_)
+      accumulateUpdate();
+    else
+      accumulateFresh();
+    if (overflow_.flag)
+      throw InputError(ctx_.scene.file, "meshes",
+                       "more than 32768 voxel faces of surface fall into one voxel (fixed-point "
+                       "overflow); lower grid.resolution or remove overlapping copies");
+    resolveVolumes();
+    for (Buffer* b : {&v_.weight, &v_.albedoSum, &v_.normalSum, &v_.emissionSum, &v_.opacity,
+                      &v_.albedo, &v_.normal, &v_.emission})
+      if (b->spec != nullptr) buffers.put(std::move(*b));
   }
 
-  BlockSums blocks(n, emissive);
-  Overflow overflow;
-  const TextureAccess textures{ctx.scene.textures};
-  const auto walk = [&](const std::vector<shared::VoxelTriangle>& tris, size_t first, size_t end,
-                        auto& sink) {
+ private:
+  VoxelBuffers previousBuffers() const {
+    BufferSet& stash = ctx_.previous->stash;
+    return {stash.take(BufferId::common_voxelize_weight_sum),
+            stash.take(BufferId::common_voxelize_albedo_sum),
+            stash.take(BufferId::common_voxelize_normal_sum),
+            stash.take(BufferId::common_voxelize_emission_sum),
+            stash.take(BufferId::common_voxelize_opacity),
+            stash.take(BufferId::common_voxelize_albedo),
+            stash.take(BufferId::common_voxelize_normal),
+            stash.take(BufferId::common_voxelize_emission)};
+  }
+
+  VoxelBuffers freshBuffers() const {
+    const auto fresh = [&](BufferId id, bool needed) {
+      return needed ? Buffer(id, glm::ivec3(n_)) : Buffer();
+    };
+    return {fresh(BufferId::common_voxelize_weight_sum, keepSums_),
+            fresh(BufferId::common_voxelize_albedo_sum, keepSums_),
+            fresh(BufferId::common_voxelize_normal_sum, keepSums_),
+            fresh(BufferId::common_voxelize_emission_sum, keepSums_ && emissive_),
+            fresh(BufferId::common_voxelize_opacity, true),
+            fresh(BufferId::common_voxelize_albedo, true),
+            fresh(BufferId::common_voxelize_normal, true),
+            fresh(BufferId::common_voxelize_emission, emissive_)};
+  }
+
+  // The walks of triangles [first, end) of `tris`, each contribution handed to `sink`.
+  template <class Sink>
+  void walk(const std::vector<VoxelTriangle>& tris, size_t first, size_t end, Sink& sink) {
     parallelFor(tbb::blocked_range<size_t>(first, end, 64), [&](const auto& range) {
       for (size_t i = range.begin(); i != range.end(); ++i) {
         // A million copies of one triangle fail after the first few thousand, not after all.
-        if (overflow.flag.load(std::memory_order_relaxed)) return;
-        if (antialiased)
-          antialiasedWalk(tris[i], n, textures, sink);
+        if (overflow_.flag.load(std::memory_order_relaxed)) return;
+        if (antialiased_)
+          antialiasedWalk(tris[i], n_, textures_, sink);
         else
-          conservativeWalk(tris[i], n, textures, sink);
+          conservativeWalk(tris[i], n_, textures_, sink);
       }
     });
-  };
-  if (moved) {
+  }
+
+  // The moved meshes' contributions of the frame before out of its dense sums, this frame's in.
+  void accumulateUpdate() {
     DenseAccumulator acc{
-        grid,   v.weight, v.albedoSum, v.normalSum, emissive ? &v.emissionSum : nullptr,
-        blocks, overflow};
+        grid_,   v_.weight, v_.albedoSum, v_.normalSum, emissive_ ? &v_.emissionSum : nullptr,
+        blocks_, overflow_};
     // Every subtraction before any addition, so that a running sum passes the bound only when
     // the final one does.
     acc.subtract = true;
-    for (const auto& [first, end] : moved->before)
-      walk(ctx.previous->triangles->triangles, first, end, acc);
+    for (const auto& [first, end] : moved_->before)
+      walk(ctx_.previous->triangles->triangles, first, end, acc);
     acc.subtract = false;
-    for (const auto& [first, end] : moved->now) walk(ctx.triangles.triangles, first, end, acc);
-    blocks.low = blocks.markedList();  // resolved again; the sums stay dense
-  } else {
-    const std::vector<shared::VoxelTriangle>& tris = ctx.triangles.triangles;
+    for (const auto& [first, end] : moved_->now) walk(ctx_.triangles.triangles, first, end, acc);
+    blocks_.low = blocks_.markedList();  // resolved again; the sums stay dense
+  }
+
+  // Every triangle's contributions into the blocks of 8^3 voxels its candidates reach.
+  void accumulateFresh() {
+    const std::vector<VoxelTriangle>& tris = ctx_.triangles.triangles;
     // The blocks of the walks' candidate voxels, a superset of those contributions reach (a block
     // marked in vain resolves to the zeros it holds) at a fraction of the contributions' cost: each
     // block is marked once per run of a triangle's candidates in it.
@@ -240,99 +264,118 @@ void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
       for (size_t i = range.begin(); i != range.end(); ++i) {
         size_t last = SIZE_MAX;
         const auto mark = [&](const glm::ivec3& voxel) {
-          const size_t b = blocks.blockIndex(voxel);
-          if (b != last) blocks.mark(b);
+          const size_t b = blocks_.blockIndex(voxel);
+          if (b != last) blocks_.mark(b);
           last = b;
         };
-        if (antialiased)
-          antialiasedCandidates(tris[i], n, mark);
+        if (antialiased_)
+          antialiasedCandidates(tris[i], n_, mark);
         else
-          conservativeCandidates(tris[i], n, mark);
+          conservativeCandidates(tris[i], n_, mark);
       }
     });
-    blocks.allocate(ctx);
+    blocks_.allocate(ctx_);
     auto add = [&](const glm::ivec3& voxel, const VoxelContribution& c) {
-      uint32_t* sums = blocks.at(voxel);
-      overflow.check(
-          addContribution(c, emissive, false, [sums](int i) -> uint32_t& { return sums[i]; }),
+      uint32_t* sums = blocks_.at(voxel);
+      overflow_.check(
+          addContribution(c, emissive_, false, [sums](int i) -> uint32_t& { return sums[i]; }),
           c.weight);
     };
     walk(tris, 0, tris.size(), add);
   }
 
-  if (overflow.flag)
-    throw InputError(ctx.scene.file, "meshes",
-                     "more than 32768 voxel faces of surface fall into one voxel (fixed-point "
-                     "overflow); lower grid.resolution or remove overlapping copies");
-
   // Voxel e's outputs from its sums (kSumWords or kEmissiveSumWords words, BlockSums' order).
-  const auto resolve = [&](size_t e, const uint32_t* s) {
+  void resolve(size_t e, const uint32_t* s) {
     const uint32_t w = s[0];
-    v.opacity.set(e, 0, shared::resolveOpacity(w, antialiased));
+    v_.opacity.set(e, 0, shared::resolveOpacity(w, antialiased_));
     const glm::vec3 a = shared::resolveAverage(glm::uvec3(s[1], s[2], s[3]), w);
     const glm::vec3 nm = shared::resolveNormal(glm::ivec3(glm::uvec3(s[4], s[5], s[6])), w);
     for (int c = 0; c < 3; ++c) {
-      v.albedo.set(e, c, a[c]);
-      v.normal.set(e, c, nm[c]);
+      v_.albedo.set(e, c, a[c]);
+      v_.normal.set(e, c, nm[c]);
     }
-    if (emissive) {
+    if (emissive_) {
       const glm::vec3 em = shared::resolveEmission(
-          glm::uvec3(s[7], s[8], s[9]), emitterMean ? s[10] : w, ctx.triangles.emissionScale);
-      for (int c = 0; c < 3; ++c) v.emission.set(e, c, em[c]);
+          glm::uvec3(s[7], s[8], s[9]), emitterMean_ ? s[10] : w, ctx_.triangles.emissionScale);
+      for (int c = 0; c < 3; ++c) v_.emission.set(e, c, em[c]);
     }
-  };
+  }
+
   // The dense sums of voxel e, gathered into BlockSums' order or scattered from it.
-  const auto denseSums = [&](size_t e, auto&& visit) {
-    visit(v.weight.words[e], 0);
+  template <class Visit>
+  void denseSums(size_t e, Visit&& visit) {
+    visit(v_.weight.words[e], 0);
     for (int c = 0; c < 3; ++c) {
-      visit(v.albedoSum.words[3 * e + size_t(c)], 1 + c);
-      visit(v.normalSum.words[3 * e + size_t(c)], 4 + c);
+      visit(v_.albedoSum.words[3 * e + size_t(c)], 1 + c);
+      visit(v_.normalSum.words[3 * e + size_t(c)], 4 + c);
     }
-    if (emissive)
-      for (int c = 0; c < 4; ++c) visit(v.emissionSum.words[4 * e + size_t(c)], 7 + c);
-  };
-  // Whether a voxel without sums resolves to the +0 that fresh buffers hold.
-  const bool blank = resolvesToZero(antialiased, emissive, ctx.triangles.emissionScale);
-  const auto resolveVoxel = [&](const glm::ivec3& voxel) {
-    const size_t e = grid.index(voxel);
-    if (moved) {
+    if (emissive_)
+      for (int c = 0; c < 4; ++c) visit(v_.emissionSum.words[4 * e + size_t(c)], 7 + c);
+  }
+
+  // `blank`: a voxel without sums resolves to the +0 that fresh buffers hold.
+  void resolveVoxel(const glm::ivec3& voxel, bool blank) {
+    const size_t e = grid_.index(voxel);
+    if (moved_) {
       uint32_t s[kEmissiveSumWords] = {};
       denseSums(e, [&](uint32_t word, int i) { s[i] = word; });
       return resolve(e, s);
     }
     static constexpr uint32_t kZero[kEmissiveSumWords] = {};
-    const uint32_t* s = blocks.marked(voxel) ? blocks.at(voxel) : kZero;
+    const uint32_t* s = blocks_.marked(voxel) ? blocks_.at(voxel) : kZero;
     // Most voxels of a block the surface reaches are empty, and hold what they resolve to.
-    if (blank && std::all_of(s, s + blocks.words, [](uint32_t w) { return w == 0u; })) return;
+    if (blank && std::all_of(s, s + blocks_.words, [](uint32_t w) { return w == 0u; })) return;
     resolve(e, s);
-    if (keepSums) denseSums(e, [&](uint32_t& word, int i) { word = s[i]; });
-  };
+    if (keepSums_) denseSums(e, [&](uint32_t& word, int i) { word = s[i]; });
+  }
+
   // Only the blocks contributions reached are resolved where every other voxel already holds its
   // value: the frame before's outputs (a voxel resolves from its sums alone, and the update leaves
   // the others' sums as they were), or fresh buffers' +0 where that is what a voxel without
   // contributions resolves to (resolvesToZero). Each block by one task, its voxels in index order.
-  if (moved || blank) {
-    const std::vector<glm::ivec3>& low = blocks.low;
-    const int side = 1 << BlockSums::kShift;
-    parallelFor(tbb::blocked_range<size_t>(0, low.size(), 8), [&](const auto& range) {
-      for (size_t b = range.begin(); b != range.end(); ++b) {
-        const glm::ivec3 high = glm::min(low[b] + side, glm::ivec3(n));
-        for (int z = low[b].z; z < high.z; ++z)
-          for (int y = low[b].y; y < high.y; ++y)
-            for (int x = low[b].x; x < high.x; ++x) resolveVoxel({x, y, z});
-      }
-    });
-  } else {
+  void resolveVolumes() {
+    const bool blank = resolvesToZero(antialiased_, emissive_, ctx_.triangles.emissionScale);
+    const int n = n_;
+    if (moved_ || blank) {
+      const std::vector<glm::ivec3>& low = blocks_.low;
+      const int side = 1 << BlockSums::kShift;
+      parallelFor(tbb::blocked_range<size_t>(0, low.size(), 8), [&](const auto& range) {
+        for (size_t b = range.begin(); b != range.end(); ++b) {
+          const glm::ivec3 high = glm::min(low[b] + side, glm::ivec3(n));
+          for (int z = low[b].z; z < high.z; ++z)
+            for (int y = low[b].y; y < high.y; ++y)
+              for (int x = low[b].x; x < high.x; ++x) resolveVoxel({x, y, z}, blank);
+        }
+      });
+      return;
+    }
     parallelFor(tbb::blocked_range<size_t>(0, size_t(n) * size_t(n) * size_t(n), 4096),
                 [&](const auto& range) {
                   for (size_t e = range.begin(); e != range.end(); ++e)
                     resolveVoxel(glm::ivec3(int(e % size_t(n)), int(e / size_t(n) % size_t(n)),
-                                            int(e / (size_t(n) * size_t(n)))));
+                                            int(e / (size_t(n) * size_t(n)))),
+                                 blank);
                 });
   }
-  for (Buffer* b : {&v.weight, &v.albedoSum, &v.normalSum, &v.emissionSum, &v.opacity, &v.albedo,
-                    &v.normal, &v.emission})
-    if (b->spec != nullptr) buffers.put(std::move(*b));
+
+  const StageContext& ctx_;
+  const GridSpec& grid_;
+  const int n_;
+  const bool antialiased_, emissive_, emitterMean_, keepSums_;
+  const std::optional<MovedTriangles> moved_;
+  BlockSums blocks_;
+  Overflow overflow_;
+  const TextureAccess textures_;
+  VoxelBuffers v_;
+};
+
+}  // namespace
+
+void common::voxelize(const StageContext& ctx, BufferSet& buffers) {
+  checkStageMemory(ctx, StageId::common_voxelize);
+  refuseRepeatedTriangles(ctx.triangles, ctx.scene.grid.resolution,
+                          ctx.settings.voxelizeMode == VoxelizeMode::antialiased, ctx.scene.file);
+  Voxelization(ctx).run(buffers);
 }
 
 }  // namespace voxgi::cpu

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "common/io/buffer_io.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "tests/test_scenes.h"
 #include "validation/reference/image_metrics.h"
 #include "validation/reference/path_trace.h"

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "common/frame_plan.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/voxelize_update.h"
 #include "cpu/backend.h"
 #include "tests/frame_sequences.h"

@@ -1,4 +1,4 @@
-// glTF animations (common/scene/gltf_animation.h) against values computed by hand from the glTF
+// glTF animations (common/scene_io/gltf_animation.h) against values computed by hand from the glTF
 // 2.0 specification (§3.11 and Appendix C): a node hierarchy with step, linear (slerp) and
 // cubic-spline channels moving a mesh, a spot light and a camera, the scene file's transform on
 // top, and malformed channels refused naming the file and field.
@@ -11,7 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

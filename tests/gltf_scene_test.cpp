@@ -1,4 +1,4 @@
-// A glTF file's materials, lights and cameras (common/scene/gltf_authored.h) against values
+// A glTF file's materials, lights and cameras (common/scene_io/gltf_authored.h) against values
 // computed by hand from the glTF 2.0 specification and its KHR_lights_punctual,
 // KHR_materials_emissive_strength and KHR_materials_specular extensions.
 #include <cmath>
@@ -8,8 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "common/scene/gltf_authored.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/gltf_authored.h"
+#include "common/scene_io/scene_load.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

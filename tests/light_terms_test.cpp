@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "common/light_terms.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/technique.h"
 #include "common/io/buffer_io.h"
 #include "tests/test_scenes.h"

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "common/error.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

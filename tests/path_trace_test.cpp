@@ -7,7 +7,7 @@
 #include <tbb/task_arena.h>
 
 #include "common/camera_geometry.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "tests/test_scenes.h"
 #include "validation/reference/path_trace.h"
 

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "tests/test_scenes.h"
 #include "validation/reference/path_trace.h"
 

@@ -6,7 +6,7 @@
 
 #include "common/error.h"
 #include "common/pipeline.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "cpu/backend.h"
 #include "tests/technique_cases.h"
 #include "tests/test_scenes.h"

@@ -10,9 +10,9 @@
 #include <tbb/global_control.h>
 
 #include "common/error.h"
-#include "common/scene/point_cloud_ply.h"
-#include "common/scene/point_neighbours.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/point_cloud_ply.h"
+#include "common/scene_io/point_neighbours.h"
+#include "common/scene_io/scene_load.h"
 #include "common/surface_sampling.h"
 #include "common/texture.h"
 #include "tests/test_scenes.h"

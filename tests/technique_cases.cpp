@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

@@ -10,7 +10,7 @@
 
 #include "common/fnv1a.h"
 #include "common/pipeline.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/surface_sampling.h"
 #include "common/voxel_triangles.h"
 #include "cpu/backend.h"

@@ -12,7 +12,7 @@
 #include "common/error.h"
 #include "common/io/image_io.h"
 #include "common/io/texture_read.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/texture.h"
 #include "tests/test_scenes.h"
 

@@ -6,7 +6,7 @@
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
 
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "shaders/shared/voxelize_kernel.h"
 #include "shaders/shared/voxelize_layout.h"
 #include "tests/test_scenes.h"

@@ -15,7 +15,7 @@
 
 #include "common/frame_plan.h"
 #include "common/io/output_file.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/scene_motion.h"
 #include "cpu/backend.h"
 #include "gpu/backend.h"
@@ -116,7 +116,9 @@ int runBenchFrames(const BenchFramesOptions& o) {
           });
         }
         const std::string sceneName = std::filesystem::path(file).stem().string();
-        for (const auto& [backend, run] : backends) {
+        for (const auto& [backend, sequence] : backends) {
+          // A named reference: clang 14 (clang-tidy) cannot capture a structured binding.
+          const auto& run = sequence;
           const auto update = medianSequence(o.repeats, [&] { return run(false); });
           const auto rebuild = medianSequence(o.repeats, [&] { return run(true); });
           for (const auto& [stage, rebuilt] : rebuild) {

@@ -13,7 +13,7 @@
 #include <tbb/task_arena.h>
 
 #include "common/io/output_file.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/voxel_triangles.h"
 #include "cpu/backend.h"
 #include "gpu/backend.h"

@@ -17,7 +17,7 @@
 
 #include "common/light_terms.h"
 #include "common/io/output_file.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "tools/bench.h"
 #include "validation/reference/image_metrics.h"
 #include "validation/reference/path_trace.h"

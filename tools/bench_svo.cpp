@@ -14,8 +14,8 @@
 #include <tbb/global_control.h>
 
 #include "common/io/output_file.h"
-#include "common/scene/scene_load.h"
-#include "common/scene/point_cloud_ply.h"
+#include "common/scene_io/scene_load.h"
+#include "common/scene_io/point_cloud_ply.h"
 #include "common/surface_sampling.h"
 #include "common/svo/samples.h"
 #include "common/voxel_triangles.h"

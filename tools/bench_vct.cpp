@@ -16,7 +16,7 @@
 
 #include "common/pipeline.h"
 #include "common/io/output_file.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/voxel_triangles.h"
 #include "cpu/backend.h"
 #include "cpu/stages.h"

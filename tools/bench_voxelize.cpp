@@ -14,7 +14,7 @@
 
 #include "common/pipeline.h"
 #include "common/io/output_file.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "cpu/backend.h"
 #include "gpu/backend.h"
 #include "tools/bench.h"

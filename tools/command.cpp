@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "common/error.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 
 namespace voxgi::tools {
 

@@ -193,31 +193,11 @@ Image readReference(const std::string& path) {
   return reference;
 }
 
-int runCompare(const CompareOptions& o) {
-  if (!o.frames.empty()) return runCompareFrames(o);
-  const std::string errorPng = errorMapPath(o.test, o.errorPng);
-  checkOutputPath(errorPng);
-  if (o.terms)
-    for (const LightTerm term : kLightTerms) checkOutputPath(termErrorMapPath(o, term));
-  if (!o.json.empty()) checkOutputPath(o.json);
-  const Image reference = readReference(o.reference);
-  const Image test = readImage(o.test);
-  checkSameSize(test.width, test.height, o.test, reference);
-  const std::vector<uint8_t> mask =
-      withoutEmitters(o.skipEmitters, o.reference, reference, readMask(o.mask, reference));
-  if (o.scanline >= reference.height)
-    throw InputError("--scanline", "",
-                     "row " + std::to_string(o.scanline) + " is outside the " +
-                         std::to_string(reference.height) + "-row images");
-  // The test's light terms: required by --terms, else used when they lie beside it.
-  std::optional<TermImages> terms;
-  if (o.terms || std::filesystem::exists(termPath(o.test, LightTerm::direct))) {
-    terms = readTermImages(o.test);
-    for (const LightTerm term : kLightTerms)
-      checkSameSize(termImage(*terms, term).width, termImage(*terms, term).height,
-                    termPath(o.test, term), reference);
-  }
-  const reference::MetricScale scale = reference::metricScale(reference, mask, o.units);
+// The metrics of `test` against `reference` beside the black and constant baselines (and the
+// image's direct light alone where its terms are given), printed and as the report's JSON.
+nlohmann::json printMetrics(const CompareOptions& o, const Image& test, const Image& reference,
+                            const std::vector<uint8_t>& mask, const reference::MetricScale& scale,
+                            const std::optional<TermImages>& terms) {
   const reference::ImageMetrics m = reference::compareImages(test, reference, mask, scale);
   const reference::Baselines baselines = reference::trivialBaselines(reference, mask, scale);
   std::cout << "compare " << o.test << " against " << o.reference << " (" << reference.width << "x"
@@ -255,42 +235,80 @@ int runCompare(const CompareOptions& o) {
     std::cout << "  (constant: the reference's mean per channel; render --terms also gives the "
                  "image's direct light alone)\n";
   }
+  return out;
+}
+
+// The reference's own error where a variance image lies beside it: a perfect image would still
+// measure this far from it; and, both images path traced, whether their variance images predict
+// their difference.
+void printNoiseFloor(const CompareOptions& o, const Image& test, const Image& reference,
+                     const std::vector<uint8_t>& mask, const reference::MetricScale& scale,
+                     nlohmann::json& out) {
+  const std::optional<Image> rv = readVarianceImage(o.reference, reference);
+  if (!rv) return;
+  const reference::ImageMetrics floor = reference::noiseFloor(reference, *rv, mask, scale);
+  std::cout << "  noise floor of the reference (" << reference::variancePath(o.reference)
+            << "): RMSE " << floor.rmse << ", relMSE " << floor.relMse << "\n";
+  out["noise_floor"] = {{"rmse", floor.rmse}, {"rel_mse", floor.relMse}};
+  if (const std::optional<Image> tv = readVarianceImage(o.test, reference)) {
+    const reference::ZSpread z = reference::zSpread(test, *tv, reference, *rv, mask);
+    std::cout << "  z = (t - r) / sqrt(both variances): mean " << z.mean << ", standard deviation "
+              << z.deviation << " over " << z.values
+              << " values (1: the variance images predict the error)\n";
+    out["z"] = {{"mean", z.mean}, {"deviation", z.deviation}, {"values", z.values}};
+  }
+}
+
+// Row `row`'s Rec. 709 luminance in both linear images.
+nlohmann::json scanlineJson(int row, const Image& test, const Image& reference) {
+  const auto luminance = [&](const Image& image) {
+    std::vector<double> values;
+    for (int x = 0; x < image.width; ++x) {
+      const glm::vec3 p = image.at(x, row);
+      values.push_back(0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z);
+    }
+    return values;
+  };
+  return {{"row", row}, {"test", luminance(test)}, {"reference", luminance(reference)}};
+}
+
+int runCompare(const CompareOptions& o) {
+  if (!o.frames.empty()) return runCompareFrames(o);
+  const std::string errorPng = errorMapPath(o.test, o.errorPng);
+  checkOutputPath(errorPng);
+  if (o.terms)
+    for (const LightTerm term : kLightTerms) checkOutputPath(termErrorMapPath(o, term));
+  if (!o.json.empty()) checkOutputPath(o.json);
+  const Image reference = readReference(o.reference);
+  const Image test = readImage(o.test);
+  checkSameSize(test.width, test.height, o.test, reference);
+  const std::vector<uint8_t> mask =
+      withoutEmitters(o.skipEmitters, o.reference, reference, readMask(o.mask, reference));
+  if (o.scanline >= reference.height)
+    throw InputError("--scanline", "",
+                     "row " + std::to_string(o.scanline) + " is outside the " +
+                         std::to_string(reference.height) + "-row images");
+  // The test's light terms: required by --terms, else used when they lie beside it.
+  std::optional<TermImages> terms;
+  if (o.terms || std::filesystem::exists(termPath(o.test, LightTerm::direct))) {
+    terms = readTermImages(o.test);
+    for (const LightTerm term : kLightTerms)
+      checkSameSize(termImage(*terms, term).width, termImage(*terms, term).height,
+                    termPath(o.test, term), reference);
+  }
+  const reference::MetricScale scale = reference::metricScale(reference, mask, o.units);
+  nlohmann::json out = printMetrics(o, test, reference, mask, scale, terms);
   // NaN or Inf in the image under test is a finding, not bad input: the metrics show it too.
   const size_t nonFinite = size_t(std::count_if(test.pixels.begin(), test.pixels.end(),
                                                 [](glm::vec3 p) { return !finite(p); }));
   if (nonFinite > 0) std::cout << "  non-finite pixels in " << o.test << ": " << nonFinite << "\n";
-  // The reference's own error: a perfect image would still measure this far from it.
-  if (const std::optional<Image> rv = readVarianceImage(o.reference, reference)) {
-    const reference::ImageMetrics floor = reference::noiseFloor(reference, *rv, mask, scale);
-    std::cout << "  noise floor of the reference (" << reference::variancePath(o.reference)
-              << "): RMSE " << floor.rmse << ", relMSE " << floor.relMse << "\n";
-    out["noise_floor"] = {{"rmse", floor.rmse}, {"rel_mse", floor.relMse}};
-    // Both images path traced: does each variance image predict their difference?
-    if (const std::optional<Image> tv = readVarianceImage(o.test, reference)) {
-      const reference::ZSpread z = reference::zSpread(test, *tv, reference, *rv, mask);
-      std::cout << "  z = (t - r) / sqrt(both variances): mean " << z.mean
-                << ", standard deviation " << z.deviation << " over " << z.values
-                << " values (1: the variance images predict the error)\n";
-      out["z"] = {{"mean", z.mean}, {"deviation", z.deviation}, {"values", z.values}};
-    }
-  }
+  printNoiseFloor(o, test, reference, mask, scale, out);
   writeRgb8Png(errorPng, reference.width, reference.height,
                reference::errorColours(test, reference, mask, scale));
   std::cout << "  error map (|t - r| / (|r| + 0.01 u), log scale 1e-3 black .. 1 white) -> "
             << errorPng << "\n";
   if (o.terms) out["terms"] = printTermBudget(o, reference, *terms, mask, scale);
-  if (o.scanline >= 0) {
-    // Rec. 709 luminance of the linear images.
-    const auto row = [&](const Image& image) {
-      std::vector<double> values;
-      for (int x = 0; x < image.width; ++x) {
-        const glm::vec3 p = image.at(x, o.scanline);
-        values.push_back(0.2126 * p.x + 0.7152 * p.y + 0.0722 * p.z);
-      }
-      return values;
-    };
-    out["scanline"] = {{"row", o.scanline}, {"test", row(test)}, {"reference", row(reference)}};
-  }
+  if (o.scanline >= 0) out["scanline"] = scanlineJson(o.scanline, test, reference);
   if (!o.json.empty()) writeFileAtomically(o.json, out.dump(2) + "\n");
   return kExitOk;
 }

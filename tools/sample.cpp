@@ -8,8 +8,8 @@
 #include "common/error.h"
 #include "common/memory.h"
 #include "common/io/output_file.h"
-#include "common/scene/scene_load.h"
-#include "common/scene/point_cloud_ply.h"
+#include "common/scene_io/scene_load.h"
+#include "common/scene_io/point_cloud_ply.h"
 #include "common/surface_sampling.h"
 #include "tools/command.h"
 

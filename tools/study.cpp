@@ -18,7 +18,7 @@
 #include "common/light_terms.h"
 #include "common/io/output_file.h"
 #include "common/pipeline.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/settings.h"
 #include "common/settings_table.h"
 #include "common/technique.h"

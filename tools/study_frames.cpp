@@ -18,7 +18,7 @@
 #include "common/io/buffer_io.h"
 #include "common/io/input_file.h"
 #include "common/io/output_file.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/scene_motion.h"
 #include "cpu/backend.h"
 #include "tools/bench.h"

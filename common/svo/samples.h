@@ -25,8 +25,8 @@ struct SampleSet {
 
 // Samples of the scene over the grid cube at 2^depth leaves per side. Meshes get `meshDensity`
 // points per leaf face of area (build.mesh_density), per material, from `seed`. A point's RoI edge
-// is the side of a square of its area (pi r^2 / 2, common/scene/point_neighbours.h), in leaves, at
-// most 1; its opacity density is the reciprocal, so a surface's samples add opacity 1 per leaf
+// is the side of a square of its area (pi r^2 / 2, common/scene_io/point_neighbours.h), in leaves,
+// at most 1; its opacity density is the reciprocal, so a surface's samples add opacity 1 per leaf
 // face. Under emitters.mode=area_lights the meshes' emissive triangles are area lights, so the
 // points sampled on them carry no emission; a point cloud's emission stays. Throws InputError
 // naming build.mesh_density when the samples would not fit in memory.

@@ -354,41 +354,73 @@ float component(const glm::vec3& v, int k) {
   return k == 0 ? v.x : k == 1 ? v.y : v.z;
 }
 
-}  // namespace
+// Where each lane's cone samples this step, found per batch before sampling: the lanes that stop
+// here (the step limit or the distance reached: `over`; the grid left: `exited`), each lane's
+// diameter, lower level and the fraction towards the next, and its trilinear cells in both levels.
+struct StepPlan {
+  LaneBits over = 0, exited = 0;
+  alignas(kAlign) float diameters[kLanes], l0s[kLanes], fs[kLanes];
+  LaneCells lower, upper;
+};
 
-#define VOXGI_CONE_LANES_ENTRY(suffix) marchCones##suffix
-#define VOXGI_CONE_LANES_NAME(suffix) VOXGI_CONE_LANES_ENTRY(suffix)
+// One march of `jobs` (cone_lanes.h, marchCones): each lane takes the next job when its cone ends,
+// until every job is done. A step is three passes over the lanes: plan (per batch), sample (per
+// lane: a quadrilinear sample through the volumes' cells), composite (per batch).
+class LaneMarch {
+ public:
+  LaneMarch(const Volumes& volumes, std::span<const ConeJob> jobs, int kind,
+            const shared::ConeTraceParams& params, std::span<shared::ConeHit> hits)
+      : volumes_(volumes),
+        jobs_(jobs),
+        kind_(kind),
+        params_(params),
+        hits_(hits),
+        n_(float(params.resolution)),
+        beta_(params.coneStep),
+        ambient_(params.ambientOcclusion == 1 && kind <= shared::kMarchFirstHit),
+        radiance_(kind <= shared::kMarchFirstHit) {
+    for (TileMemo& m : st_.memo)
+      for (uint64_t& key : m.key) key = kNoTileKey;
+  }
 
-void VOXGI_CONE_LANES_NAME(VOXGI_CONE_LANES_SUFFIX)(const Volumes& volumes,
-                                                    std::span<const ConeJob> jobs, int kind,
-                                                    const shared::ConeTraceParams& params,
-                                                    std::span<shared::ConeHit> hits) {
-  const float n = float(params.resolution);
-  const float beta = params.coneStep;
-  const bool ambient = params.ambientOcclusion == 1 && kind <= shared::kMarchFirstHit;
-  const bool radiance = kind <= shared::kMarchFirstHit;
-  LaneState st;
-  for (TileMemo& m : st.memo)
-    for (uint64_t& key : m.key) key = kNoTileKey;
-  size_t next = 0;
-  const auto start = [&](int j) {
-    st.job[j] = next < jobs.size() ? long(next) : -1;
-    if (st.job[j] < 0) return;
-    const ConeJob& c = jobs.data()[next++];
-    for (int k = 0; k < 3; ++k) {
-      st.origin[k][j] = component(c.origin, k);
-      st.direction[k][j] = component(c.direction, k);
-      st.radiance[k][j] = 0.0f;
+  void run() {
+    for (int j = 0; j < kLanes; ++j) start(j);
+    for (;;) {
+      const LaneBits live = liveLanes(st_.job);
+      if (live == 0) break;
+      StepPlan plan;
+      planStep(live, plan);
+      sample(live & ~plan.over & ~plan.exited, plan);
+      const LaneBits ended = composite(plan);
+      for (int j = 0; j < kLanes; ++j) {
+        if (ended >> j & 1)
+          finish(j, false);
+        else if (plan.exited >> j & 1)
+          finish(j, true);
+      }
     }
-    st.rise[j] = c.rise;
-    st.tanHalf[j] = c.tanHalf;
-    st.maxDistance[j] = c.maxDistance;
-    st.t[j] = 0.5f;
-    st.occlusion[j] = 0.0f;
-    st.ambient[j] = 0.0f;
-    st.steps[j] = 0.0f;
+  }
+
+ private:
+  // Lane j takes the next job, or goes idle when none is left.
+  void start(int j) {
+    st_.job[j] = next_ < jobs_.size() ? long(next_) : -1;
+    if (st_.job[j] < 0) return;
+    const ConeJob& c = jobs_.data()[next_++];
+    for (int k = 0; k < 3; ++k) {
+      st_.origin[k][j] = component(c.origin, k);
+      st_.direction[k][j] = component(c.direction, k);
+      st_.radiance[k][j] = 0.0f;
+    }
+    st_.rise[j] = c.rise;
+    st_.tanHalf[j] = c.tanHalf;
+    st_.maxDistance[j] = c.maxDistance;
+    st_.t[j] = 0.5f;
+    st_.occlusion[j] = 0.0f;
+    st_.ambient[j] = 0.0f;
+    st_.steps[j] = 0.0f;
     const glm::vec3& d = c.direction;
-    LaneCone& cone = st.cone[j];
+    LaneCone& cone = st_.cone[j];
     cone.face[0] = d.x >= 0.0f ? 0 : 1;
     cone.face[1] = d.y >= 0.0f ? 2 : 3;
     cone.face[2] = d.z >= 0.0f ? 4 : 5;
@@ -399,146 +431,173 @@ void VOXGI_CONE_LANES_NAME(VOXGI_CONE_LANES_SUFFIX)(const Volumes& volumes,
     cone.pick = facePick(cone.face);
     cone.weights = faceWeights(cone.weight);
 #endif
-  };
-  const auto finish = [&](int j, bool exited) {
-    shared::ConeHit& h = hits.data()[st.job[j]];
-    h.radiance.x = st.radiance[0][j];
-    h.radiance.y = st.radiance[1][j];
-    h.radiance.z = st.radiance[2][j];
-    h.occlusion = st.occlusion[j];
-    h.ambient = st.ambient[j];
-    if (exited && radiance) {
+  }
+
+  // Lane j's cone ends (`exited`: it left the grid, and sees the background through what it did
+  // not occlude): its hit, then the lane's next job.
+  void finish(int j, bool exited) {
+    shared::ConeHit& h = hits_.data()[st_.job[j]];
+    h.radiance.x = st_.radiance[0][j];
+    h.radiance.y = st_.radiance[1][j];
+    h.radiance.z = st_.radiance[2][j];
+    h.occlusion = st_.occlusion[j];
+    h.ambient = st_.ambient[j];
+    if (exited && radiance_) {
       // glm's vec3(background) * (1 - occlusion) + radiance, component by component.
       const float open = 1.0f - h.occlusion;
-      h.radiance.x = h.radiance.x + params.background.x * open;
-      h.radiance.y = h.radiance.y + params.background.y * open;
-      h.radiance.z = h.radiance.z + params.background.z * open;
+      h.radiance.x = h.radiance.x + params_.background.x * open;
+      h.radiance.y = h.radiance.y + params_.background.y * open;
+      h.radiance.z = h.radiance.z + params_.background.z * open;
     }
     start(j);
-  };
-  for (int j = 0; j < kLanes; ++j) start(j);
+  }
 
-  for (;;) {
-    const LaneBits live = liveLanes(st.job);
-    if (live == 0) break;
-    // Before sampling, per batch: lanes that stop (the step limit or the distance reached: not
-    // exited; the grid left: exited), then each lane's diameter, level and trilinear cells.
-    LaneBits over = 0, exited = 0;
-    alignas(kAlign) float diameters[kLanes], l0s[kLanes], fs[kLanes];
-    LaneCells lower, upper;
+  void planStep(LaneBits live, StepPlan& p) const {
     for (int o = 0; o < kLanes; o += kWidth) {
-      const Lanes t = Lanes::load_aligned(st.t + o);
+      const Lanes t = Lanes::load_aligned(st_.t + o);
       const LaneBits stop =
-          bitsOf(t > Lanes::load_aligned(st.maxDistance + o) ||
-                 Lanes::load_aligned(st.steps + o) >= Lanes(float(params.maxSteps)));
+          bitsOf(t > Lanes::load_aligned(st_.maxDistance + o) ||
+                 Lanes::load_aligned(st_.steps + o) >= Lanes(float(params_.maxSteps)));
       Lanes q[3];
       LaneMask outside(false);
       for (int k = 0; k < 3; ++k) {
-        q[k] = Lanes::load_aligned(st.origin[k] + o) + Lanes::load_aligned(st.direction[k] + o) * t;
-        outside = outside || q[k] < Lanes(0.0f) || q[k] > Lanes(n);
+        q[k] =
+            Lanes::load_aligned(st_.origin[k] + o) + Lanes::load_aligned(st_.direction[k] + o) * t;
+        outside = outside || q[k] < Lanes(0.0f) || q[k] > Lanes(n_);
       }
-      over |= stop << o;
-      exited |= (bitsOf(outside) & ~stop) << o;
-      Lanes width = Lanes(2.0f) * t * Lanes::load_aligned(st.tanHalf + o);
-      if (params.coneClearance > 0.0f) {
-        const Lanes height = Lanes(params.coneOffset) + t * Lanes::load_aligned(st.rise + o);
-        width = glmMin(width, height * Lanes(params.coneClearance));
+      p.over |= stop << o;
+      p.exited |= (bitsOf(outside) & ~stop) << o;
+      Lanes width = Lanes(2.0f) * t * Lanes::load_aligned(st_.tanHalf + o);
+      if (params_.coneClearance > 0.0f) {
+        const Lanes height = Lanes(params_.coneOffset) + t * Lanes::load_aligned(st_.rise + o);
+        width = glmMin(width, height * Lanes(params_.coneClearance));
       }
       const Lanes diameter = glmMax(width, Lanes(1.0f));
-      const Lanes level = glmMin(log2Lanes(diameter), Lanes(float(params.topLevel)));
+      const Lanes level = glmMin(log2Lanes(diameter), Lanes(float(params_.topLevel)));
       const Lanes l0 = floorLanes(level);
-      diameter.store_aligned(diameters + o);
-      l0.store_aligned(l0s + o);
-      (level - l0).store_aligned(fs + o);
-      lower.fill(o, q, l0, n);
-      upper.fill(o, q, l0 + Lanes(1.0f), n);
+      diameter.store_aligned(p.diameters + o);
+      l0.store_aligned(p.l0s + o);
+      (level - l0).store_aligned(p.fs + o);
+      p.lower.fill(o, q, l0, n_);
+      p.upper.fill(o, q, l0 + Lanes(1.0f), n_);
     }
-    over &= live;
-    exited &= live;
-    const LaneBits sampling = live & ~over & ~exited;
+    p.over &= live;
+    p.exited &= live;
+  }
 
-    // Each sampling lane's quadrilinear sample (shared::sampleCone), filtered on its own.
+  // Each sampling lane's quadrilinear sample (shared::sampleCone), filtered on its own; the
+  // others sample 0.
+  void sample(LaneBits sampling, const StepPlan& p) {
     for (int j = 0; j < kLanes; ++j) {
       Texel s = texel(0.0f);
       if (sampling >> j & 1) {
-        const int l = int(l0s[j]);
-        s = sampleLevel(volumes, l, lower.at(j), st.cone[j], params, st.memo[j]);
-        if (fs[j] != 0.0f)
-          s = lerp(s, sampleLevel(volumes, l + 1, upper.at(j), st.cone[j], params, st.memo[j]),
-                   fs[j]);
+        const int l = int(p.l0s[j]);
+        s = sampleLevel(volumes_, l, p.lower.at(j), st_.cone[j], params_, st_.memo[j]);
+        if (p.fs[j] != 0.0f)
+          s = lerp(s,
+                   sampleLevel(volumes_, l + 1, p.upper.at(j), st_.cone[j], params_, st_.memo[j]),
+                   p.fs[j]);
       }
       alignas(16) float v[4];  // one texel
       _mm_store_ps(v, s.v);
-      for (int k = 0; k < 4; ++k) st.sample[k][j] = v[k];
+      for (int k = 0; k < 4; ++k) st_.sample[k][j] = v[k];
     }
+  }
 
-    // After sampling, per batch: the step correction, compositing and the next step.
-    LaneBits ended = over;
+  // The sample's opacity corrected for the step (shared::marchCone's), per kind of march.
+  Lanes correctedOpacity(Lanes a, LaneMask seen, Lanes t, int o) const {
+    if (kind_ == shared::kMarchShadowKahl) {
+      const Lanes x =
+          xsimd::sqrt(t) * Lanes(params_.shadowStrength) / Lanes::load_aligned(st_.maxDistance + o);
+      const Lanes c = glmMin(glmMax(x, Lanes(0.0f)), Lanes(1.0f));
+      return a * (c * c * (Lanes(3.0f) - Lanes(2.0f) * c));
+    }
+    if (beta_ == 1.0f) return a;
+    const LaneMask opaque = a >= Lanes(1.0f);
+    const Lanes transparency = xsimd::select(seen && !opaque, Lanes(1.0f) - a, Lanes(1.0f));
+    return xsimd::select(opaque, a, Lanes(1.0f) - powLanes(transparency, Lanes(beta_)));
+  }
+
+  // Per batch after sampling: the step correction, compositing front to back and the next step;
+  // returns the lanes whose cones ended (over, a first hit, or opaque).
+  LaneBits composite(const StepPlan& p) {
+    LaneBits ended = p.over;
     for (int o = 0; o < kLanes; o += kWidth) {
-      const Lanes t = Lanes::load_aligned(st.t + o);
-      const Lanes diameter = Lanes::load_aligned(diameters + o);
-      const Lanes sampleAlpha = Lanes::load_aligned(st.sample[3] + o);
+      const Lanes t = Lanes::load_aligned(st_.t + o);
+      const Lanes diameter = Lanes::load_aligned(p.diameters + o);
+      const Lanes sampleAlpha = Lanes::load_aligned(st_.sample[3] + o);
       const Lanes a = glmMin(sampleAlpha, Lanes(1.0f));
       LaneMask seen = a > Lanes(0.0f);  // lanes that did not sample hold 0
       // Empty space (about half the samples): nothing to composite, the cones only step on.
       if (xsimd::any(seen)) {
-        Lanes corrected;
-        if (kind == shared::kMarchShadowKahl) {
-          const Lanes x = xsimd::sqrt(t) * Lanes(params.shadowStrength) /
-                          Lanes::load_aligned(st.maxDistance + o);
-          const Lanes c = glmMin(glmMax(x, Lanes(0.0f)), Lanes(1.0f));
-          corrected = a * (c * c * (Lanes(3.0f) - Lanes(2.0f) * c));
-        } else if (beta == 1.0f) {
-          corrected = a;
-        } else {
-          const LaneMask opaque = a >= Lanes(1.0f);
-          const Lanes transparency = xsimd::select(seen && !opaque, Lanes(1.0f) - a, Lanes(1.0f));
-          corrected = xsimd::select(opaque, a, Lanes(1.0f) - powLanes(transparency, Lanes(beta)));
-        }
-        if (kind == shared::kMarchFirstHit) {
+        const Lanes corrected = correctedOpacity(a, seen, t, o);
+        if (kind_ == shared::kMarchFirstHit) {
           // [Kahl 2019, §5.4.4]: the first sample past 1/100 is the surface, and the cone ends.
           const LaneMask hit = seen && corrected > Lanes(0.01f);
           ended |= bitsOf(hit) << o;
           seen = seen && !hit;
           for (int k = 0; k < 3; ++k) {
-            const Lanes surface = Lanes::load_aligned(st.sample[k] + o) / sampleAlpha;
-            xsimd::select(hit, surface, Lanes::load_aligned(st.radiance[k] + o))
-                .store_aligned(st.radiance[k] + o);
+            const Lanes surface = Lanes::load_aligned(st_.sample[k] + o) / sampleAlpha;
+            xsimd::select(hit, surface, Lanes::load_aligned(st_.radiance[k] + o))
+                .store_aligned(st_.radiance[k] + o);
           }
-          xsimd::select(hit, Lanes(1.0f), Lanes::load_aligned(st.occlusion + o))
-              .store_aligned(st.occlusion + o);
+          xsimd::select(hit, Lanes(1.0f), Lanes::load_aligned(st_.occlusion + o))
+              .store_aligned(st_.occlusion + o);
         }
-        const Lanes occlusion = Lanes::load_aligned(st.occlusion + o);
-        const Lanes remaining = Lanes(1.0f) - occlusion;
-        if (radiance) {
-          const Lanes scale = remaining * corrected / a;
-          for (int k = 0; k < 3; ++k) {
-            const Lanes r = Lanes::load_aligned(st.radiance[k] + o);
-            xsimd::select(seen, r + Lanes::load_aligned(st.sample[k] + o) * scale, r)
-                .store_aligned(st.radiance[k] + o);
-          }
-        }
-        if (ambient) {
-          const Lanes falloff =
-              Lanes(1.0f) / (Lanes(1.0f) + Lanes(params.ambientLambda) * (Lanes(0.5f) * diameter));
-          const Lanes before = Lanes::load_aligned(st.ambient + o);
-          xsimd::select(seen, before + (Lanes(1.0f) - before) * corrected * falloff, before)
-              .store_aligned(st.ambient + o);
-        }
-        const Lanes occluded = xsimd::select(seen, occlusion + remaining * corrected, occlusion);
-        occluded.store_aligned(st.occlusion + o);
-        ended |= bitsOf(seen && occluded >= Lanes(0.999f)) << o;
+        ended |= accumulate(seen, a, corrected, diameter, o);
       }
-      (t + glmMax(Lanes(beta) * diameter, Lanes(params.minStep))).store_aligned(st.t + o);
-      (Lanes::load_aligned(st.steps + o) + Lanes(1.0f)).store_aligned(st.steps + o);
+      (t + glmMax(Lanes(beta_) * diameter, Lanes(params_.minStep))).store_aligned(st_.t + o);
+      (Lanes::load_aligned(st_.steps + o) + Lanes(1.0f)).store_aligned(st_.steps + o);
     }
-    for (int j = 0; j < kLanes; ++j) {
-      if (ended >> j & 1)
-        finish(j, false);
-      else if (exited >> j & 1)
-        finish(j, true);
-    }
+    return ended;
   }
+
+  // The seen lanes' radiance, ambient occlusion and occlusion with this step's sample; returns
+  // those now opaque.
+  LaneBits accumulate(LaneMask seen, Lanes a, Lanes corrected, Lanes diameter, int o) {
+    const Lanes occlusion = Lanes::load_aligned(st_.occlusion + o);
+    const Lanes remaining = Lanes(1.0f) - occlusion;
+    if (radiance_) {
+      const Lanes scale = remaining * corrected / a;
+      for (int k = 0; k < 3; ++k) {
+        const Lanes r = Lanes::load_aligned(st_.radiance[k] + o);
+        xsimd::select(seen, r + Lanes::load_aligned(st_.sample[k] + o) * scale, r)
+            .store_aligned(st_.radiance[k] + o);
+      }
+    }
+    if (ambient_) {
+      const Lanes falloff =
+          Lanes(1.0f) / (Lanes(1.0f) + Lanes(params_.ambientLambda) * (Lanes(0.5f) * diameter));
+      const Lanes before = Lanes::load_aligned(st_.ambient + o);
+      xsimd::select(seen, before + (Lanes(1.0f) - before) * corrected * falloff, before)
+          .store_aligned(st_.ambient + o);
+    }
+    const Lanes occluded = xsimd::select(seen, occlusion + remaining * corrected, occlusion);
+    occluded.store_aligned(st_.occlusion + o);
+    return bitsOf(seen && occluded >= Lanes(0.999f)) << o;
+  }
+
+  const Volumes& volumes_;
+  std::span<const ConeJob> jobs_;
+  int kind_;
+  const shared::ConeTraceParams& params_;
+  std::span<shared::ConeHit> hits_;
+  float n_, beta_;
+  bool ambient_, radiance_;
+  size_t next_ = 0;  // the next job a lane takes
+  LaneState st_;
+};
+
+}  // namespace
+
+#define VOXGI_CONE_LANES_ENTRY(suffix) marchCones##suffix
+#define VOXGI_CONE_LANES_NAME(suffix) VOXGI_CONE_LANES_ENTRY(suffix)
+
+void VOXGI_CONE_LANES_NAME(VOXGI_CONE_LANES_SUFFIX)(const Volumes& volumes,
+                                                    std::span<const ConeJob> jobs, int kind,
+                                                    const shared::ConeTraceParams& params,
+                                                    std::span<shared::ConeHit> hits) {
+  LaneMarch(volumes, jobs, kind, params, hits).run();
 }
 
 }  // namespace voxgi::cpu::cone_lanes

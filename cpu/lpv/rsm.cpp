@@ -4,7 +4,7 @@
 #include "common/camera_geometry.h"
 #include "common/lpv/rsm.h"
 #include "common/parallel.h"
-#include "common/scene/ray_scene.h"
+#include "common/scene_io/ray_scene.h"
 #include "cpu/stages.h"
 #include "common/texture.h"
 #include "shaders/shared/lpv/rsm_kernel.h"

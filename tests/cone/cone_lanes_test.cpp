@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/cone/cone_trace.h"
 #include "cpu/cone/cone_lanes.h"
 #include "tests/test_scenes.h"

@@ -2,7 +2,7 @@
 #include <iostream>
 
 #include <voxgi/common/pipeline.h>
-#include <voxgi/common/scene/scene_load.h>
+#include <voxgi/common/scene_io/scene_load.h>
 #include <voxgi/cpu/backend.h>
 
 int main(int argc, char** argv) {

@@ -1,7 +1,7 @@
 // Path traces a scene with the installed reference renderer alone (voxgi::reference: no GL).
 #include <iostream>
 
-#include <voxgi/common/scene/scene_load.h>
+#include <voxgi/common/scene_io/scene_load.h>
 #include <voxgi/validation/reference/path_trace.h>
 
 int main(int argc, char** argv) {

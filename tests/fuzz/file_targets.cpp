@@ -4,7 +4,7 @@
 #include "common/error.h"
 #include "common/io/image_io.h"
 #include "common/io/texture_read.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "tests/fuzz/fuzz_target.h"
 
 namespace voxgi::fuzz {

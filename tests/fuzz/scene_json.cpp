@@ -3,7 +3,7 @@
 #include <fstream>
 
 #include "common/error.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/technique.h"
 #include "tests/fuzz/fuzz_target.h"
 

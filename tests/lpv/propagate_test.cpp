@@ -10,7 +10,7 @@
 #include "common/lpv/inject.h"
 #include "common/lpv/propagate.h"
 #include "common/lpv/sh_buffers.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/voxelize_update.h"
 #include "shaders/shared/lpv/propagate_kernel.h"
 #include "tests/lpv/kernel_volumes.h"

@@ -10,7 +10,7 @@
 
 #include "common/lpv/propagate.h"
 #include "common/lpv/sh_buffers.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "shaders/shared/half_float.h"
 #include "shaders/shared/lpv/storage.h"
 #include "tests/test_scenes.h"

@@ -12,7 +12,7 @@
 
 #include "common/svo/stage_inputs.h"
 #include "common/lights.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/stage.h"
 #include "common/svo/samples.h"
 #include "common/cone/cone_trace.h"

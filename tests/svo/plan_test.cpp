@@ -3,7 +3,7 @@
 
 #include <array>
 
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/svo/light_types.h"
 #include "shaders/shared/half_float.h"
 #include "shaders/shared/svo/build_kernel.h"

@@ -3,7 +3,7 @@
 // transport.
 #include <gtest/gtest.h>
 
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/svo/stage_inputs.h"
 #include "cpu/svo/octree.h"
 #include "shaders/shared/svo/svo_layout.h"

@@ -4,7 +4,7 @@
 // from the buffers, so a term read from the wrong buffer or dropped shows.
 #include <gtest/gtest.h>
 
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

@@ -3,7 +3,7 @@
 // (plan.mode=full) renders it.
 #include <gtest/gtest.h>
 
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "tests/test_scenes.h"
 
 namespace voxgi::test {

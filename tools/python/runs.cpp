@@ -11,7 +11,7 @@
 #include "common/error.h"
 #include "common/io/buffer_io.h"
 #include "common/io/output_file.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/settings.h"
 #include "cpu/backend.h"
 #include "gpu/backend.h"

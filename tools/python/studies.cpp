@@ -4,7 +4,7 @@
 
 #include "common/error.h"
 #include "common/io/image_io.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 #include "common/scene_motion.h"
 #include "common/technique.h"
 #include "tools/frames.h"

@@ -10,7 +10,7 @@
 
 #include "common/memory.h"
 #include "common/parallel.h"
-#include "common/scene/ray_scene.h"
+#include "common/scene_io/ray_scene.h"
 #include "validation/reference/emitters.h"
 #include "validation/reference/sampler.h"
 

@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "common/scene/gltf_authored.h"
-#include "common/scene/tinygltf.h"
+#include "common/scene_io/gltf_authored.h"
+#include "common/scene_io/tinygltf.h"
 
 namespace voxgi {
 

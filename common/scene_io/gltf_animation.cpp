@@ -1,10 +1,10 @@
-#include "common/scene/gltf_animation.h"
+#include "common/scene_io/gltf_animation.h"
 
 #include <cmath>
 
 #include "common/error.h"
-#include "common/scene/gltf_accessor.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/gltf_accessor.h"
+#include "common/scene_io/scene_load.h"
 
 namespace voxgi {
 namespace {

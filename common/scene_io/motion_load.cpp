@@ -1,4 +1,4 @@
-#include "common/scene/motion_load.h"
+#include "common/scene_io/motion_load.h"
 
 #include <functional>
 

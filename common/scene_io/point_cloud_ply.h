@@ -1,7 +1,7 @@
 // Point clouds from PLY files (docs/svo.md, "Point clouds"): one `vertex` element of scalar
 // properties, ASCII or binary in either byte order. Assimp reads such files too, but it drops
 // per-point properties it does not know (the radius) and took 485 ms for 1.4 M binary points on
-// top of the 356 ms of the check voxgi runs before any Assimp import (common/scene/ply_check.h);
+// top of the 356 ms of the check voxgi runs before any Assimp import (common/scene_io/ply_check.h);
 // this reader is that check's header parser and value decoding, reading the values in the same
 // pass.
 #pragma once
@@ -12,7 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "common/scene.h"
-#include "common/scene/ply_check.h"
+#include "common/scene_io/ply_check.h"
 
 namespace voxgi {
 

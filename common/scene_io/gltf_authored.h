@@ -15,7 +15,7 @@
 
 #include "common/scene.h"
 #include "common/scene_motion.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 
 namespace voxgi {
 

@@ -1,4 +1,4 @@
-#include "common/scene/gltf_authored.h"
+#include "common/scene_io/gltf_authored.h"
 
 #include <algorithm>
 #include <cmath>

@@ -83,10 +83,11 @@ struct PointCloudOptions {
   enum class Colors { srgb, linear, ignore } colors = Colors::srgb;
 };
 
-// Appends the points of a point-cloud PLY (common/scene/point_cloud_ply.h) to `scene`, transformed
-// by `transform`, with material `material`. Throws InputError; a cloud without normals is refused
-// unless the options estimate them. Radii and normals the file lacks are estimated afterwards, once
-// the camera is known, by estimatePointCloudProperties (options per cloud, in order).
+// Appends the points of a point-cloud PLY (common/scene_io/point_cloud_ply.h) to `scene`,
+// transformed by `transform`, with material `material`. Throws InputError; a cloud without normals
+// is refused unless the options estimate them. Radii and normals the file lacks are estimated
+// afterwards, once the camera is known, by estimatePointCloudProperties (options per cloud, in
+// order).
 void importPointCloud(Scene& scene, const std::string& path, const glm::dmat4& transform,
                       uint32_t material, const PointCloudOptions& options);
 void estimatePointCloudProperties(Scene& scene, const std::vector<PointCloudOptions>& options);

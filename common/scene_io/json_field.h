@@ -1,6 +1,6 @@
 // A value of a JSON scene file with its path ("lights[2].intensity"), read with the checks every
 // field of the format gets: types, finite numbers, ranges, unknown keys refused, each error one
-// InputError naming the file and the field (common/scene/scene_load.cpp, motion_load.cpp).
+// InputError naming the file and the field (common/scene_io/scene_load.cpp, motion_load.cpp).
 #pragma once
 
 #include <algorithm>
@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common/error.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 
 namespace voxgi {
 

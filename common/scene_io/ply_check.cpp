@@ -1,4 +1,4 @@
-#include "common/scene/ply_check.h"
+#include "common/scene_io/ply_check.h"
 
 #include <algorithm>
 #include <bit>

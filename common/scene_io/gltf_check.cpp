@@ -1,4 +1,4 @@
-#include "common/scene/gltf_check.h"
+#include "common/scene_io/gltf_check.h"
 
 #include <cstdint>
 #include <cstring>

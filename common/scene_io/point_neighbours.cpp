@@ -1,4 +1,4 @@
-#include "common/scene/point_neighbours.h"
+#include "common/scene_io/point_neighbours.h"
 
 #include <algorithm>
 #include <array>

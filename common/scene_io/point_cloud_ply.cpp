@@ -1,4 +1,4 @@
-#include "common/scene/point_cloud_ply.h"
+#include "common/scene_io/point_cloud_ply.h"
 
 #include <algorithm>
 #include <atomic>

@@ -2,7 +2,7 @@
 // of a light's position, direction and intensity, and of the camera's position, look_at and up.
 #pragma once
 
-#include "common/scene/json_field.h"
+#include "common/scene_io/json_field.h"
 #include "common/scene_motion.h"
 
 namespace voxgi {

@@ -9,7 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "common/error.h"
-#include "common/scene/tinygltf.h"
+#include "common/scene_io/tinygltf.h"
 
 namespace voxgi {
 

@@ -1,6 +1,6 @@
 // JSON scene files (docs/scene-format.md). Every field is checked; unknown fields are errors so
 // that a typo does not silently fall back to a default.
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,9 +15,9 @@
 #include "common/error.h"
 #include "common/io/input_file.h"
 #include "common/io/texture_read.h"
-#include "common/scene/json_field.h"
-#include "common/scene/motion_load.h"
-#include "common/scene/point_cloud_ply.h"
+#include "common/scene_io/json_field.h"
+#include "common/scene_io/motion_load.h"
+#include "common/scene_io/point_cloud_ply.h"
 #include "common/settings.h"
 
 namespace voxgi {

@@ -8,8 +8,8 @@
 #include <glm/glm.hpp>
 
 #include "common/scene.h"
-#include "common/scene/gltf_check.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/gltf_check.h"
+#include "common/scene_io/scene_load.h"
 
 namespace voxgi {
 

@@ -1,4 +1,4 @@
-#include "common/scene/ray_scene.h"
+#include "common/scene_io/ray_scene.h"
 
 #include <algorithm>
 #include <vector>

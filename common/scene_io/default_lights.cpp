@@ -1,7 +1,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "common/scene/scene_load.h"
+#include "common/scene_io/scene_load.h"
 
 namespace voxgi {
 

@@ -8,15 +8,15 @@
 #include <map>
 #include <string_view>
 
-#include "common/scene/tinygltf.h"
+#include "common/scene_io/tinygltf.h"
 
 #include "common/error.h"
 #include "common/io/input_file.h"
 #include "common/io/texture_read.h"
-#include "common/scene/gltf_accessor.h"
-#include "common/scene/gltf_animation.h"
-#include "common/scene/gltf_authored.h"
-#include "common/scene/gltf_import.h"
+#include "common/scene_io/gltf_accessor.h"
+#include "common/scene_io/gltf_animation.h"
+#include "common/scene_io/gltf_authored.h"
+#include "common/scene_io/gltf_import.h"
 
 namespace voxgi {
 namespace {

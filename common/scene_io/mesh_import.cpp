@@ -1,4 +1,4 @@
-// Mesh files: OBJ/MTL and mesh PLY through Assimp, glTF through common/scene/gltf_import.h, each
+// Mesh files: OBJ/MTL and mesh PLY through Assimp, glTF through common/scene_io/gltf_import.h, each
 // checked before it is read.
 #include <algorithm>
 #include <cctype>
@@ -14,10 +14,10 @@
 #include "common/error.h"
 #include "common/io/input_file.h"
 #include "common/io/texture_read.h"
-#include "common/scene/gltf_check.h"
-#include "common/scene/gltf_import.h"
-#include "common/scene/ply_check.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/gltf_check.h"
+#include "common/scene_io/gltf_import.h"
+#include "common/scene_io/ply_check.h"
+#include "common/scene_io/scene_load.h"
 
 namespace voxgi {
 namespace {
@@ -30,7 +30,7 @@ glm::vec3 color(const aiMaterial& m, const char* key, unsigned type, unsigned in
 }
 
 // An OBJ/MTL (or mesh PLY) material as Assimp reads it; glTF's come from
-// common/scene/gltf_authored.h.
+// common/scene_io/gltf_authored.h.
 Material convertMaterial(const aiMaterial& m) {
   Material out;
   aiString name;
@@ -87,8 +87,8 @@ glm::dmat4 toGlm(const aiMatrix4x4& m) {
 }
 
 // Assimp picks an importer by content whatever the extension, so a file must be what its name says
-// before Assimp sees it; a PLY is checked whole (common/scene/ply_check.h). Returns a glTF file as
-// checked.
+// before Assimp sees it; a PLY is checked whole (common/scene_io/ply_check.h). Returns a glTF file
+// as checked.
 std::optional<GltfFile> checkMeshFileContent(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));

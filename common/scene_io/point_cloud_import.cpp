@@ -7,9 +7,9 @@
 #include "common/error.h"
 #include "common/io/image_io.h"
 #include "common/parallel.h"
-#include "common/scene/point_cloud_ply.h"
-#include "common/scene/point_neighbours.h"
-#include "common/scene/scene_load.h"
+#include "common/scene_io/point_cloud_ply.h"
+#include "common/scene_io/point_neighbours.h"
+#include "common/scene_io/scene_load.h"
 
 namespace voxgi {
 
