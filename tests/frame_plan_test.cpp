@@ -36,20 +36,19 @@ INSTANTIATE_TEST_SUITE_P(Techniques, FramePlan, testing::ValuesIn(allTechniqueCa
 TEST(FramePlan, VolumesUpdateEveryIntervalFrames) {
   cpu::CpuBackend cpu;
   for (const char* technique : {"vct", "lpv"})
-    for (const TechniqueCase& c : allTechniqueCases("motion"))
-      if (c.technique == technique) {
-        SCOPED_TRACE(c.label);
-        expectVolumesUpdateEveryInterval(c, cpu, 3);
-        break;
-      }
+    for (const TechniqueCase& c : requiredCases(technique, "motion")) {
+      SCOPED_TRACE(c.label);
+      expectVolumesUpdateEveryInterval(c, cpu, 3);
+      break;
+    }
 }
 
 // svo's motion case under propagate.carry=on: the carried light is the same whether the frames
 // were reached incrementally or from scratch.
 TEST(FramePlan, CarriedLightIsTheSameFromScratch) {
   cpu::CpuBackend cpu;
-  for (const TechniqueCase& c : allTechniqueCases("motion"))
-    if (c.technique == "svo") expectCarriedFramesEqualScratch(c, cpu);
+  for (const TechniqueCase& c : requiredCases("svo", "motion"))
+    expectCarriedFramesEqualScratch(c, cpu);
 }
 
 TEST(FramePlan, LightVoxelsRelightsOnlyWhatTheMovedMeshCanReach) {
@@ -62,10 +61,9 @@ TEST(FramePlan, LightVoxelsRelightsOnlyWhatTheMovedMeshCanReach) {
 // runner's frame left, the next frame's voxelize finds all its update needs. A still image drops
 // the sums, and the same frame after it would be voxelized whole.
 TEST(FramePlan, ASequenceKeepsWhatVoxelizesUpdateInPartStartsFrom) {
-  const std::vector<TechniqueCase> cases = allTechniqueCases("motion");
-  const auto c = std::find_if(cases.begin(), cases.end(),
-                              [](const TechniqueCase& k) { return k.technique == "vct"; });
-  ASSERT_NE(c, cases.end());
+  const std::vector<TechniqueCase> cases = requiredCases("vct", "motion");
+  ASSERT_FALSE(cases.empty());
+  const auto c = cases.begin();
   const std::vector<Scene> frames = motionFrames(caseScene(*c));
   const Scene &before = frames[3], &now = frames[4];  // frame 4 moves the smallest mesh
   cpu::CpuBackend cpu;

@@ -207,8 +207,14 @@ TEST(TemporalMetrics, ChangesAgainstTheReferencesByHand) {
   for (auto* image : {&offsetA, &offsetB})
     for (glm::vec3& p : image->pixels) p += 3.0f;
   EXPECT_EQ(reference::compareChanges(offsetA, offsetB, refA, refB, {}, scale).error, 0.0);
-  // The mask keeps the second pixel alone: the test held it while the reference rose, 0.5 / 2.
-  EXPECT_NEAR(reference::compareChanges(testA, testB, refA, refB, {0, 1}, scale).error, 0.25,
+  // A mask counts its pixels alone. The first pixel jumping by 2 instead (its change 1.5 off the
+  // reference's, the second's 0.5 off): sqrt((0.75^2 + 0.25^2) / 2) over both pixels, and the
+  // second's 0.5 / 2 alone under a mask that keeps it; a mask ignored would give the first figure.
+  Image jumpB = testB;
+  jumpB.pixels[0] = glm::vec3(2.0f);
+  EXPECT_NEAR(reference::compareChanges(testA, jumpB, refA, refB, {}, scale).error,
+              std::sqrt(0.3125), 1e-12);
+  EXPECT_NEAR(reference::compareChanges(testA, jumpB, refA, refB, {0, 1}, scale).error, 0.25,
               1e-12);
 }
 

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <set>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "common/scene_io/scene_load.h"
@@ -63,6 +64,16 @@ std::vector<TechniqueCase> allTechniqueCases(const std::string& kind) {
     all.insert(all.end(), cases.begin(), cases.end());
   }
   return all;
+}
+
+std::vector<TechniqueCase> requiredCases(std::string_view technique, const std::string& kind) {
+  std::vector<TechniqueCase> cases = techniqueCases(findTechnique(technique), kind);
+  if (cases.empty() || !cases.front().error.empty()) {
+    ADD_FAILURE() << "tests/cases/" << technique << ".json declares no " << kind << " case"
+                  << (cases.empty() ? "" : ": " + cases.front().error);
+    return {};
+  }
+  return cases;
 }
 
 Scene caseScene(const TechniqueCase& c) {

@@ -6,6 +6,7 @@
 
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "common/scene.h"
@@ -39,6 +40,10 @@ void PrintTo(const TechniqueCase& c, std::ostream* os);
 std::vector<TechniqueCase> techniqueCases(const Technique& technique, const std::string& kind);
 // Every technique's, in registry order.
 std::vector<TechniqueCase> allTechniqueCases(const std::string& kind);
+// The technique's cases of `kind` for a test of that technique alone: none, and the calling test
+// fails naming the file, where it declares none or its file has an error, so that such a test
+// cannot pass on no case.
+std::vector<TechniqueCase> requiredCases(std::string_view technique, const std::string& kind);
 // The case's scene at its grid resolution and image size.
 Scene caseScene(const TechniqueCase& c);
 // The case's settings: the technique's defaults, the scene's, the preset's, then the case's own.

@@ -87,6 +87,17 @@ Scene closedBox(int n, const Material& walls) {
   return makeScene(tris, unitGrid(n), walls);
 }
 
+void expectFurnaceBounces(const float (&l)[4], float rho, float emission) {
+  const float share = (l[1] - l[0]) / emission;
+  EXPECT_LE(share, rho * 1.001f);
+  for (int n = 1; n < 3; ++n) {
+    const float before = l[n] - l[n - 1], bounce = l[n + 1] - l[n];
+    EXPECT_LE(bounce, rho * before * 1.001f) << "bounce " << n + 1;
+    EXPECT_GE(bounce, 0.9f * share * before) << "bounce " << n + 1;
+  }
+  EXPECT_LT(l[3], emission / (1.0f - rho));
+}
+
 double squareFormFactor(double s, double h) {
   const double a = s / h, ra = std::sqrt(1.0 + a * a);
   return 4.0 * (2.0 * a / ra * std::atan(a / ra)) / (2.0 * std::numbers::pi);

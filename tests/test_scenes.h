@@ -26,6 +26,14 @@ GridSpec unitGrid(int n, double size = 1.0);
 // A closed box in the unit grid of n voxels: six inward-facing walls through the centres of voxels
 // 2 and n - 3 on each axis, all of one material (emitting in the radiosity tests that use it).
 Scene closedBox(int n, const Material& walls);
+// The furnace (a closed box whose walls all emit E with albedo rho): its floor's radiance L_0 ..
+// L_3 after 0 .. 3 bounces, each bounce b_n = L_n - L_(n-1) at most rho times the one before
+// (energy) and at least 0.9 of the first bounce's share b_1 / E times it: every wall sends out the
+// same radiance after every bounce, so the cones gather the same fraction of it each time (10 % for
+// the corners and edges, whose radiance lags the walls' middles). Measured: b_(n+1) / b_n over
+// b_1 / E is 0.98 (directional pyramid), 0.99 (octree), 1.19 and 1.42 (isotropic pyramid).
+void expectFurnaceBounces(const float (&l)[4], float rho, float emission);
+
 // `scene` seen from `position` toward `lookAt` through a square image of `size` pixels.
 Scene withCamera(Scene scene, glm::dvec3 position, glm::dvec3 lookAt, glm::dvec3 up, double fov,
                  int size);

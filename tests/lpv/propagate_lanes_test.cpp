@@ -3,6 +3,7 @@
 // this CPU has (SSE2 always, which is what a CPU without AVX2 runs), for both coefficient counts
 // and direction sets, with and without occlusion, clamping and the visibility computed ahead, on
 // grids whose rows fill the lanes, leave them partly empty, or are a single cell.
+#include <algorithm>
 #include <bit>
 #include <cstdlib>
 #include <random>
@@ -145,6 +146,27 @@ TEST(Simd, TheEnvironmentCanOnlyLowerTheLevel) {
     EXPECT_EQ(cpu::simdLevel(), cpu::detectedSimdLevel());
   EXPECT_LE(cpu::simdLevel(), cpu::detectedSimdLevel());
 }
+
+// What this CPU lets the lanes' tests hold to the shared kernels' bits: they run every level of
+// cpu::runnableSimdLevels() (the cone march, the gather, the shadow rays, voxel light, LPV
+// propagation), and a level the CPU lacks is reported as skipped here, so that a run on a machine
+// without AVX-512 or AVX2 says what it did not exercise (ctest lists the skipped levels).
+class SimdLevels : public testing::TestWithParam<SimdLevel> {};
+
+TEST_P(SimdLevels, TheLanesTestsRunThisLevel) {
+  const SimdLevel level = GetParam();
+  const std::vector<SimdLevel> runnable = cpu::runnableSimdLevels();
+  if (level > cpu::detectedSimdLevel())
+    GTEST_SKIP() << "this CPU has no " << cpu::simdLevelName(level)
+                 << ": the lanes' tests did not run it";
+  EXPECT_NE(std::find(runnable.begin(), runnable.end(), level), runnable.end());
+}
+
+INSTANTIATE_TEST_SUITE_P(Simd, SimdLevels,
+                         testing::Values(SimdLevel::sse2, SimdLevel::avx2, SimdLevel::avx512),
+                         [](const testing::TestParamInfo<SimdLevel>& p) {
+                           return std::string(cpu::simdLevelName(p.param));
+                         });
 
 }  // namespace
 }  // namespace voxgi::test

@@ -33,8 +33,16 @@ def test_the_metrics_stand_beside_their_baselines(box, reference):
 
 
 def test_a_mask_keeps_its_pixels(reference):
+    """The masked metrics are those of the kept pixels alone: the left half 1.5 times too bright
+    and the right half, outside the mask, 3 times; a mask ignored would count the right half."""
     image = reference["image"]
     mask = np.zeros(image.shape[:2], bool)
     mask[:, :32] = True
-    masked = voxgi.compare(image * 1.5, image, mask=mask)
+    test = image * 1.5
+    test[:, 32:] = image[:, 32:] * 3.0
+    masked = voxgi.compare(test, image, mask=mask)
     assert masked["pixels"] == 64 * 32
+    left = voxgi.compare(np.ascontiguousarray(test[:, :32]), np.ascontiguousarray(image[:, :32]))
+    for key in ("rmse", "rel_mse", "mare"):
+        assert masked[key] == pytest.approx(left[key], rel=1e-6), key
+    assert voxgi.compare(test, image)["rmse"] > 1.5 * masked["rmse"]

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/cone/cone_sets.h"
 #include "common/cone/cone_trace.h"
 #include "common/mips.h"
 #include "common/vct/radiance_buffers.h"
@@ -130,27 +131,66 @@ TEST(TraceCones, TheStartOffsetStaysPutInTheSceneFrom64Up) {
   }
 }
 
+// The fraction of the cosine-weighted estimate a cone set can give the square of half-size `s` at
+// `height` above the receiver, its layout alone: sum over the cones of weight x the share of the
+// cone's solid angle that the square covers, by uniform samples over each cone's cap (golden-ratio
+// azimuths on equal-area rings: deterministic). Independent of the cone tracer, which it explains.
+double coneSetCoverage(ConeSet set, double s, double height) {
+  double sum = 0.0;
+  for (const Cone& c : diffuseCones(set)) {
+    // The cone's axis with z up (tangent frame) as y up (the receiver's normal), and a basis.
+    const glm::dvec3 axis(c.direction.x, c.direction.z, c.direction.y);
+    const glm::dvec3 helper = std::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+    const glm::dvec3 t = glm::normalize(glm::cross(axis, helper)), b = glm::cross(axis, t);
+    const double cosHalf = std::cos(0.5 * double(c.aperture));
+    const int samples = 40000;
+    int inside = 0;
+    for (int i = 0; i < samples; ++i) {
+      const double cosTheta = 1.0 - (i + 0.5) / samples * (1.0 - cosHalf);
+      const double sinTheta = std::sqrt(1.0 - cosTheta * cosTheta);
+      const double phi = 2.0 * std::numbers::pi * std::fmod(i * 0.6180339887498949, 1.0);
+      const glm::dvec3 d = axis * cosTheta + (t * std::cos(phi) + b * std::sin(phi)) * sinTheta;
+      if (d.y <= 0.0) continue;
+      const double x = d.x * height / d.y, z = d.z * height / d.y;
+      if (std::abs(x) <= s && std::abs(z) <= s) ++inside;
+    }
+    sum += double(c.weight) * inside / samples;
+  }
+  return sum;
+}
+
 // An emitting square (radiance 1) of half-size 1/4 facing down, 1/2 above a receiver looking up,
-// at 64^3: E / pi = F = 0.2395. The tolerance per set is the error measured when the set was
-// added plus a margin (docs/stages/vct/trace_cones.md): the cone set's quadrature and the pyramid's
-// blur, not noise.
+// at 64^3: E / pi = F = 0.2395. Each set's estimate is its layout's coverage of the square
+// (coneSetCoverage, checked here) changed by the pyramid's blur, both measured when the set was
+// added (docs/stages/vct/trace_cones.md), so the test holds each set to its measured estimate
+// within 0.05 F, not to F: the wide cones of equal7 and villegas6 lose a little to the coarse
+// cells that dilute the square's edge; kahl5's and kahl9's 0.55-rad cones at 45 and 90 degrees
+// pass beside the square where they sample 16- and 32-voxel cells that hold its light, and gather
+// 1.8 times their layout's share. A change to the march, the pyramid or a set moves a figure out.
 TEST(TraceCones, EmittingSquareMatchesTheFormFactor) {
-  const std::pair<ConeSet, double> bounds[] = {{ConeSet::equal7, 0.10},
-                                               {ConeSet::villegas6, 0.25},
-                                               {ConeSet::kahl5, 0.55},
-                                               {ConeSet::kahl9, 0.20}};
+  struct Expected {
+    ConeSet set;
+    double layout;  // coneSetCoverage / F
+    double traced;  // the cone tracer's E / pi over F
+  };
+  const Expected sets[] = {{ConeSet::equal7, 0.964, 0.930},
+                           {ConeSet::villegas6, 0.955, 0.776},
+                           {ConeSet::kahl5, 0.835, 1.500},
+                           {ConeSet::kahl9, 0.464, 0.835}};
   const double s = 0.25, top = 0.75, bottom = 0.25, expected = squareFormFactor(s, top - bottom);
   EXPECT_NEAR(expected, 0.2395, 1e-4);
-  for (const auto& [set, bound] : bounds) {
+  for (const Expected& e : sets) {
+    SCOPED_TRACE(int(e.set));
+    EXPECT_NEAR(coneSetCoverage(e.set, s, top - bottom) / expected, e.layout, 0.005);
     Settings settings;
-    settings.vct.cones = set;
+    settings.vct.cones = e.set;
     settings.vct.emitters = EmitterLighting::voxels;  // the square's light gathered by the cones
     const int n = 64;
     const Volumes v(
         makeScene(quad(1, top, {0.5 - s, 0.5 - s}, {0.5 + s, 0.5 + s}), unitGrid(n), emitter()),
         settings);
     const auto r = v.trace(glm::vec3(0.5f, float(bottom), 0.5f) * float(n), glm::vec3(0, 1, 0));
-    EXPECT_NEAR(r.indirectDiffuse.x / expected, 1.0, bound) << "cone set " << int(set);
+    EXPECT_NEAR(r.indirectDiffuse.x / expected, e.traced, 0.05);
   }
 }
 
