@@ -135,11 +135,10 @@ function(voxgi_stage_shaders out)
     if(best STREQUAL "")
       # A pass that several of a technique's stages run is named after the GPU file that runs it
       # (shaders/svo/bricks.comp, gpu/svo/bricks.cpp).
-      get_filename_component(folder_of_dir ${shader} DIRECTORY)
-      if(NOT EXISTS ${PROJECT_SOURCE_DIR}/gpu/${folder_of_dir}/${file}.cpp OR dir STREQUAL common)
+      if(dir STREQUAL common OR NOT EXISTS ${PROJECT_SOURCE_DIR}/gpu/${dir}/${file}.cpp)
         message(FATAL_ERROR "shaders/${shader} belongs to no stage of ${dir} and to no file "
-                            "gpu/${folder_of_dir}/${file}.cpp: a stage's GLSL files are named after "
-                            "it, a pass several stages run after the GPU file that runs it "
+                            "gpu/${dir}/${file}.cpp: a stage's GLSL files are named after it, a "
+                            "pass several stages run after the GPU file that runs it "
                             "(docs/architecture.md, \"Adding a stage\")")
       endif()
     else()

@@ -10,7 +10,7 @@
 namespace voxgi {
 
 unsigned stageSceneInputs(StageId stage) {
-  return stageSpec(stage).reads & (kSceneGeometry | kSceneLights | kSceneCamera);
+  return stageSpec(stage).reads & stage_reads::kScene;
 }
 
 bool stageReadsBuffers(StageId stage) {
@@ -55,7 +55,7 @@ SceneChange sceneChange(const Scene& before, const Scene& after) {
     }
   }
   if (movedMeshes > 0 || before.meshes.size() != after.meshes.size()) {
-    c.parts |= kSceneGeometry;
+    c.parts |= stage_reads::geometry;
     c.what.push_back(count(movedMeshes, "mesh", "meshes") + " moved: " +
                      std::to_string(movedTriangles) + " of " + std::to_string(triangles) +
                      " triangles (" + percent(movedTriangles, triangles) + ")");
@@ -66,11 +66,11 @@ SceneChange sceneChange(const Scene& before, const Scene& after) {
              before.pointClouds[i].normals != after.pointClouds[i].normals ||
              before.pointClouds[i].radii != after.pointClouds[i].radii;
   if (clouds) {
-    c.parts |= kSceneGeometry;
+    c.parts |= stage_reads::geometry;
     c.what.push_back("a point cloud moved");
   }
   if (before.lights != after.lights) {
-    c.parts |= kSceneLights;
+    c.parts |= stage_reads::lights;
     size_t changed = 0;
     for (size_t i = 0; i < std::min(before.lights.size(), after.lights.size()); ++i)
       changed += before.lights[i] == after.lights[i] ? 0 : 1;
@@ -79,7 +79,7 @@ SceneChange sceneChange(const Scene& before, const Scene& after) {
                          : "the lights changed");
   }
   if (!(before.camera == after.camera)) {
-    c.parts |= kSceneCamera;
+    c.parts |= stage_reads::camera;
     c.what.push_back("the camera moved");
   }
   return c;
@@ -97,7 +97,7 @@ std::vector<FrameStep> frameSteps(const StageContext& ctx, const EffectPlan* pre
   const StageSpec* ran = nullptr;    // the first stage of the frame that runs
   bool volume = volumes != nullptr;  // before the first stage that reads the camera
   for (const StageSpec* s : planned) {
-    volume = volume && (stageSceneInputs(s->id) & kSceneCamera) == 0;
+    volume = volume && (stageSceneInputs(s->id) & stage_reads::camera) == 0;
     if (volume && !volumes->due) {
       steps.push_back({s, false,
                        "update.interval: the volumes update in " +
@@ -108,9 +108,9 @@ std::vector<FrameStep> frameSteps(const StageContext& ctx, const EffectPlan* pre
     const unsigned reads = stageSceneInputs(s->id) & since.parts;
     if (reads != 0) {
       std::vector<const char*> parts;
-      if (reads & kSceneGeometry) parts.push_back("geometry");
-      if (reads & kSceneLights) parts.push_back("lights");
-      if (reads & kSceneCamera) parts.push_back("camera");
+      if (reads & stage_reads::geometry) parts.push_back("geometry");
+      if (reads & stage_reads::lights) parts.push_back("lights");
+      if (reads & stage_reads::camera) parts.push_back("camera");
       std::string why = "it reads the changed ";
       for (size_t i = 0; i < parts.size(); ++i)
         why += std::string(i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
@@ -162,7 +162,7 @@ const std::vector<FrameStep>& FrameRunner::run(Scene scene, const Settings& sett
   settings_ = settings;
   settings_.sequence = !scratch_;
   // Unmoved geometry keeps its prepared triangles.
-  const bool prepare = first_ || scratch_ || (change_.parts & kSceneGeometry) != 0;
+  const bool prepare = first_ || scratch_ || (change_.parts & stage_reads::geometry) != 0;
   if (prepare) {
     previousTriangles_ = std::move(triangles_);
     // The meshes that did not move keep their triangles (same positions, same grid).

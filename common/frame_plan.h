@@ -15,16 +15,9 @@
 
 namespace voxgi {
 
-// The parts of a scene that can change from frame to frame, as the stages declare what they read
-// (stage_reads, common/stages.inc). Materials, textures, the grid and the settings stay fixed
-// through a sequence.
-enum SceneInput : unsigned {
-  kSceneGeometry = stage_reads::geometry,
-  kSceneLights = stage_reads::lights,
-  kSceneCamera = stage_reads::camera,
-};
-
-// The scene inputs of a stage, from its declaration.
+// The parts of the scene a stage reads, from its declaration: its stage_reads bits among geometry,
+// lights and camera (the parts that can change from frame to frame; materials, textures, the grid
+// and the settings stay fixed through a sequence).
 unsigned stageSceneInputs(StageId stage);
 
 // Whether `stage` reads buffers of the stages before it (gbuffer, voxelize and the octree's build
@@ -38,8 +31,9 @@ bool stageReadsBuffers(StageId stage);
 // settles.
 bool stageCarries(const StageContext& ctx, StageId stage);
 
-// What moved from one frame's scene to the next's: a set of SceneInput bits and, for messages,
-// what it was ("the camera moved", "1 mesh moved: 120 of 4,000 triangles (3 %)").
+// What moved from one frame's scene to the next's: a set of stage_reads bits (geometry, lights,
+// camera) and, for messages, what it was ("the camera moved", "1 mesh moved: 120 of 4,000 triangles
+// (3 %)").
 struct SceneChange {
   unsigned parts = 0;
   std::vector<std::string> what;

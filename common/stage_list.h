@@ -75,7 +75,8 @@ enum Input : unsigned {
   // (EffectPlan::carries)
   history = 16,
 };
-constexpr unsigned kAll = geometry | lights | camera | buffers | history;
+constexpr unsigned kScene = geometry | lights | camera;  // the scene's parts that can change
+constexpr unsigned kAll = kScene | buffers | history;
 }  // namespace stage_reads
 
 struct EffectSpec {

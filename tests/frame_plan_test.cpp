@@ -102,7 +102,7 @@ TEST(FramePlan, SceneChangeSaysWhatMoved) {
   b.lights[0].intensity *= 2.0f;
   b.meshes[0].positions[0].y += 1e-9;
   const SceneChange c = sceneChange(a, b);
-  EXPECT_EQ(c.parts, unsigned(kSceneGeometry | kSceneLights | kSceneCamera));
+  EXPECT_EQ(c.parts, stage_reads::kScene);
   size_t all = 0;
   for (const Mesh& m : a.meshes) all += m.triangles.size();
   const size_t bunny = a.meshes[0].triangles.size();

@@ -96,7 +96,7 @@ void expectIncrementalFramesEqualScratch(const TechniqueCase& c, StageBackend& b
         break;
       case 1:  // the camera: the stages before the first that reads it are reused
         for (const FrameStep& s : steps) {
-          if (stageSceneInputs(s.stage->id) & kSceneCamera) break;
+          if (stageSceneInputs(s.stage->id) & stage_reads::camera) break;
           EXPECT_FALSE(s.runs) << s.stage->qualifiedName() << ": " << s.why;
         }
         EXPECT_FALSE(runs(steps, StageId::common_voxelize));
@@ -136,7 +136,7 @@ void expectVolumesUpdateEveryInterval(const TechniqueCase& c, StageBackend& back
     BufferSet scratch;
     bool volume = true;  // before the first stage that reads the camera
     for (const StageSpec* stage : plannedStages(ctx)) {
-      volume = volume && (stageSceneInputs(stage->id) & kSceneCamera) == 0;
+      volume = volume && (stageSceneInputs(stage->id) & stage_reads::camera) == 0;
       ASSERT_TRUE(runStage(backend, *stage, volume ? volumeCtx : ctx, scratch).ok());
       for (const FrameStep& s : steps) {
         if (s.stage == stage && volume && f != update) {

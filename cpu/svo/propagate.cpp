@@ -1,6 +1,6 @@
 // CPU propagate stage: the leaves' injected light, then propagate.frames progressive bounces
 // (cpu/svo/propagate.h), from the light the frame before carried under propagate.carry; the last
-// frame's gathered light as leaf bricks (cpu/svo/octree.h, completeBricks) for shading.
+// frame's gathered light as leaf bricks (cpu/svo/bricks.h, completeBricks) for shading.
 #include "cpu/svo/propagate.h"
 
 #include <tbb/blocked_range.h>
@@ -10,6 +10,7 @@
 #include "common/svo/stage_inputs.h"
 #include "common/svo/tree_depth.h"
 #include "cpu/stages.h"
+#include "cpu/svo/bricks.h"
 #include "cpu/svo/mip.h"
 #include "cpu/svo/svo_volumes.h"
 #include "cpu/cone/gather_lanes.h"

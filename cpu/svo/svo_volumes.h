@@ -13,7 +13,7 @@
 
 #include "common/parallel.h"
 #include "common/svo/light_types.h"
-#include "cpu/svo/octree.h"
+#include "cpu/svo/bricks.h"
 #include "cpu/cone/cone_lanes.h"
 #include "shaders/shared/cone/cone_types.h"
 #include "shaders/shared/cone/voxel_light.h"

@@ -1,6 +1,6 @@
 // Every tile of a tree level as a brick on the GPU (shaders/svo/bricks.comp), the twin of
-// cpu/svo/octree.h's completeBricks: svo's propagate lays out the gathered light and every frame's
-// source with it, and svo's shade the light its cones read.
+// cpu/svo/bricks.h: svo's propagate lays out the gathered light and every frame's source with
+// it, and svo's shade the light its cones read.
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 #version 450 core
-// Bricks of one tree level (cpu/svo/octree.h, completeBricks): each tile's 2^3 values of uFaces
+// Bricks of one tree level (cpu/svo/bricks.h, completeBricks): each tile's 2^3 values of uFaces
 // RGBA faces as a 3^3 brick whose positive boundary comes from the tiles the parent's + neighbours
 // lead to (0 where there is none). The leaves' values (uFaces 1: per leaf slot) or the node levels'
 // six faces (uFaces 6: per node, every node tile at once). One invocation per brick texel.

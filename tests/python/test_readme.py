@@ -4,7 +4,7 @@ repository's tests/ beside it), the `voxgi` of the build for `voxgi` and `build/
 
 Sizes are lowered by rewriting options only (16^3 grids, 32-pixel images, a few samples, a few
 frames: `small`); the files the README leaves to its reader (a model of one's own, another
-engine's dumps, a mask, path-traced references) are made first (`placeholders`). A command of the
+engine's dumps, a mask, path-traced references) are made first (`readers_files`). A command of the
 README that is neither run nor listed in NOT_RUN with its reason fails the test, and so does a
 NOT_RUN entry the README no longer holds."""
 import os
@@ -104,7 +104,7 @@ def small(args):
     return args
 
 
-def placeholders(voxgi, work):
+def readers_files(voxgi, work):
     """What the README leaves to its reader, made in `work`."""
     shutil.copy(work / "tests/data/scenes/blender_room.glb", work / "model.glb")  # camera Cam
     run = lambda *a: subprocess.run([voxgi, *a], cwd=work, check=True, capture_output=True)
@@ -133,7 +133,7 @@ def test_the_readmes_commands_run(repo, voxgi_bin, tmp_path):
     shutil.copytree(repo / "scenes", work / "scenes",
                     ignore=shutil.ignore_patterns("cornell_box_cloud.ply"))
     os.symlink(repo / "tests", work / "tests")
-    placeholders(voxgi_bin, work)
+    readers_files(voxgi_bin, work)
     seen = set()
     for command, line in commands:
         skip = next((key for key in NOT_RUN if command.startswith(key)), None)

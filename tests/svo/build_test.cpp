@@ -13,7 +13,7 @@
 
 #include "common/error.h"
 #include "common/svo/canonical.h"
-#include "cpu/svo/octree.h"
+#include "cpu/svo/bricks.h"
 #include "shaders/shared/svo/svo_sample.h"
 
 namespace voxgi {
